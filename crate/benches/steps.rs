@@ -1,0 +1,33 @@
+//! Criterion benchmarks: one simulation step of every lab, one step of every estimator.
+
+use attlab::labs;
+use attlab::params::ParamValues;
+use attlab::sim::Simulation;
+use criterion::{criterion_group, criterion_main, Criterion};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::hint::black_box;
+
+fn steps(c: &mut Criterion) {
+    for lab in labs::all() {
+        let params = ParamValues::defaults(lab.params());
+        let mut sim = Simulation::with_history(*lab, params.clone(), 1, 1024);
+        c.bench_function(&format!("{}/simulation-step", lab.id()), |b| b.iter(|| sim.step()));
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let mut run = lab.build(&params, &mut rng);
+        let dt = lab.dt_s(&params);
+        let trace = run.measurement_trace(dt, 4096, &mut rng);
+        for est in &mut run.estimators {
+            let mut i = 0;
+            c.bench_function(&format!("{}/estimator/{}", lab.id(), est.id()), |b| {
+                b.iter(|| {
+                    est.step(black_box(&trace[i % trace.len()]), dt);
+                    i += 1;
+                })
+            });
+        }
+    }
+}
+
+criterion_group!(benches, steps);
+criterion_main!(benches);

@@ -1,0 +1,192 @@
+//! The CLI proper (native only).
+
+use attlab::labs::{self, Lab};
+use attlab::params::ParamValues;
+use attlab::record::format_value;
+use attlab::sim::Simulation;
+use clap::{Parser, Subcommand};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Attitude Lab, headless: reproduce the papers, run a lab to CSV, time the estimators.
+#[derive(Parser, Debug)]
+#[command(name = "attlab", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// List the labs and their parameters.
+    Labs,
+    /// Run a lab's paper scenarios and print measured numbers beside the paper's.
+    Reproduce {
+        /// Lab id, or `all`.
+        lab: String,
+        /// Also write the tables as JSON to this file.
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+    /// Run a lab and write every recorded series to CSV (plus a JSON sidecar).
+    Run {
+        /// Lab id (see `attlab labs`).
+        #[arg(long)]
+        lab: String,
+        /// RNG seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Simulated time (s); default: the lab's.
+        #[arg(long)]
+        duration: Option<f64>,
+        /// Output CSV file; the sidecar is the same name with `.json`.
+        #[arg(long)]
+        csv: PathBuf,
+        /// Parameter override `key=value` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
+    /// Time one simulation step of every lab and one step of every estimator.
+    Bench {
+        /// Steps to time per item.
+        #[arg(long, default_value_t = 20_000)]
+        steps: usize,
+    },
+}
+
+/// Entry point: parse, dispatch, map errors to a message and exit code 2.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Labs => {
+            list_labs();
+            Ok(true)
+        }
+        Command::Reproduce { lab, json } => reproduce(&lab, json.as_deref()),
+        Command::Run { lab, seed, duration, csv, set } => run(&lab, seed, duration, &csv, &set).map(|()| true),
+        Command::Bench { steps } => {
+            bench(steps.max(10));
+            Ok(true)
+        }
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(message) => {
+            eprintln!("attlab: error: {message}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn find_lab(id: &str) -> Result<&'static dyn Lab, String> {
+    labs::find(id).ok_or_else(|| format!("no lab `{id}`; labs: {}", labs::ids()))
+}
+
+fn list_labs() {
+    for lab in labs::all() {
+        println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
+        for p in lab.params() {
+            println!("  --set {}=<{} … {}> {} (default {}) {}", p.key, p.min, p.max, p.unit, p.default, p.label);
+        }
+    }
+}
+
+fn reproduce(which: &str, json: Option<&Path>) -> Result<bool, String> {
+    let selected: Vec<&'static dyn Lab> = if which == "all" { labs::all().to_vec() } else { vec![find_lab(which)?] };
+    let mut reports = Vec::new();
+    for lab in selected {
+        let rep = lab.reproduce();
+        println!("{}", rep.to_table());
+        reports.push(rep);
+    }
+    if let Some(path) = json {
+        let text = serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?;
+        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    let ok = reports.iter().all(|r| r.all_pass());
+    if !ok {
+        println!("some rows do not match (marked NO)");
+    }
+    Ok(ok)
+}
+
+fn run(lab_id: &str, seed: u64, duration: Option<f64>, csv_path: &Path, set: &[String]) -> Result<(), String> {
+    let lab = find_lab(lab_id)?;
+    let mut params = ParamValues::defaults(lab.params());
+    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
+    if !errors.is_empty() {
+        return Err(errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "));
+    }
+    let duration_s = duration.unwrap_or(lab.default_duration_s());
+    if !(duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1e6) {
+        return Err(format!("--duration must be a number of seconds in (0, 1e6], got {duration_s}"));
+    }
+    let file = std::fs::File::create(csv_path).map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+    let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
+    let mut sim = Simulation::with_history(lab, params.clone(), seed, 2);
+    let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
+    out.write_record(sim.recorder().specs().iter().map(|s| s.header())).map_err(io)?;
+    out.write_record(sim.last_row().iter().map(|v| format_value(*v))).map_err(io)?;
+    let mut rows = 1u64;
+    let end = duration_s - 1e-9 * sim.dt_s();
+    while sim.t_s() < end {
+        sim.step();
+        out.write_record(sim.last_row().iter().map(|v| format_value(*v))).map_err(io)?;
+        rows += 1;
+    }
+    out.flush().map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
+    let sidecar = csv_path.with_extension("json");
+    let meta = serde_json::json!({
+        "attlab_version": env!("CARGO_PKG_VERSION"),
+        "lab": lab.id(),
+        "title": lab.title(),
+        "paper": lab.paper(),
+        "seed": seed,
+        "duration_s": duration_s,
+        "dt_s": sim.dt_s(),
+        "rows": rows,
+        "params": lab.params().iter().map(|p| serde_json::json!({
+            "key": p.key, "value": params.get(p.key), "unit": p.unit, "label": p.label,
+            "default": p.default, "min": p.min, "max": p.max,
+        })).collect::<Vec<_>>(),
+        "series": sim.recorder().specs(),
+        "csv": csv_path.file_name().map(|n| n.to_string_lossy().to_string()),
+    });
+    let text = serde_json::to_string_pretty(&meta).map_err(|e| e.to_string())?;
+    std::fs::write(&sidecar, text).map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
+    println!("wrote {rows} rows × {} series to {} and parameters to {}", sim.recorder().specs().len(), csv_path.display(), sidecar.display());
+    Ok(())
+}
+
+fn bench(steps: usize) {
+    println!("{:<22} {:<34} {:>12}", "lab", "item", "ns/step");
+    for lab in labs::all() {
+        let params = ParamValues::defaults(lab.params());
+        let mut sim = Simulation::with_history(*lab, params.clone(), 1, 1024);
+        let t0 = Instant::now();
+        for _ in 0..steps {
+            sim.step();
+        }
+        let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
+        println!("{:<22} {:<34} {:>12.0}", lab.id(), "simulation step (all)", ns);
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let mut run = lab.build(&params, &mut rng);
+        let dt = lab.dt_s(&params);
+        let trace = run.measurement_trace(dt, steps, &mut rng);
+        for est in &mut run.estimators {
+            let t0 = Instant::now();
+            for m in &trace {
+                est.step(m, dt);
+            }
+            let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
+            std::hint::black_box(est.estimate());
+            println!("{:<22} {:<34} {:>12.0}", lab.id(), format!("estimator {}", est.id()), ns);
+        }
+    }
+    let _ = std::io::stdout().flush();
+}

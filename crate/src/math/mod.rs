@@ -1,0 +1,36 @@
+//! Rotations, attitude parameterisations and integrators.
+//!
+//! # Conventions (stated once, used everywhere)
+//!
+//! * **Reference frame** `ref`: the fixed frame Oξηζ of paper 3, ζ pointing **up**.
+//! * **Body frame** `body`: ξ' right, η' forward, ζ' up (paper 3, §1).
+//! * **Quaternion**: Hamilton product, scalar first (`nalgebra::Quaternion::new(w, i, j, k)`).
+//!   The attitude quaternion is always named `q_ref_from_body`: it maps body-frame
+//!   coordinates into the reference frame, `v_ref = q_ref_from_body * v_body`.
+//! * **DCM**: `a_body_from_ref` is paper 3's matrix *A* (`v_body = A v_ref`, rows are the body
+//!   axes), so `a_body_from_ref = R(q_ref_from_body)ᵀ`.
+//! * **Elementary rotations** [`rot_x`], [`rot_y`], [`rot_z`] are *passive* (frame) rotations,
+//!   exactly paper 3's eq. (1): `rot_z(z) = [[cz, sz, 0], [−sz, cz, 0], [0, 0, 1]]`.
+//! * Angles are radians and rates rad/s everywhere inside; degrees only in labels.
+//!
+//! Papers that use another convention are converted at the edges, in their lab.
+
+mod covariance;
+mod euler;
+mod integrate;
+mod krylov;
+mod rotation;
+mod wz;
+
+pub use covariance::{is_symmetric_positive_definite, joseph_update, nees, symmetrize};
+pub use euler::EulerYpr;
+pub use integrate::{
+    quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uvz_derivative,
+    RateSegment,
+};
+pub use krylov::KrylovAngles;
+pub use rotation::{
+    dcm_from_quaternion, quaternion_from_dcm, rot_x, rot_y, rot_z, rotation_angle_between,
+    small_angle_error_body, vertical_in_body,
+};
+pub use wz::{WzAttitude, WzChart, CHART_SWITCH_MODULUS};

@@ -1,0 +1,265 @@
+//! Lab parameters: the specification a slider is generated from, and validated values.
+
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use thiserror::Error;
+
+/// How a slider maps its position to the value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum Scale {
+    /// Uniform steps.
+    Linear,
+    /// Logarithmic (for noise levels and windows spanning decades); `min` must be > 0.
+    Log,
+}
+
+/// What kind of value a parameter holds.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum ParamKind {
+    /// Any real number in range.
+    Real,
+    /// Integers only (window sizes, counts).
+    Integer,
+    /// 0 = off, 1 = on.
+    Toggle,
+    /// Index into the listed option names.
+    Choice(&'static [&'static str]),
+}
+
+/// One parameter of a lab: the source of its slider, its CLI `--set` key and URL key.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ParamSpec {
+    /// Stable key with its unit in the name, e.g. `gyro_bias_deg_s`.
+    pub key: &'static str,
+    /// Label for the slider.
+    pub label: &'static str,
+    /// Unit shown beside the value ("" when dimensionless).
+    pub unit: &'static str,
+    /// Smallest allowed value.
+    pub min: f64,
+    /// Largest allowed value.
+    pub max: f64,
+    /// Value the lab starts with (the paper's setting where there is one).
+    pub default: f64,
+    /// Slider mapping.
+    pub scale: Scale,
+    /// Value kind.
+    pub kind: ParamKind,
+    /// One sentence on what the parameter does, shown on hover.
+    pub help: &'static str,
+    /// True when a change only takes effect at the next reset (e.g. an initial condition).
+    pub needs_reset: bool,
+}
+
+impl ParamSpec {
+    /// A real-valued, linear, live parameter.
+    pub const fn real(key: &'static str, label: &'static str, unit: &'static str, min: f64, max: f64, default: f64) -> Self {
+        Self { key, label, unit, min, max, default, scale: Scale::Linear, kind: ParamKind::Real, help: "", needs_reset: false }
+    }
+
+    /// Same, on a log slider.
+    pub const fn log(self) -> Self {
+        Self { scale: Scale::Log, ..self }
+    }
+
+    /// Integer valued.
+    pub const fn integer(self) -> Self {
+        Self { kind: ParamKind::Integer, ..self }
+    }
+
+    /// Applies at the next reset only.
+    pub const fn on_reset(self) -> Self {
+        Self { needs_reset: true, ..self }
+    }
+
+    /// With a help text.
+    pub const fn help(self, help: &'static str) -> Self {
+        Self { help, ..self }
+    }
+
+    /// An on/off switch.
+    pub const fn toggle(key: &'static str, label: &'static str, default_on: bool) -> Self {
+        let default = if default_on { 1.0 } else { 0.0 };
+        Self { kind: ParamKind::Toggle, ..Self::real(key, label, "", 0.0, 1.0, default) }
+    }
+
+    /// A choice among named options (value = index).
+    pub const fn choice(key: &'static str, label: &'static str, options: &'static [&'static str], default: usize) -> Self {
+        let max = if options.is_empty() { 0.0 } else { (options.len() - 1) as f64 };
+        Self { kind: ParamKind::Choice(options), ..Self::real(key, label, "", 0.0, max, default as f64) }
+    }
+
+    /// Checks one value against this spec.
+    pub fn validate(&self, value: f64) -> Result<f64, ParamError> {
+        if !value.is_finite() {
+            return Err(ParamError::NotFinite { key: self.key.to_string() });
+        }
+        if value < self.min || value > self.max {
+            return Err(ParamError::OutOfRange { key: self.key.to_string(), value, min: self.min, max: self.max, unit: self.unit });
+        }
+        match self.kind {
+            ParamKind::Real => Ok(value),
+            _ if value.fract() != 0.0 => Err(ParamError::NotInteger { key: self.key.to_string(), value }),
+            _ => Ok(value),
+        }
+    }
+}
+
+/// What was wrong with a parameter given by a user (slider, `--set`, URL).
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum ParamError {
+    /// No parameter of that name in this lab.
+    #[error("unknown parameter `{key}` (this lab has: {known})")]
+    Unknown {
+        /// The key given.
+        key: String,
+        /// The lab's keys, comma separated.
+        known: String,
+    },
+    /// The text is not a number.
+    #[error("parameter `{key}`: `{text}` is not a number")]
+    NotANumber {
+        /// Parameter key.
+        key: String,
+        /// Text given.
+        text: String,
+    },
+    /// NaN or infinite.
+    #[error("parameter `{key}` must be a finite number")]
+    NotFinite {
+        /// Parameter key.
+        key: String,
+    },
+    /// Outside the allowed range.
+    #[error("parameter `{key}` = {value} is outside {min} … {max} {unit}")]
+    OutOfRange {
+        /// Parameter key.
+        key: String,
+        /// Value given.
+        value: f64,
+        /// Smallest allowed.
+        min: f64,
+        /// Largest allowed.
+        max: f64,
+        /// Unit of the range.
+        unit: &'static str,
+    },
+    /// A fractional value for an integer, toggle or choice.
+    #[error("parameter `{key}` must be a whole number, got {value}")]
+    NotInteger {
+        /// Parameter key.
+        key: String,
+        /// Value given.
+        value: f64,
+    },
+    /// `key=value` expected.
+    #[error("`{text}` is not of the form key=value")]
+    Malformed {
+        /// Text given.
+        text: String,
+    },
+}
+
+/// Validated values of every parameter of one lab, by key.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ParamValues {
+    values: BTreeMap<String, f64>,
+}
+
+impl ParamValues {
+    /// Every parameter at its default.
+    pub fn defaults(specs: &[ParamSpec]) -> Self {
+        Self { values: specs.iter().map(|s| (s.key.to_string(), s.default)).collect() }
+    }
+
+    /// Value of `key`. Labs ask only for their own keys, which `defaults` always fills;
+    /// an unknown key reads as NaN so a typo shows up as a visibly broken run, not a panic.
+    pub fn get(&self, key: &str) -> f64 {
+        self.values.get(key).copied().unwrap_or(f64::NAN)
+    }
+
+    /// Value of a toggle.
+    pub fn flag(&self, key: &str) -> bool {
+        self.get(key) >= 0.5
+    }
+
+    /// Value of an integer or choice parameter.
+    pub fn index(&self, key: &str) -> usize {
+        let v = self.get(key);
+        if v.is_finite() && v >= 0.0 { v.round() as usize } else { 0 }
+    }
+
+    /// Sets `key` after validating against `specs`.
+    pub fn set(&mut self, specs: &[ParamSpec], key: &str, value: f64) -> Result<(), ParamError> {
+        let spec = find_spec(specs, key)?;
+        let value = spec.validate(value)?;
+        self.values.insert(key.to_string(), value);
+        Ok(())
+    }
+
+    /// Sets `key` from text (`"0.1"`), validating.
+    pub fn set_text(&mut self, specs: &[ParamSpec], key: &str, text: &str) -> Result<(), ParamError> {
+        find_spec(specs, key)?;
+        let value: f64 = text.trim().parse().map_err(|_| ParamError::NotANumber { key: key.to_string(), text: text.to_string() })?;
+        self.set(specs, key, value)
+    }
+
+    /// Applies `key=value` assignments; returns every error, keeping the good assignments.
+    pub fn apply_assignments<'a>(&mut self, specs: &[ParamSpec], items: impl IntoIterator<Item = &'a str>) -> Vec<ParamError> {
+        let mut errors = Vec::new();
+        for item in items {
+            let result = match item.split_once('=') {
+                Some((k, v)) => self.set_text(specs, k.trim(), v),
+                None => Err(ParamError::Malformed { text: item.to_string() }),
+            };
+            if let Err(e) = result {
+                errors.push(e);
+            }
+        }
+        errors
+    }
+
+    /// (key, value) pairs in key order.
+    pub fn iter(&self) -> impl Iterator<Item = (&str, f64)> {
+        self.values.iter().map(|(k, v)| (k.as_str(), *v))
+    }
+}
+
+fn find_spec<'a>(specs: &'a [ParamSpec], key: &str) -> Result<&'a ParamSpec, ParamError> {
+    specs.iter().find(|s| s.key == key).ok_or_else(|| ParamError::Unknown {
+        key: key.to_string(),
+        known: specs.iter().map(|s| s.key).collect::<Vec<_>>().join(", "),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SPECS: &[ParamSpec] = &[
+        ParamSpec::real("sigma_deg_s", "σ", "°/s", 0.0, 1.0, 0.1),
+        ParamSpec::real("window", "N", "", 1.0, 5000.0, 100.0).integer(),
+    ];
+
+    #[test]
+    fn bad_assignments_are_reported_and_good_ones_kept() {
+        let mut p = ParamValues::defaults(SPECS);
+        let errs = p.apply_assignments(SPECS, ["sigma_deg_s=0.5", "window=2.5", "nope=1", "window", "sigma_deg_s=abc", "window=9999"]);
+        assert_eq!(p.get("sigma_deg_s"), 0.5);
+        assert_eq!(p.get("window"), 100.0);
+        assert_eq!(errs.len(), 5);
+        assert!(matches!(errs[0], ParamError::NotInteger { .. }));
+        assert!(matches!(errs[1], ParamError::Unknown { .. }));
+        assert!(matches!(errs[2], ParamError::Malformed { .. }));
+        assert!(matches!(errs[3], ParamError::NotANumber { .. }));
+        assert!(matches!(errs[4], ParamError::OutOfRange { .. }));
+        assert!(errs[4].to_string().contains("1 … 5000"));
+    }
+
+    #[test]
+    fn non_finite_values_are_rejected() {
+        let mut p = ParamValues::defaults(SPECS);
+        assert!(matches!(p.set(SPECS, "sigma_deg_s", f64::NAN), Err(ParamError::NotFinite { .. })));
+        assert_eq!(p.get("sigma_deg_s"), 0.1);
+    }
+}

@@ -1,0 +1,280 @@
+//! The fixed-step loop: truth → sensors → estimators → recorder.
+
+use crate::estimators::{Estimate, EstimatorStatus};
+use crate::labs::{Lab, LabRun, TruthState};
+use crate::math::{rotation_angle_between, small_angle_error_body, vertical_in_body, EulerYpr, WzAttitude};
+use crate::params::{ParamError, ParamValues};
+use crate::record::{Recorder, SeriesGroup, SeriesSpec};
+use nalgebra::{UnitQuaternion, Vector3};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+/// Rows the recorder keeps by default (about 40 MB for 40 series would be far more than
+/// needed: 20 000 rows × 8 bytes × series).
+pub const DEFAULT_HISTORY_ROWS: usize = 20_000;
+
+/// A running lab: one `(lab, parameters, seed)` always gives the same run.
+pub struct Simulation {
+    lab: &'static dyn Lab,
+    params: ParamValues,
+    seed: u64,
+    rng: ChaCha8Rng,
+    run: LabRun,
+    t_s: f64,
+    steps: u64,
+    recorder: Recorder,
+    row: Vec<f64>,
+    statuses: Vec<EstimatorStatus>,
+    history_rows: usize,
+}
+
+impl Simulation {
+    /// Starts `lab` with `params` (already validated) and `seed`.
+    pub fn new(lab: &'static dyn Lab, params: ParamValues, seed: u64) -> Self {
+        Self::with_history(lab, params, seed, DEFAULT_HISTORY_ROWS)
+    }
+
+    /// Same, keeping `history_rows` rows of every series.
+    pub fn with_history(lab: &'static dyn Lab, params: ParamValues, seed: u64, history_rows: usize) -> Self {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let run = lab.build(&params, &mut rng);
+        let recorder = Recorder::new(series_for(&run), history_rows);
+        let statuses = vec![EstimatorStatus::Ok; run.estimators.len()];
+        let mut sim = Self { lab, params, seed, rng, run, t_s: 0.0, steps: 0, recorder, row: Vec::new(), statuses, history_rows };
+        sim.record();
+        sim
+    }
+
+    /// The lab.
+    pub fn lab(&self) -> &'static dyn Lab {
+        self.lab
+    }
+
+    /// Current parameter values.
+    pub fn params(&self) -> &ParamValues {
+        &self.params
+    }
+
+    /// The seed of this run.
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// Simulation time (s).
+    pub fn t_s(&self) -> f64 {
+        self.t_s
+    }
+
+    /// Steps taken since the last reset.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Current step length (s).
+    pub fn dt_s(&self) -> f64 {
+        self.lab.dt_s(&self.params)
+    }
+
+    /// The recorded series.
+    pub fn recorder(&self) -> &Recorder {
+        &self.recorder
+    }
+
+    /// The row recorded last (same order as the recorder's series).
+    pub fn last_row(&self) -> &[f64] {
+        &self.row
+    }
+
+    /// The true state now.
+    pub fn truth(&self) -> TruthState {
+        self.run.truth.state()
+    }
+
+    /// (id, label, estimate) of every estimator now.
+    pub fn estimates(&self) -> Vec<(&'static str, &'static str, Estimate)> {
+        self.run.estimators.iter().map(|e| (e.id(), e.label(), e.estimate())).collect()
+    }
+
+    /// Health of every estimator (by position).
+    pub fn statuses(&self) -> &[EstimatorStatus] {
+        &self.statuses
+    }
+
+    /// Sets one parameter; takes effect on the next step without a restart (parameters
+    /// marked `needs_reset` take effect at the next reset).
+    pub fn set_param(&mut self, key: &str, value: f64) -> Result<(), ParamError> {
+        self.params.set(self.lab.params(), key, value)?;
+        self.run.truth.apply_params(&self.params);
+        self.run.sensors.apply_params(&self.params);
+        for e in &mut self.run.estimators {
+            e.apply_params(&self.params);
+        }
+        Ok(())
+    }
+
+    /// Restarts from t = 0 with `seed` (reseeds the RNG, rebuilds truth and estimators).
+    pub fn reset(&mut self, seed: u64) {
+        *self = Self::with_history(self.lab, self.params.clone(), seed, self.history_rows);
+    }
+
+    /// One fixed step.
+    pub fn step(&mut self) {
+        let dt_s = self.dt_s();
+        self.run.truth.step(dt_s);
+        let truth = self.run.truth.state();
+        let measurements = self.run.sensors.sample(&truth, dt_s, &mut self.rng);
+        for e in &mut self.run.estimators {
+            e.step(&measurements, dt_s);
+        }
+        self.t_s = truth.t_s;
+        self.steps += 1;
+        self.record();
+    }
+
+    /// Steps until `duration_s` more simulated time has passed.
+    pub fn run_for(&mut self, duration_s: f64) {
+        let end = self.t_s + duration_s;
+        while self.t_s < end - 1e-9 * self.dt_s() {
+            self.step();
+        }
+    }
+
+    fn record(&mut self) {
+        let truth = self.run.truth.state();
+        self.row.clear();
+        self.row.push(truth.t_s);
+        push_attitude(&mut self.row, Some(&truth.q_ref_from_body), None);
+        push_rate(&mut self.row, Some(&truth.rate_body_rad_s));
+        push_angle(&mut self.row, truth.angle_rad, None);
+        for (i, e) in self.run.estimators.iter().enumerate() {
+            let est = e.estimate();
+            self.statuses[i] = health(&est);
+            push_attitude(&mut self.row, est.q_ref_from_body.as_ref(), est.wz.as_ref());
+            push_rate(&mut self.row, est.rate_body_rad_s.as_ref());
+            push_angle(&mut self.row, est.angle_rad, truth.angle_rad);
+            push_errors(&mut self.row, &truth, &est);
+            pad(&mut self.row, &est.covariance, e.covariance_names().len());
+            pad(&mut self.row, &est.innovation, e.innovation_names().len());
+            self.row.push(self.statuses[i].code());
+        }
+        self.run.truth.extra_values(&mut self.row);
+        self.recorder.push(&self.row);
+    }
+}
+
+fn health(est: &Estimate) -> EstimatorStatus {
+    if est.status != EstimatorStatus::Ok {
+        return est.status.clone();
+    }
+    let q_bad = est.q_ref_from_body.is_some_and(|q| !q.coords.iter().all(|c| c.is_finite()));
+    let a_bad = est.angle_rad.is_some_and(|a| !a.is_finite());
+    let p_bad = est.covariance.iter().any(|c| !c.is_finite());
+    if q_bad || a_bad || p_bad {
+        EstimatorStatus::Diverged("state or covariance is not finite".into())
+    } else {
+        EstimatorStatus::Ok
+    }
+}
+
+const ATTITUDE: [(&str, &str, SeriesGroup); 8] = [
+    ("yaw_deg", "deg", SeriesGroup::Attitude),
+    ("pitch_deg", "deg", SeriesGroup::Attitude),
+    ("roll_deg", "deg", SeriesGroup::Attitude),
+    ("k_x", "", SeriesGroup::Sphere),
+    ("k_y", "", SeriesGroup::Sphere),
+    ("k_z", "", SeriesGroup::Sphere),
+    ("u", "", SeriesGroup::Sphere),
+    ("v", "", SeriesGroup::Sphere),
+];
+const RATE: [(&str, &str, SeriesGroup); 3] = [
+    ("rate_x_deg_s", "deg/s", SeriesGroup::Rate),
+    ("rate_y_deg_s", "deg/s", SeriesGroup::Rate),
+    ("rate_z_deg_s", "deg/s", SeriesGroup::Rate),
+];
+const ERRORS: [(&str, &str, SeriesGroup); 4] = [
+    ("err_deg", "deg", SeriesGroup::Error),
+    ("err_x_deg", "deg", SeriesGroup::Error),
+    ("err_y_deg", "deg", SeriesGroup::Error),
+    ("err_z_deg", "deg", SeriesGroup::Error),
+];
+
+/// |w| above which (u, v) are not recorded (the point is off any plot; the sphere view
+/// uses the chart-free vertical k instead).
+const W_RECORD_LIMIT: f64 = 1e6;
+
+fn push_attitude(row: &mut Vec<f64>, q: Option<&UnitQuaternion<f64>>, wz: Option<&WzAttitude>) {
+    let Some(q) = q else {
+        row.extend([f64::NAN; 8]);
+        return;
+    };
+    let e = EulerYpr::from_quaternion(q);
+    row.extend([e.yaw_rad.to_degrees(), e.pitch_rad.to_degrees(), e.roll_rad.to_degrees()]);
+    let k = vertical_in_body(q);
+    row.extend([k.x, k.y, k.z]);
+    let wz = wz.copied().unwrap_or_else(|| WzAttitude::from_quaternion(q));
+    match wz.w() {
+        Some((u, v)) if u.hypot(v) < W_RECORD_LIMIT => row.extend([u, v]),
+        _ => row.extend([f64::NAN, f64::NAN]),
+    }
+}
+
+fn push_rate(row: &mut Vec<f64>, rate: Option<&Vector3<f64>>) {
+    match rate {
+        Some(r) => row.extend(r.iter().map(|x| x.to_degrees())),
+        None => row.extend([f64::NAN; 3]),
+    }
+}
+
+fn push_angle(row: &mut Vec<f64>, angle: Option<f64>, truth: Option<f64>) {
+    row.push(angle.map_or(f64::NAN, f64::to_degrees));
+    if truth.is_some() {
+        row.push(match (angle, truth) {
+            (Some(a), Some(t)) => (a - t).to_degrees(),
+            _ => f64::NAN,
+        });
+    }
+}
+
+fn push_errors(row: &mut Vec<f64>, truth: &TruthState, est: &Estimate) {
+    match est.q_ref_from_body {
+        Some(q) => {
+            row.push(rotation_angle_between(&truth.q_ref_from_body, &q).to_degrees());
+            row.extend(small_angle_error_body(&truth.q_ref_from_body, &q).iter().map(|x| x.to_degrees()));
+        }
+        None => row.extend([f64::NAN; 4]),
+    }
+}
+
+fn pad(row: &mut Vec<f64>, values: &[f64], n: usize) {
+    row.extend((0..n).map(|i| values.get(i).copied().unwrap_or(f64::NAN)));
+}
+
+fn series_for(run: &LabRun) -> Vec<SeriesSpec> {
+    let truth = run.truth.state();
+    let mut s = vec![SeriesSpec::new("t_s", "s", SeriesGroup::Time)];
+    let add = |s: &mut Vec<SeriesSpec>, src: &str, list: &[(&str, &'static str, SeriesGroup)]| {
+        s.extend(list.iter().map(|(n, u, g)| SeriesSpec::new(format!("{src}.{n}"), u, *g)));
+    };
+    add(&mut s, "truth", &ATTITUDE);
+    add(&mut s, "truth", &RATE);
+    s.push(SeriesSpec::new("truth.angle_deg", "deg", SeriesGroup::Attitude));
+    for e in &run.estimators {
+        let id = e.id();
+        add(&mut s, id, &ATTITUDE);
+        add(&mut s, id, &RATE);
+        s.push(SeriesSpec::new(format!("{id}.angle_deg"), "deg", SeriesGroup::Attitude));
+        if truth.angle_rad.is_some() {
+            s.push(SeriesSpec::new(format!("{id}.angle_err_deg"), "deg", SeriesGroup::Error));
+        }
+        add(&mut s, id, &ERRORS);
+        for c in e.covariance_names() {
+            s.push(SeriesSpec::new(format!("{id}.{c}"), "", SeriesGroup::Covariance));
+        }
+        for c in e.innovation_names() {
+            s.push(SeriesSpec::new(format!("{id}.{c}"), "", SeriesGroup::Innovation));
+        }
+        s.push(SeriesSpec::new(format!("{id}.status"), "", SeriesGroup::Lab));
+    }
+    s.extend(run.truth.extra_series());
+    s
+}

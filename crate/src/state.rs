@@ -1,0 +1,136 @@
+//! The shareable state of the app in a URL fragment:
+//! `#lab=free-rotation&seed=1&speed=1&gyro_bias_deg_s=0.1`.
+//!
+//! Parsing never fails as a whole: every bad item is reported with its position and text,
+//! and everything good is kept.
+
+use crate::labs::{self, Lab};
+use crate::params::ParamValues;
+use thiserror::Error;
+
+/// What a URL fragment asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UrlState {
+    /// The lab.
+    pub lab_id: &'static str,
+    /// RNG seed.
+    pub seed: u64,
+    /// Simulation speed (× real time).
+    pub speed: f64,
+    /// The lab's parameters.
+    pub params: ParamValues,
+}
+
+/// Speeds the UI offers (× real time).
+pub const SPEED_RANGE: (f64, f64) = (0.1, 1000.0);
+
+/// One bad item in a URL fragment.
+#[derive(Clone, Debug, Error, PartialEq)]
+#[error("URL item {position} `{text}`: {reason}")]
+pub struct UrlStateError {
+    /// 1-based position of the item.
+    pub position: usize,
+    /// The item as written.
+    pub text: String,
+    /// What was wrong.
+    pub reason: String,
+}
+
+impl UrlState {
+    /// Defaults of `lab`.
+    pub fn defaults(lab: &'static dyn Lab) -> Self {
+        Self { lab_id: lab.id(), seed: 1, speed: 1.0, params: ParamValues::defaults(lab.params()) }
+    }
+
+    /// Encodes as a fragment (without `#`); parameters at their default are left out.
+    pub fn encode(&self) -> String {
+        let mut s = format!("lab={}&seed={}&speed={}", self.lab_id, self.seed, self.speed);
+        if let Some(lab) = labs::find(self.lab_id) {
+            for spec in lab.params() {
+                let v = self.params.get(spec.key);
+                if v != spec.default {
+                    s += &format!("&{}={}", spec.key, v);
+                }
+            }
+        }
+        s
+    }
+
+    /// Parses a fragment (with or without `#`). Unknown or invalid items are returned as
+    /// errors; the rest is applied on top of the defaults of the named (or first) lab.
+    pub fn parse(fragment: &str) -> (Self, Vec<UrlStateError>) {
+        let fragment = fragment.trim_start_matches('#');
+        let items: Vec<(usize, &str)> = fragment.split('&').filter(|s| !s.is_empty()).enumerate().map(|(i, s)| (i + 1, s)).collect();
+        let mut errors = Vec::new();
+        let err = |position: usize, text: &str, reason: String| UrlStateError { position, text: text.to_string(), reason };
+        let default_lab = labs::all()[0];
+        let mut lab = default_lab;
+        for &(pos, item) in &items {
+            if let Some(id) = item.strip_prefix("lab=") {
+                match labs::find(id) {
+                    Some(l) => lab = l,
+                    None => errors.push(err(pos, item, format!("no such lab (labs: {})", labs::ids()))),
+                }
+            }
+        }
+        let mut state = Self::defaults(lab);
+        for &(pos, item) in &items {
+            let Some((key, value)) = item.split_once('=') else {
+                errors.push(err(pos, item, "expected key=value".into()));
+                continue;
+            };
+            match key {
+                "lab" => {}
+                "seed" => match value.parse::<u64>() {
+                    Ok(s) => state.seed = s,
+                    Err(_) => errors.push(err(pos, item, "seed must be a whole number ≥ 0".into())),
+                },
+                "speed" => match value.parse::<f64>() {
+                    Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => state.speed = s,
+                    _ => errors.push(err(pos, item, format!("speed must be between {} and {}", SPEED_RANGE.0, SPEED_RANGE.1))),
+                },
+                _ => {
+                    if let Err(e) = state.params.set_text(lab.params(), key, value) {
+                        errors.push(err(pos, item, e.to_string()));
+                    }
+                }
+            }
+        }
+        (state, errors)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn round_trip() {
+        let lab = labs::all()[0];
+        let mut s = UrlState::defaults(lab);
+        s.seed = 42;
+        s.speed = 10.0;
+        s.params.set(lab.params(), "gyro_bias_deg_s", 0.5).unwrap();
+        let (back, errors) = UrlState::parse(&format!("#{}", s.encode()));
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(back, s);
+    }
+
+    #[test]
+    fn malformed_items_are_reported_and_the_rest_kept() {
+        let (s, errors) = UrlState::parse("lab=free-rotation&seed=-3&gyro_bias_deg_s=0.3&junk&speed=1e9&nope=2&gyro_noise_deg_s=abc");
+        assert_eq!(s.lab_id, "free-rotation");
+        assert_eq!(s.seed, 1);
+        assert_eq!(s.params.get("gyro_bias_deg_s"), 0.3);
+        let positions: Vec<usize> = errors.iter().map(|e| e.position).collect();
+        assert_eq!(positions, vec![2, 4, 5, 6, 7]);
+        assert!(errors[3].to_string().contains("unknown parameter `nope`"));
+    }
+
+    #[test]
+    fn unknown_lab_falls_back_to_the_first() {
+        let (s, errors) = UrlState::parse("lab=warp-drive");
+        assert_eq!(s.lab_id, labs::all()[0].id());
+        assert_eq!(errors.len(), 1);
+    }
+}
