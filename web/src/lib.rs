@@ -1,1 +1,28 @@
-//! web
+//! # Attitude Lab app
+//!
+//! The eframe front end (wgpu renderer) of Attitude Lab. The same code runs in the browser
+//! (see [`start`]) and as a desktop window (`cargo run -p attlab-web --release`).
+
+pub mod app;
+pub mod panels;
+pub mod platform;
+pub mod render;
+
+pub use app::AttLabApp;
+
+/// Starts the app on the canvas with id `canvas_id` (called from `index.html`).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub async fn start(canvas_id: String) -> Result<(), wasm_bindgen::JsValue> {
+    use wasm_bindgen::JsCast as _;
+    let _ = eframe::WebLogger::init(log::LevelFilter::Info);
+    let document = web_sys::window().and_then(|w| w.document()).ok_or("no document")?;
+    let canvas = document
+        .get_element_by_id(&canvas_id)
+        .ok_or_else(|| format!("no element with id `{canvas_id}`"))?
+        .dyn_into::<web_sys::HtmlCanvasElement>()
+        .map_err(|_| format!("`{canvas_id}` is not a canvas"))?;
+    eframe::WebRunner::new()
+        .start(canvas, eframe::WebOptions::default(), Box::new(|cc| Ok(Box::new(AttLabApp::new(cc)))))
+        .await
+}

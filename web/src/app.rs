@@ -1,0 +1,219 @@
+//! The app: owns the simulation, advances it within a per-frame time budget, and lays out
+//! the panels. Panels read the simulation and send commands; they never step it.
+
+use crate::panels::{self, Command};
+use crate::platform;
+use crate::render::{body3d, plots, riemann_sphere};
+use attlab::labs::{self, Lab};
+use attlab::params::ParamValues;
+use attlab::sim::Simulation;
+use attlab::state::UrlState;
+use web_time::{Duration, Instant};
+
+/// Time the simulation may take per frame before it falls behind real time.
+const STEP_BUDGET: Duration = Duration::from_millis(12);
+
+/// A message for the user (bad URL item, export result, divergence).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Message {
+    /// Text shown.
+    pub text: String,
+    /// Shown in red.
+    pub is_error: bool,
+}
+
+/// Smoothed frame statistics for the status line.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Simulation steps per wall-clock second.
+    pub steps_per_s: f64,
+    /// Frame-to-frame time (ms).
+    pub frame_ms: f64,
+    /// Time spent stepping in the last frame (ms).
+    pub step_ms: f64,
+    /// The simulation could not keep up with the requested speed.
+    pub behind: bool,
+}
+
+/// Everything the UI shows and changes.
+pub struct AttLabApp {
+    /// The running simulation.
+    pub sim: Simulation,
+    /// Seed used at the next reset.
+    pub seed: u64,
+    /// Running or paused.
+    pub playing: bool,
+    /// Simulated seconds per wall-clock second.
+    pub speed: f64,
+    /// 3D camera.
+    pub camera: body3d::OrbitCamera,
+    /// Sphere orientation.
+    pub sphere: riemann_sphere::SphereView,
+    /// Plot tab and options.
+    pub plots: plots::PlotState,
+    /// Which estimator the 3D ghost shows.
+    pub ghost_index: usize,
+    /// Messages for the user.
+    pub messages: Vec<Message>,
+    /// Show the explanation panel.
+    pub show_explain: bool,
+    /// Status line values.
+    pub stats: Stats,
+    gpu_ready: bool,
+    app_errors: Vec<String>,
+    frames: u64,
+    last_frame: Option<Instant>,
+    step_debt: f64,
+    last_fragment: String,
+}
+
+impl AttLabApp {
+    /// Creates the app, restoring lab, seed, speed and parameters from the URL fragment.
+    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let gpu_ready = cc.wgpu_render_state.as_ref().map(body3d::init).is_some();
+        let (state, errors) = UrlState::parse(&platform::initial_fragment());
+        let lab = labs::find(state.lab_id).unwrap_or(labs::all()[0]);
+        let mut app = Self::with_state(lab, state.params, state.seed, state.speed);
+        app.gpu_ready = gpu_ready;
+        if !gpu_ready {
+            app.app_errors.push("no wgpu render state: the 3D view is disabled".into());
+        }
+        app.messages.extend(errors.into_iter().map(|e| Message { text: format!("{e} — ignored"), is_error: true }));
+        app
+    }
+
+    /// An app without a window (tests, headless use).
+    pub fn with_state(lab: &'static dyn Lab, params: ParamValues, seed: u64, speed: f64) -> Self {
+        Self {
+            sim: Simulation::new(lab, params, seed),
+            seed,
+            playing: true,
+            speed,
+            camera: body3d::OrbitCamera::default(),
+            sphere: riemann_sphere::SphereView::default(),
+            plots: plots::PlotState::default(),
+            ghost_index: 0,
+            messages: Vec::new(),
+            show_explain: false,
+            stats: Stats::default(),
+            gpu_ready: false,
+            app_errors: Vec::new(),
+            frames: 0,
+            last_frame: None,
+            step_debt: 0.0,
+            last_fragment: String::new(),
+        }
+    }
+
+    /// Applies one UI command.
+    pub fn apply(&mut self, command: Command) {
+        match command {
+            Command::SelectLab(lab) => {
+                self.sim = Simulation::new(lab, ParamValues::defaults(lab.params()), self.seed);
+                self.ghost_index = 0;
+                self.step_debt = 0.0;
+            }
+            Command::SetParam(key, value) => {
+                if let Err(e) = self.sim.set_param(key, value) {
+                    self.messages.push(Message { text: e.to_string(), is_error: true });
+                }
+            }
+            Command::RestoreDefaults => {
+                let lab = self.sim.lab();
+                self.sim = Simulation::new(lab, ParamValues::defaults(lab.params()), self.seed);
+            }
+            Command::Reset => {
+                self.sim.reset(self.seed);
+                self.step_debt = 0.0;
+            }
+            Command::StepOnce => self.sim.step(),
+            Command::ExportCsv => self.export_csv(),
+            Command::Dismiss(i) => {
+                if i < self.messages.len() {
+                    self.messages.remove(i);
+                }
+            }
+        }
+    }
+
+    fn export_csv(&mut self) {
+        let mut buf = Vec::new();
+        let result = self.sim.recorder().write_csv(&mut buf).map_err(|e| e.to_string());
+        let name = format!("attlab-{}-seed{}.csv", self.sim.lab().id(), self.sim.seed());
+        let result = result.and_then(|()| platform::save_file(&name, "text/csv", &buf));
+        let (text, is_error) = match result {
+            Ok(t) => (t, false),
+            Err(e) => (format!("export failed: {e}"), true),
+        };
+        self.messages.push(Message { text, is_error });
+    }
+
+    /// Advances the simulation by the wall-clock time since the last frame × speed, within
+    /// [`STEP_BUDGET`]; if it cannot keep up it drops the backlog instead of freezing.
+    pub fn advance(&mut self, now: Instant) {
+        let frame_s = self.last_frame.map_or(0.0, |t| now.duration_since(t).as_secs_f64()).min(0.1);
+        self.last_frame = Some(now);
+        self.stats.frame_ms = 0.9 * self.stats.frame_ms + 0.1 * frame_s * 1e3;
+        if !self.playing {
+            self.stats.steps_per_s *= 0.9;
+            return;
+        }
+        self.step_debt += self.speed * frame_s / self.sim.dt_s();
+        let mut steps = 0u32;
+        self.stats.behind = false;
+        while self.step_debt >= 1.0 {
+            self.sim.step();
+            self.step_debt -= 1.0;
+            steps += 1;
+            if steps % 16 == 0 && now.elapsed() > STEP_BUDGET {
+                self.stats.behind = true;
+                self.step_debt = 0.0;
+            }
+        }
+        self.stats.step_ms = now.elapsed().as_secs_f64() * 1e3;
+        if frame_s > 0.0 {
+            self.stats.steps_per_s = 0.9 * self.stats.steps_per_s + 0.1 * f64::from(steps) / frame_s;
+        }
+    }
+
+    fn sync_url(&mut self) {
+        let state = UrlState { lab_id: self.sim.lab().id(), seed: self.seed, speed: self.speed, params: self.sim.params().clone() };
+        let fragment = state.encode();
+        if fragment != self.last_fragment {
+            platform::set_fragment(&fragment);
+            self.last_fragment = fragment;
+        }
+    }
+
+    /// The shareable link fragment of the current state.
+    pub fn fragment(&self) -> &str {
+        &self.last_fragment
+    }
+
+    /// Whether the 3D renderer is available.
+    pub fn gpu_ready(&self) -> bool {
+        self.gpu_ready
+    }
+}
+
+impl eframe::App for AttLabApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.advance(Instant::now());
+        let mut commands = Vec::new();
+        panels::status_line(ui, self);
+        panels::controls(ui, self, &mut commands);
+        panels::central(ui, self);
+        for c in commands {
+            self.apply(c);
+        }
+        self.sync_url();
+        self.frames += 1;
+        platform::publish_status(&platform::Status {
+            frames: self.frames,
+            lab: self.sim.lab().id(),
+            sim_steps: self.sim.steps(),
+            errors: &self.app_errors,
+        });
+        ui.ctx().request_repaint();
+    }
+}

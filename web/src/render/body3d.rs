@@ -1,0 +1,250 @@
+//! The 3D body view: a wgpu paint callback drawing the truth body and the estimate as a
+//! translucent ghost beside it, with a mouse-orbit camera.
+
+use super::mesh::{body_mesh, place, sorted_vertices, Triangle, Vertex};
+use eframe::egui_wgpu::{self, wgpu};
+use egui::{Rect, Sense, Ui};
+use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
+use std::sync::OnceLock;
+
+/// Orbit camera around the scene centre (world z up).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrbitCamera {
+    /// Azimuth (rad).
+    pub yaw_rad: f64,
+    /// Elevation (rad).
+    pub pitch_rad: f64,
+    /// Distance from the centre.
+    pub distance: f64,
+}
+
+impl Default for OrbitCamera {
+    fn default() -> Self {
+        Self { yaw_rad: -1.2, pitch_rad: 0.45, distance: 7.5 }
+    }
+}
+
+impl OrbitCamera {
+    /// Eye position.
+    pub fn eye(&self) -> Point3<f64> {
+        let (sy, cy) = self.yaw_rad.sin_cos();
+        let (sp, cp) = self.pitch_rad.sin_cos();
+        Point3::new(cp * cy, cp * sy, sp) * self.distance
+    }
+
+    /// View-projection matrix for wgpu's clip space (z in 0…1).
+    pub fn view_proj(&self, aspect: f64) -> Matrix4<f64> {
+        let view = Matrix4::look_at_rh(&self.eye(), &Point3::origin(), &Vector3::z());
+        let proj = Matrix4::new_perspective(aspect.max(1e-3), 40f64.to_radians(), 0.1, 100.0);
+        // OpenGL clip z (−1…1) → wgpu (0…1).
+        let gl_to_wgpu = Matrix4::new(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.0, 0.0, 1.0);
+        gl_to_wgpu * proj * view
+    }
+
+    /// Drag to orbit, scroll to zoom.
+    pub fn handle_input(&mut self, response: &egui::Response, ui: &Ui) {
+        if response.dragged() {
+            let d = response.drag_delta();
+            self.yaw_rad -= f64::from(d.x) * 0.01;
+            self.pitch_rad = (self.pitch_rad + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            self.distance = (self.distance * (1.0 - f64::from(scroll) * 0.002)).clamp(3.0, 30.0);
+        }
+    }
+}
+
+fn mesh() -> &'static [Triangle] {
+    static MESH: OnceLock<Vec<Triangle>> = OnceLock::new();
+    MESH.get_or_init(body_mesh)
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+struct Uniforms {
+    view_proj: [[f32; 4]; 4],
+    light_dir: [f32; 4],
+    flags: [f32; 4],
+}
+
+/// GPU objects kept in egui-wgpu's callback resources.
+struct Body3dResources {
+    pipeline: wgpu::RenderPipeline,
+    bind_group: wgpu::BindGroup,
+    uniform_buffer: wgpu::Buffer,
+    vertex_buffer: wgpu::Buffer,
+    vertex_capacity: usize,
+    vertex_count: u32,
+}
+
+/// Creates the pipeline once; call from the app's creation context.
+pub fn init(render_state: &egui_wgpu::RenderState) {
+    let device = &render_state.device;
+    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("attlab_body3d"),
+        source: wgpu::ShaderSource::Wgsl(include_str!("body3d.wgsl").into()),
+    });
+    let uniform_buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("attlab_body3d_uniforms"),
+        size: std::mem::size_of::<Uniforms>() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("attlab_body3d_layout"),
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+            count: None,
+        }],
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("attlab_body3d_bind_group"),
+        layout: &layout,
+        entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform_buffer.as_entire_binding() }],
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("attlab_body3d_pipeline_layout"),
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("attlab_body3d_pipeline"),
+        layout: Some(&pipeline_layout),
+        vertex: wgpu::VertexState {
+            module: &shader,
+            entry_point: Some("vs_main"),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<Vertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
+            })],
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+        },
+        primitive: wgpu::PrimitiveState { cull_mode: None, ..wgpu::PrimitiveState::default() },
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &shader,
+            entry_point: Some("fs_main"),
+            targets: &[Some(wgpu::ColorTargetState {
+                format: render_state.target_format,
+                blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    let vertex_capacity = 4096;
+    let vertex_buffer = new_vertex_buffer(device, vertex_capacity);
+    let srgb = render_state.target_format.is_srgb();
+    log::info!("body3d pipeline ready (target {:?}, sRGB {srgb})", render_state.target_format);
+    render_state.renderer.write().callback_resources.insert(Body3dResources {
+        pipeline,
+        bind_group,
+        uniform_buffer,
+        vertex_buffer,
+        vertex_capacity,
+        vertex_count: 0,
+    });
+    SRGB_TARGET.get_or_init(|| srgb);
+}
+
+static SRGB_TARGET: OnceLock<bool> = OnceLock::new();
+
+fn new_vertex_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("attlab_body3d_vertices"),
+        size: (capacity * std::mem::size_of::<Vertex>()) as u64,
+        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}
+
+struct Body3dCallback {
+    uniforms: Uniforms,
+    vertices: Vec<Vertex>,
+}
+
+impl egui_wgpu::CallbackTrait for Body3dCallback {
+    fn prepare(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        _screen: &egui_wgpu::ScreenDescriptor,
+        _encoder: &mut wgpu::CommandEncoder,
+        resources: &mut egui_wgpu::CallbackResources,
+    ) -> Vec<wgpu::CommandBuffer> {
+        let Some(res) = resources.get_mut::<Body3dResources>() else { return Vec::new() };
+        if self.vertices.len() > res.vertex_capacity {
+            res.vertex_capacity = self.vertices.len().next_power_of_two();
+            res.vertex_buffer = new_vertex_buffer(device, res.vertex_capacity);
+        }
+        queue.write_buffer(&res.uniform_buffer, 0, bytemuck::bytes_of(&self.uniforms));
+        if !self.vertices.is_empty() {
+            queue.write_buffer(&res.vertex_buffer, 0, bytemuck::cast_slice(&self.vertices));
+        }
+        res.vertex_count = self.vertices.len() as u32;
+        Vec::new()
+    }
+
+    fn paint(&self, _info: egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &egui_wgpu::CallbackResources) {
+        let Some(res) = resources.get::<Body3dResources>() else { return };
+        if res.vertex_count == 0 {
+            return;
+        }
+        pass.set_pipeline(&res.pipeline);
+        pass.set_bind_group(0, &res.bind_group, &[]);
+        pass.set_vertex_buffer(0, res.vertex_buffer.slice(..));
+        pass.draw(0..res.vertex_count, 0..1);
+    }
+}
+
+/// What the 3D view draws: the truth and, beside it, an estimate as a ghost.
+pub struct Scene<'a> {
+    /// True attitude.
+    pub truth: UnitQuaternion<f64>,
+    /// Estimated attitude (ghost) and its label, if the lab's estimator has one.
+    pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
+}
+
+/// Shows the 3D view filling `rect`.
+pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>, gpu_ready: bool) {
+    let response = ui.allocate_rect(rect, Sense::click_and_drag());
+    camera.handle_input(&response, ui);
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 4.0, egui::Color32::from_rgb(16, 20, 30));
+    if !gpu_ready {
+        painter.text(rect.center(), egui::Align2::CENTER_CENTER, "3D view needs the wgpu renderer", egui::FontId::proportional(14.0), egui::Color32::LIGHT_RED);
+        return;
+    }
+    let eye = camera.eye();
+    let mut tris = Vec::with_capacity(mesh().len() * 2 + 64);
+    let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
+    place(mesh(), &scene.truth, Vector3::new(0.0, -spacing, 0.0), 1.0, &eye, &mut tris);
+    if let Some((q, _)) = scene.ghost {
+        place(mesh(), &q, Vector3::new(0.0, spacing, 0.0), 0.35, &eye, &mut tris);
+    }
+    let vp = camera.view_proj(f64::from(rect.width() / rect.height().max(1.0)));
+    let mut view_proj = [[0.0f32; 4]; 4];
+    for (c, col) in view_proj.iter_mut().enumerate() {
+        for (r, v) in col.iter_mut().enumerate() {
+            *v = vp[(r, c)] as f32;
+        }
+    }
+    let srgb = SRGB_TARGET.get().copied().unwrap_or(false);
+    let uniforms = Uniforms { view_proj, light_dir: [0.4, -0.6, 0.8, 0.28], flags: [if srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0] };
+    let callback = Body3dCallback { uniforms, vertices: sorted_vertices(tris) };
+    painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+    let font = egui::FontId::proportional(13.0);
+    let dim = egui::Color32::from_gray(200);
+    painter.text(rect.left_top() + egui::vec2(8.0, 6.0), egui::Align2::LEFT_TOP, "truth (solid)", font.clone(), dim);
+    if let Some((_, label)) = scene.ghost {
+        painter.text(rect.right_top() + egui::vec2(-8.0, 6.0), egui::Align2::RIGHT_TOP, format!("estimate (ghost): {label}"), font.clone(), dim);
+    }
+    painter.text(rect.left_bottom() + egui::vec2(8.0, -6.0), egui::Align2::LEFT_BOTTOM, "drag to orbit · scroll to zoom · axes x red, y green, z blue", font, egui::Color32::from_gray(140));
+}

@@ -1,0 +1,133 @@
+//! The body mesh (a box bus with two solar panels and body axes), built in body axes and
+//! transformed and depth-sorted on the CPU each frame.
+
+use nalgebra::{Point3, UnitQuaternion, Vector3};
+
+/// One vertex as the shader reads it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Vertex {
+    /// World position.
+    pub position: [f32; 3],
+    /// World normal.
+    pub normal: [f32; 3],
+    /// Gamma-space RGBA.
+    pub color: [f32; 4],
+}
+
+/// A triangle in body axes with a flat normal and colour.
+#[derive(Clone, Copy, Debug)]
+pub struct Triangle {
+    corners: [Vector3<f64>; 3],
+    normal: Vector3<f64>,
+    color: [f32; 3],
+}
+
+fn cuboid(center: Vector3<f64>, half: Vector3<f64>, color: [f32; 3], out: &mut Vec<Triangle>) {
+    // Each face: outward normal along ±axis; corners ordered counter-clockwise seen from outside.
+    for axis in 0..3 {
+        for sign in [-1.0, 1.0] {
+            let mut n = Vector3::zeros();
+            n[axis] = sign;
+            let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
+            let corner = |sa: f64, sb: f64| {
+                let mut p = center;
+                p[axis] += sign * half[axis];
+                p[a] += sa * half[a];
+                p[b] += sb * half[b];
+                p
+            };
+            let quad = if sign > 0.0 {
+                [corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0)]
+            } else {
+                [corner(-1.0, -1.0), corner(-1.0, 1.0), corner(1.0, 1.0), corner(1.0, -1.0)]
+            };
+            out.push(Triangle { corners: [quad[0], quad[1], quad[2]], normal: n, color });
+            out.push(Triangle { corners: [quad[0], quad[2], quad[3]], normal: n, color });
+        }
+    }
+}
+
+/// The spacecraft-like body in body axes: bus, panels along ±x, an antenna along +y (the
+/// forward axis of paper 3) and the three body axes (x red, y green, z blue).
+pub fn body_mesh() -> Vec<Triangle> {
+    let mut t = Vec::new();
+    cuboid(Vector3::zeros(), Vector3::new(0.35, 0.5, 0.3), [0.78, 0.74, 0.62], &mut t);
+    for s in [-1.0, 1.0] {
+        cuboid(Vector3::new(s * 0.85, 0.0, 0.0), Vector3::new(0.45, 0.28, 0.02), [0.20, 0.32, 0.72], &mut t);
+    }
+    cuboid(Vector3::new(0.0, 0.62, 0.0), Vector3::new(0.08, 0.12, 0.08), [0.85, 0.55, 0.2], &mut t);
+    let axes = [(0, [0.9, 0.2, 0.2]), (1, [0.2, 0.8, 0.25]), (2, [0.25, 0.45, 1.0])];
+    for (axis, color) in axes {
+        let mut c = Vector3::zeros();
+        c[axis] = 0.75;
+        let mut h = Vector3::repeat(0.025);
+        h[axis] = 0.75;
+        cuboid(c, h, color, &mut t);
+    }
+    t
+}
+
+/// Places `mesh` at `offset` with attitude `q_ref_from_body`, tinted with `alpha`, into
+/// `out` together with each triangle's view depth (for sorting).
+pub fn place(
+    mesh: &[Triangle],
+    q_ref_from_body: &UnitQuaternion<f64>,
+    offset: Vector3<f64>,
+    alpha: f32,
+    eye: &Point3<f64>,
+    out: &mut Vec<(f64, [Vertex; 3])>,
+) {
+    for tri in mesh {
+        let world = tri.corners.map(|c| q_ref_from_body * c + offset);
+        let n = q_ref_from_body * tri.normal;
+        let centroid = (world[0] + world[1] + world[2]) / 3.0;
+        let to_eye = eye.coords - centroid;
+        // Opaque back faces are hidden by the front faces; translucent ones show through.
+        if alpha >= 0.999 && n.dot(&to_eye) < 0.0 {
+            continue;
+        }
+        let depth = to_eye.norm();
+        let color = [tri.color[0], tri.color[1], tri.color[2], alpha];
+        let normal = [n.x as f32, n.y as f32, n.z as f32];
+        let v = world.map(|p| Vertex { position: [p.x as f32, p.y as f32, p.z as f32], normal, color });
+        out.push((depth, v));
+    }
+}
+
+/// Sorts back to front (painter's algorithm) and flattens to a vertex list.
+pub fn sorted_vertices(mut tris: Vec<(f64, [Vertex; 3])>) -> Vec<Vertex> {
+    tris.sort_by(|a, b| b.0.total_cmp(&a.0));
+    tris.into_iter().flat_map(|(_, v)| v).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cuboid_normals_point_outwards_and_winding_is_ccw() {
+        let mesh = body_mesh();
+        assert!(!mesh.is_empty());
+        for t in &mesh {
+            let e1 = t.corners[1] - t.corners[0];
+            let e2 = t.corners[2] - t.corners[0];
+            let geometric = e1.cross(&e2);
+            assert!(geometric.dot(&t.normal) > 0.0, "winding disagrees with normal");
+        }
+    }
+
+    #[test]
+    fn sorting_puts_far_triangles_first() {
+        let eye = Point3::new(0.0, -5.0, 0.0);
+        let mut tris = Vec::new();
+        place(&body_mesh(), &UnitQuaternion::identity(), Vector3::zeros(), 0.4, &eye, &mut tris);
+        let depths: Vec<f64> = {
+            let mut t = tris.clone();
+            t.sort_by(|a, b| b.0.total_cmp(&a.0));
+            t.iter().map(|x| x.0).collect()
+        };
+        assert!(depths.windows(2).all(|w| w[0] >= w[1]));
+        assert_eq!(sorted_vertices(tris).len() % 3, 0);
+    }
+}

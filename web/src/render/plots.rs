@@ -1,0 +1,107 @@
+//! Time plots of the recorded series, one tab per series group, coloured by source.
+
+use attlab::record::{Recorder, SeriesGroup};
+use egui::{Color32, Ui};
+use egui_plot::{Legend, Line, LineStyle, Plot};
+
+/// Colour of a source: truth white, estimators from a fixed palette by position.
+pub fn source_color(source_index: usize) -> Color32 {
+    const PALETTE: [Color32; 8] = [
+        Color32::from_rgb(235, 235, 235),
+        Color32::from_rgb(255, 140, 60),
+        Color32::from_rgb(80, 200, 255),
+        Color32::from_rgb(120, 220, 110),
+        Color32::from_rgb(230, 110, 220),
+        Color32::from_rgb(250, 220, 80),
+        Color32::from_rgb(255, 90, 90),
+        Color32::from_rgb(160, 140, 255),
+    ];
+    PALETTE[source_index % PALETTE.len()]
+}
+
+/// Plot-panel settings kept by the app.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlotState {
+    /// Selected tab.
+    pub group: SeriesGroup,
+    /// Draw covariance elements as log10.
+    pub log_covariance: bool,
+    /// Draw ±3σ envelopes on the error plot.
+    pub show_envelope: bool,
+}
+
+impl Default for PlotState {
+    fn default() -> Self {
+        Self { group: SeriesGroup::Error, log_covariance: true, show_envelope: true }
+    }
+}
+
+const MAX_POINTS: usize = 1500;
+
+fn source_of(name: &str) -> &str {
+    name.split('.').next().unwrap_or(name)
+}
+
+/// Tabs and the plot of the selected group. `sources` lists "truth" then the estimator ids,
+/// which fixes their colours.
+pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState) {
+    let groups: Vec<SeriesGroup> = {
+        let mut g: Vec<SeriesGroup> = Vec::new();
+        for s in rec.specs() {
+            if s.group != SeriesGroup::Time && !g.contains(&s.group) && has_data(rec, &s.name) {
+                g.push(s.group);
+            }
+        }
+        g
+    };
+    ui.horizontal(|ui| {
+        for g in &groups {
+            ui.selectable_value(&mut state.group, *g, g.title());
+        }
+        ui.separator();
+        match state.group {
+            SeriesGroup::Covariance => {
+                ui.checkbox(&mut state.log_covariance, "log10");
+            }
+            SeriesGroup::Error => {
+                ui.checkbox(&mut state.show_envelope, "±3σ envelope");
+            }
+            _ => {}
+        }
+    });
+    let Some(t) = rec.index_of("t_s") else { return };
+    let color_of = |name: &str| source_color(sources.iter().position(|s| *s == source_of(name)).unwrap_or(0));
+    let group = state.group;
+    let (log_cov, envelope) = (state.log_covariance, state.show_envelope);
+    Plot::new(("series_plot", group.title()))
+        .legend(Legend::default())
+        .x_axis_label("t [s]")
+        .show(ui, |plot| {
+            for (i, spec) in rec.specs().iter().enumerate() {
+                if spec.group != group || !has_data(rec, &spec.name) {
+                    continue;
+                }
+                let mut pts = rec.decimated(t, i, MAX_POINTS);
+                let mut label = spec.header();
+                if group == SeriesGroup::Covariance && log_cov {
+                    pts.retain(|p| p[1] > 0.0);
+                    pts.iter_mut().for_each(|p| p[1] = p[1].log10());
+                    label = format!("log10 {label}");
+                }
+                plot.line(Line::new(label, pts).color(color_of(&spec.name)).width(1.4));
+            }
+            if group == SeriesGroup::Error && envelope {
+                for (i, spec) in rec.specs().iter().enumerate() {
+                    if spec.name.ends_with("P_axis_rad2") {
+                        let pts: Vec<[f64; 2]> = rec.decimated(t, i, MAX_POINTS).into_iter().map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt().to_degrees()]).collect();
+                        let name = format!("{} 3σ per axis [deg]", source_of(&spec.name));
+                        plot.line(Line::new(name, pts).color(color_of(&spec.name).gamma_multiply(0.6)).style(LineStyle::dashed_loose()));
+                    }
+                }
+            }
+        });
+}
+
+fn has_data(rec: &Recorder, name: &str) -> bool {
+    rec.index_of(name).and_then(|i| rec.column(i)).is_some_and(|c| c.iter().rev().take(64).any(|v| v.is_finite()))
+}

@@ -1,0 +1,151 @@
+//! The Riemann-sphere view (paper 3, Figs. 3 and 6): the reference vertical seen from the
+//! body, k = (a′, b′, c′), on the unit sphere; the projection ray from the pole
+//! S = (0, 0, −1) through k to the body's ξ′η′ plane, where it lands at w = u + jv; and the
+//! complex plane with the w trajectories beside it.
+
+use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Sense, Stroke, Ui, Vec2};
+use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
+use nalgebra::{Rotation3, Vector3};
+
+/// One trajectory: recent vertical directions in body axes and the matching w, oldest first.
+pub struct SphereTrack {
+    /// Legend name.
+    pub name: String,
+    /// Colour.
+    pub color: Color32,
+    /// k in body axes (unit vectors).
+    pub k_body: Vec<Vector3<f64>>,
+    /// (u, v) points for the complex plane (non-finite where w is at infinity).
+    pub w: Vec<[f64; 2]>,
+}
+
+/// Orientation of the sphere drawing (drag to turn).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SphereView {
+    /// Turn about the vertical axis (rad).
+    pub yaw_rad: f64,
+    /// Tilt towards the viewer (rad).
+    pub pitch_rad: f64,
+}
+
+impl Default for SphereView {
+    fn default() -> Self {
+        Self { yaw_rad: 0.6, pitch_rad: 0.35 }
+    }
+}
+
+struct Projector {
+    rot: Rotation3<f64>,
+    center: Pos2,
+    radius: f32,
+}
+
+impl Projector {
+    /// Screen position and whether the point is on the viewer's side.
+    fn project(&self, p: &Vector3<f64>) -> (Pos2, bool) {
+        let q = self.rot * p;
+        (self.center + Vec2::new(q.x as f32, -q.z as f32) * self.radius, q.y <= 0.0)
+    }
+
+    fn polyline(&self, painter: &Painter, pts: impl Iterator<Item = Vector3<f64>>, front: Stroke, back: Stroke) {
+        let mut prev: Option<(Pos2, bool)> = None;
+        for p in pts {
+            let cur = self.project(&p);
+            if let Some((a, fa)) = prev {
+                painter.line_segment([a, cur.0], if fa && cur.1 { front } else { back });
+            }
+            prev = Some(cur);
+        }
+    }
+}
+
+fn circle_points(f: impl Fn(f64) -> Vector3<f64>) -> impl Iterator<Item = Vector3<f64>> {
+    (0..=72).map(move |i| f(f64::from(i) * 5f64.to_radians()))
+}
+
+fn draw_grid(pr: &Projector, painter: &Painter) {
+    let front = Stroke::new(0.8, Color32::from_gray(95));
+    let back = Stroke::new(0.6, Color32::from_gray(50));
+    for lat_deg in [-60.0f64, -30.0, 30.0, 60.0] {
+        let (s, c) = lat_deg.to_radians().sin_cos();
+        pr.polyline(painter, circle_points(|a| Vector3::new(c * a.cos(), c * a.sin(), s)), front, back);
+    }
+    for lon_deg in [0.0f64, 30.0, 60.0, 90.0, 120.0, 150.0] {
+        let (s, c) = lon_deg.to_radians().sin_cos();
+        pr.polyline(painter, circle_points(|a| Vector3::new(c * a.cos(), s * a.cos(), a.sin())), front, back);
+    }
+    // The complex plane ζ′ = 0 cuts the sphere in |w| = 1 (pitch ±90° in paper 3).
+    let eq_front = Stroke::new(1.8, Color32::from_rgb(120, 160, 230));
+    let eq_back = Stroke::new(1.0, Color32::from_rgb(60, 80, 120));
+    pr.polyline(painter, circle_points(|a| Vector3::new(a.cos(), a.sin(), 0.0)), eq_front, eq_back);
+    let axis = Stroke::new(1.0, Color32::from_gray(140));
+    for (dir, label) in [(Vector3::x(), "ξ′ → u"), (Vector3::y(), "η′ → v"), (Vector3::z(), "ζ′")] {
+        let (a, _) = pr.project(&(-dir * 1.45));
+        let (b, _) = pr.project(&(dir * 1.45));
+        painter.line_segment([a, b], axis);
+        painter.text(b, Align2::LEFT_CENTER, label, FontId::proportional(12.0), Color32::from_gray(180));
+    }
+    let (s, _) = pr.project(&Vector3::new(0.0, 0.0, -1.0));
+    painter.circle_filled(s, 4.0, Color32::from_rgb(230, 200, 80));
+    painter.text(s + Vec2::new(6.0, 2.0), Align2::LEFT_TOP, "S (pole of w)", FontId::proportional(12.0), Color32::from_rgb(230, 200, 80));
+}
+
+fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
+    let faint = track.color.gamma_multiply(0.35);
+    pr.polyline(painter, track.k_body.iter().copied(), Stroke::new(1.6, track.color), Stroke::new(1.0, faint));
+    let Some(k) = track.k_body.last() else { return };
+    let (p, front) = pr.project(k);
+    painter.circle_filled(p, if front { 5.0 } else { 3.5 }, track.color);
+    // Projection ray from S through k to the plane ζ′ = 0, where it meets w = u + jv.
+    let south = Vector3::new(0.0, 0.0, -1.0);
+    if 1.0 + k.z > 0.2 {
+        let w = Vector3::new(k.x / (1.0 + k.z), k.y / (1.0 + k.z), 0.0);
+        let end = if w.norm() > 2.5 { w * (2.5 / w.norm()) } else { w };
+        let (a, _) = pr.project(&south);
+        let (b, _) = pr.project(&end);
+        painter.line_segment([a, b], Stroke::new(1.0, track.color.gamma_multiply(0.8)));
+        painter.circle_stroke(b, 4.0, Stroke::new(1.5, track.color));
+    }
+}
+
+/// Draws the sphere in `rect`; drag turns it.
+pub fn show_sphere(ui: &mut Ui, rect: Rect, view: &mut SphereView, tracks: &[SphereTrack], caption: &str) {
+    let response = ui.allocate_rect(rect, Sense::drag());
+    if response.dragged() {
+        let d = response.drag_delta();
+        view.yaw_rad += f64::from(d.x) * 0.01;
+        view.pitch_rad = (view.pitch_rad + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
+    }
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 4.0, Color32::from_rgb(16, 20, 30));
+    let radius = 0.33 * rect.width().min(rect.height() * 1.1);
+    let rot = Rotation3::from_axis_angle(&Vector3::x_axis(), view.pitch_rad) * Rotation3::from_axis_angle(&Vector3::z_axis(), view.yaw_rad);
+    let pr = Projector { rot, center: rect.center() + Vec2::new(0.0, 8.0), radius };
+    painter.circle(pr.center, radius, Color32::from_rgba_unmultiplied(60, 80, 120, 40), Stroke::new(1.2, Color32::from_gray(120)));
+    draw_grid(&pr, &painter);
+    for t in tracks {
+        draw_track(&pr, &painter, t);
+    }
+    painter.text(rect.left_top() + Vec2::new(8.0, 6.0), Align2::LEFT_TOP, "Riemann sphere: vertical k in body axes", FontId::proportional(13.0), Color32::from_gray(210));
+    painter.text(rect.left_bottom() + Vec2::new(8.0, -6.0), Align2::LEFT_BOTTOM, caption, FontId::proportional(12.0), Color32::from_rgb(230, 200, 80));
+}
+
+/// The complex plane with the w trajectories and the unit circle |w| = 1.
+pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
+    let circle: PlotPoints<'_> = (0..=96).map(|i| { let a = f64::from(i) * std::f64::consts::TAU / 96.0; [a.cos(), a.sin()] }).collect();
+    Plot::new("w_plane")
+        .data_aspect(1.0)
+        .legend(Legend::default())
+        .x_axis_label("u = Re w")
+        .y_axis_label("v = Im w")
+        .show(ui, |plot| {
+            plot.line(Line::new("|w| = 1", circle).color(Color32::from_rgb(120, 160, 230)).width(1.0));
+            for t in tracks {
+                let pts: Vec<[f64; 2]> = t.w.iter().copied().filter(|p| p[0].is_finite() && p[1].is_finite() && p[0].hypot(p[1]) < 50.0).collect();
+                if let Some(last) = pts.last().copied() {
+                    plot.points(Points::new(t.name.clone(), vec![last]).radius(4.0).color(t.color));
+                }
+                plot.line(Line::new(t.name.clone(), pts).color(t.color));
+            }
+        });
+}
