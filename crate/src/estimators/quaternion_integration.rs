@@ -43,7 +43,7 @@ impl Estimator for QuaternionIntegration {
         let Some(rate) = m.gyro_body_rad_s else { return };
         let start = self.last_rate_rad_s.unwrap_or(rate);
         let seg = RateSegment { start_rad_s: start, end_rad_s: rate };
-        self.q_ref_from_body = step_quaternion_rk4(&self.q_ref_from_body, &seg, dt_s);
+        self.q_ref_from_body = step_quaternion_rk4(&self.q_ref_from_body, |f| seg.at(f), dt_s);
         self.last_rate_rad_s = Some(rate);
         self.error_model.step(dt_s);
     }

@@ -50,7 +50,7 @@ impl Estimator for WzIntegration {
         let Some(rate) = m.gyro_body_rad_s else { return };
         let start = self.last_rate_rad_s.unwrap_or(rate);
         let seg = RateSegment { start_rad_s: start, end_rad_s: rate };
-        let next = step_uvz_rk4(&self.wz, &seg, dt_s);
+        let next = step_uvz_rk4(&self.wz, |f| seg.at(f), dt_s);
         if next.chart != self.wz.chart {
             self.chart_switches += 1;
         }

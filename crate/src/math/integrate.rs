@@ -59,15 +59,16 @@ pub fn quaternion_derivative(q: &SVector<f64, 4>, rate_body_rad_s: &Vector3<f64>
     SVector::<f64, 4>::new(d.w, d.i, d.j, d.k)
 }
 
-/// One RK4 step of the quaternion kinematics, renormalised.
+/// One RK4 step of the quaternion kinematics, renormalised. `rate_at(f)` is the body rate
+/// (rad/s) at fraction `f` ∈ [0, 1] of the step, e.g. `|f| segment.at(f)`.
 pub fn step_quaternion_rk4(
     q_ref_from_body: &UnitQuaternion<f64>,
-    rates: &RateSegment,
+    rate_at: impl Fn(f64) -> Vector3<f64>,
     dt_s: f64,
 ) -> UnitQuaternion<f64> {
     let q = q_ref_from_body.quaternion();
     let x = SVector::<f64, 4>::new(q.w, q.i, q.j, q.k);
-    let x = rk4_step(0.0, &x, dt_s, |t, x| quaternion_derivative(x, &rates.at(t / dt_s)));
+    let x = rk4_step(0.0, &x, dt_s, |t, x| quaternion_derivative(x, &rate_at(t / dt_s)));
     UnitQuaternion::from_quaternion(Quaternion::new(x[0], x[1], x[2], x[3]))
 }
 
@@ -99,11 +100,12 @@ fn chart_rates(chart: WzChart, rate_body_rad_s: Vector3<f64>) -> Vector3<f64> {
 }
 
 /// One RK4 step of (u, v, z) in the attitude's chart, then a chart switch if |w| (or |s|)
-/// has passed [`CHART_SWITCH_MODULUS`].
-pub fn step_uvz_rk4(att: &WzAttitude, rates: &RateSegment, dt_s: f64) -> WzAttitude {
+/// has passed [`CHART_SWITCH_MODULUS`]. `rate_at(f)` is the body rate at fraction `f` of
+/// the step.
+pub fn step_uvz_rk4(att: &WzAttitude, rate_at: impl Fn(f64) -> Vector3<f64>, dt_s: f64) -> WzAttitude {
     let x = Vector3::new(att.u, att.v, att.z_rad);
     let chart = att.chart;
-    let x = rk4_step(0.0, &x, dt_s, |t, x| uvz_derivative(x, &chart_rates(chart, rates.at(t / dt_s))));
+    let x = rk4_step(0.0, &x, dt_s, |t, x| uvz_derivative(x, &chart_rates(chart, rate_at(t / dt_s))));
     let next = WzAttitude { u: x[0], v: x[1], z_rad: x[2], chart };
     if next.modulus() > CHART_SWITCH_MODULUS {
         let other = match chart {
