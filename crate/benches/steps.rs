@@ -1,9 +1,10 @@
 //! Criterion benchmarks: one simulation step of every lab, one step of every estimator.
+#![allow(missing_docs)] // criterion's macros generate undocumented public functions
 
 use attlab::labs;
 use attlab::params::ParamValues;
 use attlab::sim::Simulation;
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{Criterion, criterion_group, criterion_main};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::hint::black_box;
@@ -12,7 +13,9 @@ fn steps(c: &mut Criterion) {
     for lab in labs::all() {
         let params = ParamValues::defaults(lab.params());
         let mut sim = Simulation::with_history(*lab, params.clone(), 1, 1024);
-        c.bench_function(&format!("{}/simulation-step", lab.id()), |b| b.iter(|| sim.step()));
+        c.bench_function(&format!("{}/simulation-step", lab.id()), |b| {
+            b.iter(|| sim.step())
+        });
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         let mut run = lab.build(&params, &mut rng);
         let dt = lab.dt_s(&params);
@@ -29,5 +32,9 @@ fn steps(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, steps);
+criterion_group! {
+    name = benches;
+    config = Criterion::default();
+    targets = steps
+}
 criterion_main!(benches);

@@ -9,7 +9,8 @@ use thiserror::Error;
 pub enum Scale {
     /// Uniform steps.
     Linear,
-    /// Logarithmic (for noise levels and windows spanning decades); `min` must be > 0.
+    /// Logarithmic (for noise levels and windows spanning decades); with `min` = 0 the
+    /// slider is logarithmic above 1e-4 and reaches 0 at its left end.
     Log,
 }
 
@@ -53,23 +54,50 @@ pub struct ParamSpec {
 
 impl ParamSpec {
     /// A real-valued, linear, live parameter.
-    pub const fn real(key: &'static str, label: &'static str, unit: &'static str, min: f64, max: f64, default: f64) -> Self {
-        Self { key, label, unit, min, max, default, scale: Scale::Linear, kind: ParamKind::Real, help: "", needs_reset: false }
+    pub const fn real(
+        key: &'static str,
+        label: &'static str,
+        unit: &'static str,
+        min: f64,
+        max: f64,
+        default: f64,
+    ) -> Self {
+        Self {
+            key,
+            label,
+            unit,
+            min,
+            max,
+            default,
+            scale: Scale::Linear,
+            kind: ParamKind::Real,
+            help: "",
+            needs_reset: false,
+        }
     }
 
     /// Same, on a log slider.
     pub const fn log(self) -> Self {
-        Self { scale: Scale::Log, ..self }
+        Self {
+            scale: Scale::Log,
+            ..self
+        }
     }
 
     /// Integer valued.
     pub const fn integer(self) -> Self {
-        Self { kind: ParamKind::Integer, ..self }
+        Self {
+            kind: ParamKind::Integer,
+            ..self
+        }
     }
 
     /// Applies at the next reset only.
     pub const fn on_reset(self) -> Self {
-        Self { needs_reset: true, ..self }
+        Self {
+            needs_reset: true,
+            ..self
+        }
     }
 
     /// With a help text.
@@ -80,26 +108,52 @@ impl ParamSpec {
     /// An on/off switch.
     pub const fn toggle(key: &'static str, label: &'static str, default_on: bool) -> Self {
         let default = if default_on { 1.0 } else { 0.0 };
-        Self { kind: ParamKind::Toggle, ..Self::real(key, label, "", 0.0, 1.0, default) }
+        Self {
+            kind: ParamKind::Toggle,
+            ..Self::real(key, label, "", 0.0, 1.0, default)
+        }
     }
 
     /// A choice among named options (value = index).
-    pub const fn choice(key: &'static str, label: &'static str, options: &'static [&'static str], default: usize) -> Self {
-        let max = if options.is_empty() { 0.0 } else { (options.len() - 1) as f64 };
-        Self { kind: ParamKind::Choice(options), ..Self::real(key, label, "", 0.0, max, default as f64) }
+    pub const fn choice(
+        key: &'static str,
+        label: &'static str,
+        options: &'static [&'static str],
+        default: usize,
+    ) -> Self {
+        let max = if options.is_empty() {
+            0.0
+        } else {
+            (options.len() - 1) as f64
+        };
+        Self {
+            kind: ParamKind::Choice(options),
+            ..Self::real(key, label, "", 0.0, max, default as f64)
+        }
     }
 
     /// Checks one value against this spec.
     pub fn validate(&self, value: f64) -> Result<f64, ParamError> {
         if !value.is_finite() {
-            return Err(ParamError::NotFinite { key: self.key.to_string() });
+            return Err(ParamError::NotFinite {
+                key: self.key.to_string(),
+            });
         }
         if value < self.min || value > self.max {
-            return Err(ParamError::OutOfRange { key: self.key.to_string(), value, min: self.min, max: self.max, unit: self.unit });
+            return Err(ParamError::OutOfRange {
+                key: self.key.to_string(),
+                value,
+                min: self.min,
+                max: self.max,
+                unit: self.unit,
+            });
         }
         match self.kind {
             ParamKind::Real => Ok(value),
-            _ if value.fract() != 0.0 => Err(ParamError::NotInteger { key: self.key.to_string(), value }),
+            _ if value.fract() != 0.0 => Err(ParamError::NotInteger {
+                key: self.key.to_string(),
+                value,
+            }),
             _ => Ok(value),
         }
     }
@@ -169,7 +223,12 @@ pub struct ParamValues {
 impl ParamValues {
     /// Every parameter at its default.
     pub fn defaults(specs: &[ParamSpec]) -> Self {
-        Self { values: specs.iter().map(|s| (s.key.to_string(), s.default)).collect() }
+        Self {
+            values: specs
+                .iter()
+                .map(|s| (s.key.to_string(), s.default))
+                .collect(),
+        }
     }
 
     /// Value of `key`. Labs ask only for their own keys, which `defaults` always fills;
@@ -186,7 +245,11 @@ impl ParamValues {
     /// Value of an integer or choice parameter.
     pub fn index(&self, key: &str) -> usize {
         let v = self.get(key);
-        if v.is_finite() && v >= 0.0 { v.round() as usize } else { 0 }
+        if v.is_finite() && v >= 0.0 {
+            v.round() as usize
+        } else {
+            0
+        }
     }
 
     /// Sets `key` after validating against `specs`.
@@ -198,19 +261,33 @@ impl ParamValues {
     }
 
     /// Sets `key` from text (`"0.1"`), validating.
-    pub fn set_text(&mut self, specs: &[ParamSpec], key: &str, text: &str) -> Result<(), ParamError> {
+    pub fn set_text(
+        &mut self,
+        specs: &[ParamSpec],
+        key: &str,
+        text: &str,
+    ) -> Result<(), ParamError> {
         find_spec(specs, key)?;
-        let value: f64 = text.trim().parse().map_err(|_| ParamError::NotANumber { key: key.to_string(), text: text.to_string() })?;
+        let value: f64 = text.trim().parse().map_err(|_| ParamError::NotANumber {
+            key: key.to_string(),
+            text: text.to_string(),
+        })?;
         self.set(specs, key, value)
     }
 
     /// Applies `key=value` assignments; returns every error, keeping the good assignments.
-    pub fn apply_assignments<'a>(&mut self, specs: &[ParamSpec], items: impl IntoIterator<Item = &'a str>) -> Vec<ParamError> {
+    pub fn apply_assignments<'a>(
+        &mut self,
+        specs: &[ParamSpec],
+        items: impl IntoIterator<Item = &'a str>,
+    ) -> Vec<ParamError> {
         let mut errors = Vec::new();
         for item in items {
             let result = match item.split_once('=') {
                 Some((k, v)) => self.set_text(specs, k.trim(), v),
-                None => Err(ParamError::Malformed { text: item.to_string() }),
+                None => Err(ParamError::Malformed {
+                    text: item.to_string(),
+                }),
             };
             if let Err(e) = result {
                 errors.push(e);
@@ -226,10 +303,13 @@ impl ParamValues {
 }
 
 fn find_spec<'a>(specs: &'a [ParamSpec], key: &str) -> Result<&'a ParamSpec, ParamError> {
-    specs.iter().find(|s| s.key == key).ok_or_else(|| ParamError::Unknown {
-        key: key.to_string(),
-        known: specs.iter().map(|s| s.key).collect::<Vec<_>>().join(", "),
-    })
+    specs
+        .iter()
+        .find(|s| s.key == key)
+        .ok_or_else(|| ParamError::Unknown {
+            key: key.to_string(),
+            known: specs.iter().map(|s| s.key).collect::<Vec<_>>().join(", "),
+        })
 }
 
 #[cfg(test)]
@@ -244,7 +324,17 @@ mod tests {
     #[test]
     fn bad_assignments_are_reported_and_good_ones_kept() {
         let mut p = ParamValues::defaults(SPECS);
-        let errs = p.apply_assignments(SPECS, ["sigma_deg_s=0.5", "window=2.5", "nope=1", "window", "sigma_deg_s=abc", "window=9999"]);
+        let errs = p.apply_assignments(
+            SPECS,
+            [
+                "sigma_deg_s=0.5",
+                "window=2.5",
+                "nope=1",
+                "window",
+                "sigma_deg_s=abc",
+                "window=9999",
+            ],
+        );
         assert_eq!(p.get("sigma_deg_s"), 0.5);
         assert_eq!(p.get("window"), 100.0);
         assert_eq!(errs.len(), 5);
@@ -259,7 +349,10 @@ mod tests {
     #[test]
     fn non_finite_values_are_rejected() {
         let mut p = ParamValues::defaults(SPECS);
-        assert!(matches!(p.set(SPECS, "sigma_deg_s", f64::NAN), Err(ParamError::NotFinite { .. })));
+        assert!(matches!(
+            p.set(SPECS, "sigma_deg_s", f64::NAN),
+            Err(ParamError::NotFinite { .. })
+        ));
         assert_eq!(p.get("sigma_deg_s"), 0.1);
     }
 }

@@ -53,12 +53,20 @@ pub struct SeriesSpec {
 impl SeriesSpec {
     /// A series spec.
     pub fn new(name: impl Into<String>, unit: &'static str, group: SeriesGroup) -> Self {
-        Self { name: name.into(), unit, group }
+        Self {
+            name: name.into(),
+            unit,
+            group,
+        }
     }
 
     /// CSV header cell: `name [unit]`.
     pub fn header(&self) -> String {
-        if self.unit.is_empty() { self.name.clone() } else { format!("{} [{}]", self.name, self.unit) }
+        if self.unit.is_empty() {
+            self.name.clone()
+        } else {
+            format!("{} [{}]", self.name, self.unit)
+        }
     }
 }
 
@@ -76,8 +84,16 @@ impl Recorder {
     /// A recorder for `specs` holding at most `capacity` (≥ 2) rows.
     pub fn new(specs: Vec<SeriesSpec>, capacity: usize) -> Self {
         let capacity = capacity.max(2);
-        let columns = specs.iter().map(|_| VecDeque::with_capacity(capacity)).collect();
-        Self { specs, columns, capacity, total_rows: 0 }
+        let columns = specs
+            .iter()
+            .map(|_| VecDeque::with_capacity(capacity))
+            .collect();
+        Self {
+            specs,
+            columns,
+            capacity,
+            total_rows: 0,
+        }
     }
 
     /// The series.
@@ -141,7 +157,9 @@ impl Recorder {
     /// into buckets and each bucket keeps its minimum and maximum y, so spikes survive
     /// decimation. Non-finite y values are skipped.
     pub fn decimated(&self, x: usize, y: usize, max_points: usize) -> Vec<[f64; 2]> {
-        let (Some(xs), Some(ys)) = (self.columns.get(x), self.columns.get(y)) else { return Vec::new() };
+        let (Some(xs), Some(ys)) = (self.columns.get(x), self.columns.get(y)) else {
+            return Vec::new();
+        };
         let n = xs.len();
         let buckets = (max_points / 2).max(1);
         let per = n.div_ceil(buckets).max(1);
@@ -185,7 +203,11 @@ impl Recorder {
 
 /// A CSV cell: shortest round-trip representation, `NaN` for missing.
 pub fn format_value(v: f64) -> String {
-    if v.is_finite() { format!("{v}") } else { "NaN".to_string() }
+    if v.is_finite() {
+        format!("{v}")
+    } else {
+        "NaN".to_string()
+    }
 }
 
 #[cfg(test)]
@@ -193,7 +215,13 @@ mod tests {
     use super::*;
 
     fn rec(cap: usize) -> Recorder {
-        Recorder::new(vec![SeriesSpec::new("t_s", "s", SeriesGroup::Time), SeriesSpec::new("y", "", SeriesGroup::Lab)], cap)
+        Recorder::new(
+            vec![
+                SeriesSpec::new("t_s", "s", SeriesGroup::Time),
+                SeriesSpec::new("y", "", SeriesGroup::Lab),
+            ],
+            cap,
+        )
     }
 
     #[test]
@@ -211,7 +239,11 @@ mod tests {
     fn decimation_keeps_extremes() {
         let mut r = rec(10_000);
         for i in 0..10_000 {
-            let y = if i == 4321 { 50.0 } else { (i as f64 * 0.01).sin() };
+            let y = if i == 4321 {
+                50.0
+            } else {
+                (i as f64 * 0.01).sin()
+            };
             r.push(&[i as f64, y]);
         }
         let pts = r.decimated(0, 1, 200);

@@ -2,7 +2,9 @@
 
 use crate::estimators::{Estimate, EstimatorStatus};
 use crate::labs::{Lab, LabRun, TruthState};
-use crate::math::{rotation_angle_between, small_angle_error_body, vertical_in_body, EulerYpr, WzAttitude};
+use crate::math::{
+    EulerYpr, WzAttitude, rotation_angle_between, small_angle_error_body, vertical_in_body,
+};
 use crate::params::{ParamError, ParamValues};
 use crate::record::{Recorder, SeriesGroup, SeriesSpec};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -35,12 +37,29 @@ impl Simulation {
     }
 
     /// Same, keeping `history_rows` rows of every series.
-    pub fn with_history(lab: &'static dyn Lab, params: ParamValues, seed: u64, history_rows: usize) -> Self {
+    pub fn with_history(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        seed: u64,
+        history_rows: usize,
+    ) -> Self {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let run = lab.build(&params, &mut rng);
         let recorder = Recorder::new(series_for(&run), history_rows);
         let statuses = vec![EstimatorStatus::Ok; run.estimators.len()];
-        let mut sim = Self { lab, params, seed, rng, run, t_s: 0.0, steps: 0, recorder, row: Vec::new(), statuses, history_rows };
+        let mut sim = Self {
+            lab,
+            params,
+            seed,
+            rng,
+            run,
+            t_s: 0.0,
+            steps: 0,
+            recorder,
+            row: Vec::new(),
+            statuses,
+            history_rows,
+        };
         sim.record();
         sim
     }
@@ -92,7 +111,11 @@ impl Simulation {
 
     /// (id, label, estimate) of every estimator now.
     pub fn estimates(&self) -> Vec<(&'static str, &'static str, Estimate)> {
-        self.run.estimators.iter().map(|e| (e.id(), e.label(), e.estimate())).collect()
+        self.run
+            .estimators
+            .iter()
+            .map(|e| (e.id(), e.label(), e.estimate()))
+            .collect()
     }
 
     /// Health of every estimator (by position).
@@ -166,7 +189,9 @@ fn health(est: &Estimate) -> EstimatorStatus {
     if est.status != EstimatorStatus::Ok {
         return est.status.clone();
     }
-    let q_bad = est.q_ref_from_body.is_some_and(|q| !q.coords.iter().all(|c| c.is_finite()));
+    let q_bad = est
+        .q_ref_from_body
+        .is_some_and(|q| !q.coords.iter().all(|c| c.is_finite()));
     let a_bad = est.angle_rad.is_some_and(|a| !a.is_finite());
     let p_bad = est.covariance.iter().any(|c| !c.is_finite());
     if q_bad || a_bad || p_bad {
@@ -208,10 +233,16 @@ fn push_attitude(row: &mut Vec<f64>, q: Option<&UnitQuaternion<f64>>, wz: Option
         return;
     };
     let e = EulerYpr::from_quaternion(q);
-    row.extend([e.yaw_rad.to_degrees(), e.pitch_rad.to_degrees(), e.roll_rad.to_degrees()]);
+    row.extend([
+        e.yaw_rad.to_degrees(),
+        e.pitch_rad.to_degrees(),
+        e.roll_rad.to_degrees(),
+    ]);
     let k = vertical_in_body(q);
     row.extend([k.x, k.y, k.z]);
-    let wz = wz.copied().unwrap_or_else(|| WzAttitude::from_quaternion(q));
+    let wz = wz
+        .copied()
+        .unwrap_or_else(|| WzAttitude::from_quaternion(q));
     match wz.w() {
         Some((u, v)) if u.hypot(v) < W_RECORD_LIMIT => row.extend([u, v]),
         _ => row.extend([f64::NAN, f64::NAN]),
@@ -239,7 +270,11 @@ fn push_errors(row: &mut Vec<f64>, truth: &TruthState, est: &Estimate) {
     match est.q_ref_from_body {
         Some(q) => {
             row.push(rotation_angle_between(&truth.q_ref_from_body, &q).to_degrees());
-            row.extend(small_angle_error_body(&truth.q_ref_from_body, &q).iter().map(|x| x.to_degrees()));
+            row.extend(
+                small_angle_error_body(&truth.q_ref_from_body, &q)
+                    .iter()
+                    .map(|x| x.to_degrees()),
+            );
         }
         None => row.extend([f64::NAN; 4]),
     }
@@ -253,27 +288,54 @@ fn series_for(run: &LabRun) -> Vec<SeriesSpec> {
     let truth = run.truth.state();
     let mut s = vec![SeriesSpec::new("t_s", "s", SeriesGroup::Time)];
     let add = |s: &mut Vec<SeriesSpec>, src: &str, list: &[(&str, &'static str, SeriesGroup)]| {
-        s.extend(list.iter().map(|(n, u, g)| SeriesSpec::new(format!("{src}.{n}"), u, *g)));
+        s.extend(
+            list.iter()
+                .map(|(n, u, g)| SeriesSpec::new(format!("{src}.{n}"), u, *g)),
+        );
     };
     add(&mut s, "truth", &ATTITUDE);
     add(&mut s, "truth", &RATE);
-    s.push(SeriesSpec::new("truth.angle_deg", "deg", SeriesGroup::Attitude));
+    s.push(SeriesSpec::new(
+        "truth.angle_deg",
+        "deg",
+        SeriesGroup::Attitude,
+    ));
     for e in &run.estimators {
         let id = e.id();
         add(&mut s, id, &ATTITUDE);
         add(&mut s, id, &RATE);
-        s.push(SeriesSpec::new(format!("{id}.angle_deg"), "deg", SeriesGroup::Attitude));
+        s.push(SeriesSpec::new(
+            format!("{id}.angle_deg"),
+            "deg",
+            SeriesGroup::Attitude,
+        ));
         if truth.angle_rad.is_some() {
-            s.push(SeriesSpec::new(format!("{id}.angle_err_deg"), "deg", SeriesGroup::Error));
+            s.push(SeriesSpec::new(
+                format!("{id}.angle_err_deg"),
+                "deg",
+                SeriesGroup::Error,
+            ));
         }
         add(&mut s, id, &ERRORS);
         for c in e.covariance_names() {
-            s.push(SeriesSpec::new(format!("{id}.{c}"), "", SeriesGroup::Covariance));
+            s.push(SeriesSpec::new(
+                format!("{id}.{c}"),
+                "",
+                SeriesGroup::Covariance,
+            ));
         }
         for c in e.innovation_names() {
-            s.push(SeriesSpec::new(format!("{id}.{c}"), "", SeriesGroup::Innovation));
+            s.push(SeriesSpec::new(
+                format!("{id}.{c}"),
+                "",
+                SeriesGroup::Innovation,
+            ));
         }
-        s.push(SeriesSpec::new(format!("{id}.status"), "", SeriesGroup::Lab));
+        s.push(SeriesSpec::new(
+            format!("{id}.status"),
+            "",
+            SeriesGroup::Lab,
+        ));
     }
     s.extend(run.truth.extra_series());
     s

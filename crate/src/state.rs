@@ -39,12 +39,20 @@ pub struct UrlStateError {
 impl UrlState {
     /// Defaults of `lab`.
     pub fn defaults(lab: &'static dyn Lab) -> Self {
-        Self { lab_id: lab.id(), seed: 1, speed: 1.0, params: ParamValues::defaults(lab.params()) }
+        Self {
+            lab_id: lab.id(),
+            seed: 1,
+            speed: 1.0,
+            params: ParamValues::defaults(lab.params()),
+        }
     }
 
     /// Encodes as a fragment (without `#`); parameters at their default are left out.
     pub fn encode(&self) -> String {
-        let mut s = format!("lab={}&seed={}&speed={}", self.lab_id, self.seed, self.speed);
+        let mut s = format!(
+            "lab={}&seed={}&speed={}",
+            self.lab_id, self.seed, self.speed
+        );
         if let Some(lab) = labs::find(self.lab_id) {
             for spec in lab.params() {
                 let v = self.params.get(spec.key);
@@ -60,16 +68,29 @@ impl UrlState {
     /// errors; the rest is applied on top of the defaults of the named (or first) lab.
     pub fn parse(fragment: &str) -> (Self, Vec<UrlStateError>) {
         let fragment = fragment.trim_start_matches('#');
-        let items: Vec<(usize, &str)> = fragment.split('&').filter(|s| !s.is_empty()).enumerate().map(|(i, s)| (i + 1, s)).collect();
+        let items: Vec<(usize, &str)> = fragment
+            .split('&')
+            .filter(|s| !s.is_empty())
+            .enumerate()
+            .map(|(i, s)| (i + 1, s))
+            .collect();
         let mut errors = Vec::new();
-        let err = |position: usize, text: &str, reason: String| UrlStateError { position, text: text.to_string(), reason };
+        let err = |position: usize, text: &str, reason: String| UrlStateError {
+            position,
+            text: text.to_string(),
+            reason,
+        };
         let default_lab = labs::all()[0];
         let mut lab = default_lab;
         for &(pos, item) in &items {
             if let Some(id) = item.strip_prefix("lab=") {
                 match labs::find(id) {
                     Some(l) => lab = l,
-                    None => errors.push(err(pos, item, format!("no such lab (labs: {})", labs::ids()))),
+                    None => errors.push(err(
+                        pos,
+                        item,
+                        format!("no such lab (labs: {})", labs::ids()),
+                    )),
                 }
             }
         }
@@ -87,7 +108,14 @@ impl UrlState {
                 },
                 "speed" => match value.parse::<f64>() {
                     Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => state.speed = s,
-                    _ => errors.push(err(pos, item, format!("speed must be between {} and {}", SPEED_RANGE.0, SPEED_RANGE.1))),
+                    _ => errors.push(err(
+                        pos,
+                        item,
+                        format!(
+                            "speed must be between {} and {}",
+                            SPEED_RANGE.0, SPEED_RANGE.1
+                        ),
+                    )),
                 },
                 _ => {
                     if let Err(e) = state.params.set_text(lab.params(), key, value) {
@@ -118,7 +146,9 @@ mod tests {
 
     #[test]
     fn malformed_items_are_reported_and_the_rest_kept() {
-        let (s, errors) = UrlState::parse("lab=free-rotation&seed=-3&gyro_bias_deg_s=0.3&junk&speed=1e9&nope=2&gyro_noise_deg_s=abc");
+        let (s, errors) = UrlState::parse(
+            "lab=free-rotation&seed=-3&gyro_bias_deg_s=0.3&junk&speed=1e9&nope=2&gyro_noise_deg_s=abc",
+        );
         assert_eq!(s.lab_id, "free-rotation");
         assert_eq!(s.seed, 1);
         assert_eq!(s.params.get("gyro_bias_deg_s"), 0.3);

@@ -16,7 +16,14 @@ pub fn angle_diff(a: f64, b: f64) -> f64 {
 pub fn golden_run() -> Simulation {
     let lab = labs::find("free-rotation").expect("registered");
     let mut p = ParamValues::defaults(lab.params());
-    let errors = p.apply_assignments(lab.params(), ["gyro_noise_deg_s=0.05", "gyro_bias_deg_s=0.2", "gyro_walk_deg_s_sqrt_s=0.01"]);
+    let errors = p.apply_assignments(
+        lab.params(),
+        [
+            "gyro_noise_deg_s=0.05",
+            "gyro_bias_deg_s=0.2",
+            "gyro_walk_deg_s_sqrt_s=0.01",
+        ],
+    );
     assert!(errors.is_empty(), "{errors:?}");
     let mut sim = Simulation::with_history(lab, p, 7, 4);
     sim.run_for(10.0);
@@ -52,12 +59,19 @@ pub fn golden_values(sim: &Simulation) -> Vec<f64> {
     let rec = sim.recorder();
     GOLDEN_SERIES
         .iter()
-        .map(|name| rec.index_of(name).and_then(|i| rec.last(i)).unwrap_or(f64::NAN))
+        .map(|name| {
+            rec.index_of(name)
+                .and_then(|i| rec.last(i))
+                .unwrap_or(f64::NAN)
+        })
         .collect()
 }
 
 /// Largest relative difference between two equally long slices (absolute below 1e-12).
 pub fn max_relative_diff(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
-    a.iter().zip(b).map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1e-12)).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1e-12))
+        .fold(0.0, f64::max)
 }

@@ -4,7 +4,7 @@
 
 use attlab::labs;
 use attlab::state::UrlState;
-use attlab_tests::{golden_run, golden_values, max_relative_diff, GOLDEN_VALUES};
+use attlab_tests::{GOLDEN_VALUES, golden_run, golden_values, max_relative_diff};
 use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -14,7 +14,10 @@ fn golden_run_matches_native_values() {
     let values = golden_values(&golden_run());
     // libm in wasm may differ from the native one in the last bits.
     let d = max_relative_diff(&values, GOLDEN_VALUES);
-    assert!(d < 1e-9, "wasm vs native golden values: max rel diff {d:e}: {values:?}");
+    assert!(
+        d < 1e-9,
+        "wasm vs native golden values: max rel diff {d:e}: {values:?}"
+    );
 }
 
 #[wasm_bindgen_test]
@@ -32,7 +35,8 @@ fn every_lab_reproduces_in_the_browser() {
 
 #[wasm_bindgen_test]
 fn url_state_with_junk_keeps_the_good_items() {
-    let (s, errors) = UrlState::parse("#lab=free-rotation&seed=9&gyro_bias_deg_s=0.4&%%%&speed=abc");
+    let (s, errors) =
+        UrlState::parse("#lab=free-rotation&seed=9&gyro_bias_deg_s=0.4&%%%&speed=abc");
     assert_eq!(s.seed, 9);
     assert_eq!(s.params.get("gyro_bias_deg_s"), 0.4);
     assert_eq!(errors.len(), 2);

@@ -1,4 +1,5 @@
 //! Registry conformance: every lab in `labs::all()` obeys the lab contract.
+#![cfg(not(target_arch = "wasm32"))]
 
 use attlab::labs;
 use attlab::params::{ParamKind, ParamValues};
@@ -14,8 +15,18 @@ fn ids_are_unique_and_params_are_well_formed() {
         let mut keys = HashSet::new();
         for p in lab.params() {
             assert!(keys.insert(p.key), "{}: duplicate key {}", lab.id(), p.key);
-            assert!(p.min <= p.default && p.default <= p.max, "{}: {} default out of range", lab.id(), p.key);
-            assert!(p.validate(p.default).is_ok(), "{}: {} default invalid", lab.id(), p.key);
+            assert!(
+                p.min <= p.default && p.default <= p.max,
+                "{}: {} default out of range",
+                lab.id(),
+                p.key
+            );
+            assert!(
+                p.validate(p.default).is_ok(),
+                "{}: {} default invalid",
+                lab.id(),
+                p.key
+            );
             if let ParamKind::Choice(options) = p.kind {
                 assert_eq!(p.max as usize + 1, options.len());
             }
@@ -33,11 +44,16 @@ fn run(lab: &'static dyn labs::Lab, params: ParamValues, seed: u64, steps: usize
 
 fn rows(sim: &Simulation) -> Vec<Vec<f64>> {
     let r = sim.recorder();
-    (0..r.specs().len()).map(|i| r.column(i).unwrap().iter().copied().collect()).collect()
+    (0..r.specs().len())
+        .map(|i| r.column(i).unwrap().iter().copied().collect())
+        .collect()
 }
 
 fn same_bits(a: &[Vec<f64>], b: &[Vec<f64>]) -> bool {
-    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits()))
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(x, y)| {
+            x.len() == y.len() && x.iter().zip(y).all(|(p, q)| p.to_bits() == q.to_bits())
+        })
 }
 
 #[test]
@@ -46,7 +62,11 @@ fn same_lab_params_and_seed_give_the_identical_run() {
         let p = ParamValues::defaults(lab.params());
         let a = run(*lab, p.clone(), 5, 300);
         let b = run(*lab, p.clone(), 5, 300);
-        assert!(same_bits(&rows(&a), &rows(&b)), "{} is not deterministic", lab.id());
+        assert!(
+            same_bits(&rows(&a), &rows(&b)),
+            "{} is not deterministic",
+            lab.id()
+        );
         let mut c = Simulation::with_history(*lab, p, 99, 301);
         for _ in 0..123 {
             c.step();
@@ -55,7 +75,11 @@ fn same_lab_params_and_seed_give_the_identical_run() {
         for _ in 0..300 {
             c.step();
         }
-        assert!(same_bits(&rows(&a), &rows(&c)), "{}: reset does not reproduce a fresh run", lab.id());
+        assert!(
+            same_bits(&rows(&a), &rows(&c)),
+            "{}: reset does not reproduce a fresh run",
+            lab.id()
+        );
     }
 }
 
@@ -66,14 +90,29 @@ fn a_live_parameter_change_acts_on_the_next_step_without_restart() {
             let p = ParamValues::defaults(lab.params());
             let mut a = run(*lab, p.clone(), 3, 50);
             let mut b = run(*lab, p, 3, 50);
-            let new_value = if spec.default == spec.max { spec.min } else { spec.max };
+            let new_value = if spec.default == spec.max {
+                spec.min
+            } else {
+                spec.max
+            };
             b.set_param(spec.key, new_value).unwrap();
-            assert_eq!(b.t_s(), a.t_s(), "{}: set_param restarted the run", lab.id());
+            assert_eq!(
+                b.t_s(),
+                a.t_s(),
+                "{}: set_param restarted the run",
+                lab.id()
+            );
             for _ in 0..50 {
                 a.step();
                 b.step();
             }
-            assert_ne!(a.last_row(), b.last_row(), "{}: changing {} had no effect", lab.id(), spec.key);
+            assert_ne!(
+                a.last_row(),
+                b.last_row(),
+                "{}: changing {} had no effect",
+                lab.id(),
+                spec.key
+            );
         }
     }
 }
@@ -87,8 +126,15 @@ fn every_parameter_at_its_extremes_runs_without_panic_or_silent_nan() {
                 p.set(lab.params(), spec.key, value).unwrap();
                 let sim = run(*lab, p, 1, 400);
                 for ((id, _, est), status) in sim.estimates().iter().zip(sim.statuses()) {
-                    let finite = est.q_ref_from_body.is_none_or(|q| q.coords.iter().all(|c| c.is_finite()));
-                    assert!(finite || *status != attlab::estimators::EstimatorStatus::Ok, "{}: {id} non-finite but not flagged ({}={value})", lab.id(), spec.key);
+                    let finite = est
+                        .q_ref_from_body
+                        .is_none_or(|q| q.coords.iter().all(|c| c.is_finite()));
+                    assert!(
+                        finite || *status != attlab::estimators::EstimatorStatus::Ok,
+                        "{}: {id} non-finite but not flagged ({}={value})",
+                        lab.id(),
+                        spec.key
+                    );
                 }
             }
         }
@@ -102,8 +148,18 @@ fn estimators_publish_as_many_elements_as_they_name() {
         let run = lab.build(&ParamValues::defaults(lab.params()), &mut rng);
         for e in &run.estimators {
             let est = e.estimate();
-            assert_eq!(est.covariance.len(), e.covariance_names().len(), "{}", e.id());
-            assert_eq!(est.innovation.len(), e.innovation_names().len(), "{}", e.id());
+            assert_eq!(
+                est.covariance.len(),
+                e.covariance_names().len(),
+                "{}",
+                e.id()
+            );
+            assert_eq!(
+                est.innovation.len(),
+                e.innovation_names().len(),
+                "{}",
+                e.id()
+            );
         }
     }
 }

@@ -76,9 +76,13 @@ impl AttLabApp {
         let mut app = Self::with_state(lab, state.params, state.seed, state.speed);
         app.gpu_ready = gpu_ready;
         if !gpu_ready {
-            app.app_errors.push("no wgpu render state: the 3D view is disabled".into());
+            app.app_errors
+                .push("no wgpu render state: the 3D view is disabled".into());
         }
-        app.messages.extend(errors.into_iter().map(|e| Message { text: format!("{e} — ignored"), is_error: true }));
+        app.messages.extend(errors.into_iter().map(|e| Message {
+            text: format!("{e} — ignored"),
+            is_error: true,
+        }));
         app
     }
 
@@ -115,7 +119,10 @@ impl AttLabApp {
             }
             Command::SetParam(key, value) => {
                 if let Err(e) = self.sim.set_param(key, value) {
-                    self.messages.push(Message { text: e.to_string(), is_error: true });
+                    self.messages.push(Message {
+                        text: e.to_string(),
+                        is_error: true,
+                    });
                 }
             }
             Command::RestoreDefaults => {
@@ -138,7 +145,11 @@ impl AttLabApp {
 
     fn export_csv(&mut self) {
         let mut buf = Vec::new();
-        let result = self.sim.recorder().write_csv(&mut buf).map_err(|e| e.to_string());
+        let result = self
+            .sim
+            .recorder()
+            .write_csv(&mut buf)
+            .map_err(|e| e.to_string());
         let name = format!("attlab-{}-seed{}.csv", self.sim.lab().id(), self.sim.seed());
         let result = result.and_then(|()| platform::save_file(&name, "text/csv", &buf));
         let (text, is_error) = match result {
@@ -151,7 +162,10 @@ impl AttLabApp {
     /// Advances the simulation by the wall-clock time since the last frame × speed, within
     /// [`STEP_BUDGET`]; if it cannot keep up it drops the backlog instead of freezing.
     pub fn advance(&mut self, now: Instant) {
-        let frame_s = self.last_frame.map_or(0.0, |t| now.duration_since(t).as_secs_f64()).min(0.1);
+        let frame_s = self
+            .last_frame
+            .map_or(0.0, |t| now.duration_since(t).as_secs_f64())
+            .min(0.1);
         self.last_frame = Some(now);
         self.stats.frame_ms = 0.9 * self.stats.frame_ms + 0.1 * frame_s * 1e3;
         if !self.playing {
@@ -165,19 +179,25 @@ impl AttLabApp {
             self.sim.step();
             self.step_debt -= 1.0;
             steps += 1;
-            if steps % 16 == 0 && now.elapsed() > STEP_BUDGET {
+            if steps.is_multiple_of(16) && now.elapsed() > STEP_BUDGET {
                 self.stats.behind = true;
                 self.step_debt = 0.0;
             }
         }
         self.stats.step_ms = now.elapsed().as_secs_f64() * 1e3;
         if frame_s > 0.0 {
-            self.stats.steps_per_s = 0.9 * self.stats.steps_per_s + 0.1 * f64::from(steps) / frame_s;
+            self.stats.steps_per_s =
+                0.9 * self.stats.steps_per_s + 0.1 * f64::from(steps) / frame_s;
         }
     }
 
     fn sync_url(&mut self) {
-        let state = UrlState { lab_id: self.sim.lab().id(), seed: self.seed, speed: self.speed, params: self.sim.params().clone() };
+        let state = UrlState {
+            lab_id: self.sim.lab().id(),
+            seed: self.seed,
+            speed: self.speed,
+            params: self.sim.params().clone(),
+        };
         let fragment = state.encode();
         if fragment != self.last_fragment {
             platform::set_fragment(&fragment);

@@ -16,13 +16,19 @@ pub use app::AttLabApp;
 pub async fn start(canvas_id: String) -> Result<(), wasm_bindgen::JsValue> {
     use wasm_bindgen::JsCast as _;
     let _ = eframe::WebLogger::init(log::LevelFilter::Info);
-    let document = web_sys::window().and_then(|w| w.document()).ok_or("no document")?;
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or("no document")?;
     let canvas = document
         .get_element_by_id(&canvas_id)
         .ok_or_else(|| format!("no element with id `{canvas_id}`"))?
         .dyn_into::<web_sys::HtmlCanvasElement>()
         .map_err(|_| format!("`{canvas_id}` is not a canvas"))?;
     eframe::WebRunner::new()
-        .start(canvas, eframe::WebOptions::default(), Box::new(|cc| Ok(Box::new(AttLabApp::new(cc)))))
+        .start(
+            canvas,
+            eframe::WebOptions::default(),
+            Box::new(|cc| Ok(Box::new(AttLabApp::new(cc)))),
+        )
         .await
 }

@@ -4,10 +4,16 @@
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> eframe::Result {
     let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default().with_inner_size([1400.0, 900.0]).with_title("Attitude Lab"),
+        viewport: egui::ViewportBuilder::default()
+            .with_inner_size([1400.0, 900.0])
+            .with_title("Attitude Lab"),
         ..Default::default()
     };
-    eframe::run_native("Attitude Lab", options, Box::new(|cc| Ok(Box::new(attlab_web::AttLabApp::new(cc)))))
+    eframe::run_native(
+        "Attitude Lab",
+        options,
+        Box::new(|cc| Ok(Box::new(attlab_web::AttLabApp::new(cc)))),
+    )
 }
 
 #[cfg(target_arch = "wasm32")]

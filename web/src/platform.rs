@@ -5,7 +5,11 @@
 pub fn initial_fragment() -> String {
     #[cfg(target_arch = "wasm32")]
     {
-        web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default().trim_start_matches('#').to_string()
+        web_sys::window()
+            .and_then(|w| w.location().hash().ok())
+            .unwrap_or_default()
+            .trim_start_matches('#')
+            .to_string()
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
@@ -16,11 +20,9 @@ pub fn initial_fragment() -> String {
 /// Replaces the URL fragment without adding a history entry (no-op on the desktop).
 pub fn set_fragment(fragment: &str) {
     #[cfg(target_arch = "wasm32")]
-    if let Some(w) = web_sys::window() {
-        if let Ok(history) = w.history() {
-            let url = format!("#{fragment}");
-            let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&url));
-        }
+    if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
+        let url = format!("#{fragment}");
+        let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&url));
     }
     #[cfg(not(target_arch = "wasm32"))]
     let _ = fragment;
@@ -47,9 +49,17 @@ pub fn publish_status(status: &Status<'_>) {
         let Some(w) = web_sys::window() else { return };
         let o = Object::new();
         let errors: Array = status.errors.iter().map(|e| JsValue::from_str(e)).collect();
-        let _ = Reflect::set(&o, &"frames".into(), &JsValue::from_f64(status.frames as f64));
+        let _ = Reflect::set(
+            &o,
+            &"frames".into(),
+            &JsValue::from_f64(status.frames as f64),
+        );
         let _ = Reflect::set(&o, &"lab".into(), &JsValue::from_str(status.lab));
-        let _ = Reflect::set(&o, &"simSteps".into(), &JsValue::from_f64(status.sim_steps as f64));
+        let _ = Reflect::set(
+            &o,
+            &"simSteps".into(),
+            &JsValue::from_f64(status.sim_steps as f64),
+        );
         let _ = Reflect::set(&o, &"errors".into(), &errors);
         let _ = Reflect::set(&w, &"attlabStatus".into(), &o);
     }
@@ -68,9 +78,14 @@ pub fn save_file(name: &str, mime: &str, contents: &[u8]) -> Result<String, Stri
         let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(contents).into());
         let options = web_sys::BlobPropertyBag::new();
         options.set_type(mime);
-        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options).map_err(|e| format!("{e:?}"))?;
+        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
+            .map_err(|e| format!("{e:?}"))?;
         let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| format!("{e:?}"))?;
-        let a: web_sys::HtmlAnchorElement = document.create_element("a").map_err(|e| format!("{e:?}"))?.dyn_into().map_err(|_| "not an anchor")?;
+        let a: web_sys::HtmlAnchorElement = document
+            .create_element("a")
+            .map_err(|e| format!("{e:?}"))?
+            .dyn_into()
+            .map_err(|_| "not an anchor")?;
         a.set_href(&url);
         a.set_download(name);
         a.click();
@@ -83,7 +98,8 @@ pub fn save_file(name: &str, mime: &str, contents: &[u8]) -> Result<String, Stri
         let Some(path) = rfd::FileDialog::new().set_file_name(name).save_file() else {
             return Ok("save cancelled".into());
         };
-        std::fs::write(&path, contents).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(&path, contents)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         Ok(format!("saved {}", path.display()))
     }
 }

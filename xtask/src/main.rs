@@ -1,1 +1,163 @@
-fn main() {}
+//! `cargo xtask`: build, serve and test orchestration for Attitude Lab.
+//!
+//! - `cargo xtask serve [--port 8080] [--no-opt]`: build the site into `dist/` and serve it on
+//!   `127.0.0.1:PORT`.
+//! - `cargo xtask dist [--no-opt]`: build the site into `dist/` only.
+//! - `cargo xtask test`: fmt, clippy (native and wasm), native tests, browser tests, then the
+//!   page test against the built site; ends with a summary and `N passed, M failed`.
+//!
+//! Each command first installs what is missing (wasm target, `wasm-bindgen-cli`, npm
+//! `binaryen` in `.tools/`, Chromium and chromedriver for `test`), without ever prompting.
+
+mod cmd;
+mod serve;
+mod site;
+mod suite;
+mod tools;
+mod wasm;
+
+use std::process::ExitCode;
+
+/// Default port for `serve`.
+const DEFAULT_PORT: u16 = 8080;
+
+/// Usage text.
+const USAGE: &str = "usage: cargo xtask <command>
+
+commands:
+  serve [--port N] [--no-opt]   build dist/ and serve it on 127.0.0.1:N (default 8080)
+  dist [--no-opt]               build dist/ only
+  test                          run every check and test suite (what CI runs)
+
+--no-opt skips wasm-opt (faster build, bigger wasm).";
+
+/// A parsed command line.
+#[derive(Debug, PartialEq, Eq)]
+enum Task {
+    /// Build and serve.
+    Serve {
+        /// Port on 127.0.0.1.
+        port: u16,
+        /// Whether to run wasm-opt.
+        optimise: bool,
+    },
+    /// Build only.
+    Dist {
+        /// Whether to run wasm-opt.
+        optimise: bool,
+    },
+    /// Everything CI runs.
+    Test,
+    /// Print usage.
+    Help,
+}
+
+/// Parses the arguments after `cargo xtask`.
+fn parse(args: &[String]) -> Result<Task, String> {
+    let Some((command, rest)) = args.split_first() else {
+        return Ok(Task::Help);
+    };
+    let mut port = DEFAULT_PORT;
+    let mut optimise = true;
+    let mut iter = rest.iter();
+    while let Some(arg) = iter.next() {
+        match arg.as_str() {
+            "--no-opt" if command != "test" => optimise = false,
+            "--port" if command == "serve" => {
+                let value = iter.next().ok_or("--port needs a value")?;
+                port = value.parse().map_err(|_| format!("bad port `{value}`"))?;
+            }
+            other => {
+                if let Some(value) = other.strip_prefix("--port=").filter(|_| command == "serve") {
+                    port = value.parse().map_err(|_| format!("bad port `{value}`"))?;
+                } else {
+                    return Err(format!("unexpected argument `{other}` for `{command}`"));
+                }
+            }
+        }
+    }
+    match command.as_str() {
+        "serve" => Ok(Task::Serve { port, optimise }),
+        "dist" => Ok(Task::Dist { optimise }),
+        "test" => Ok(Task::Test),
+        "help" | "--help" | "-h" => Ok(Task::Help),
+        other => Err(format!("unknown command `{other}`")),
+    }
+}
+
+/// Runs one task.
+fn run(task: Task) -> cmd::Result<()> {
+    match task {
+        Task::Serve { port, optimise } => {
+            let dist = site::build(optimise)?;
+            let server = serve::start(&dist, port)?;
+            println!(
+                "xtask: serving {} at {} (Ctrl-C to stop)",
+                dist.display(),
+                server.url()
+            );
+            server.wait();
+            Ok(())
+        }
+        Task::Dist { optimise } => site::build(optimise).map(|_| ()),
+        Task::Test => suite::run(),
+        Task::Help => {
+            println!("{USAGE}");
+            Ok(())
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let task = match parse(&args) {
+        Ok(task) => task,
+        Err(e) => {
+            eprintln!("xtask: {e}\n\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    match run(task) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("xtask: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| (*s).to_string()).collect()
+    }
+
+    #[test]
+    fn parses_commands() {
+        assert_eq!(parse(&args(&[])), Ok(Task::Help));
+        assert_eq!(parse(&args(&["test"])), Ok(Task::Test));
+        assert_eq!(
+            parse(&args(&["dist", "--no-opt"])),
+            Ok(Task::Dist { optimise: false })
+        );
+        assert_eq!(
+            parse(&args(&["serve", "--port", "9000"])),
+            Ok(Task::Serve {
+                port: 9000,
+                optimise: true
+            })
+        );
+        assert_eq!(
+            parse(&args(&["serve", "--port=81", "--no-opt"])),
+            Ok(Task::Serve {
+                port: 81,
+                optimise: false
+            })
+        );
+        assert!(parse(&args(&["dist", "--port", "1"])).is_err());
+        assert!(parse(&args(&["test", "--no-opt"])).is_err());
+        assert!(parse(&args(&["bogus"])).is_err());
+    }
+}

@@ -67,7 +67,13 @@ pub fn main() -> ExitCode {
             Ok(true)
         }
         Command::Reproduce { lab, json } => reproduce(&lab, json.as_deref()),
-        Command::Run { lab, seed, duration, csv, set } => run(&lab, seed, duration, &csv, &set).map(|()| true),
+        Command::Run {
+            lab,
+            seed,
+            duration,
+            csv,
+            set,
+        } => run(&lab, seed, duration, &csv, &set).map(|()| true),
         Command::Bench { steps } => {
             bench(steps.max(10));
             Ok(true)
@@ -91,13 +97,20 @@ fn list_labs() {
     for lab in labs::all() {
         println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
         for p in lab.params() {
-            println!("  --set {}=<{} … {}> {} (default {}) {}", p.key, p.min, p.max, p.unit, p.default, p.label);
+            println!(
+                "  --set {}=<{} … {}> {} (default {}) {}",
+                p.key, p.min, p.max, p.unit, p.default, p.label
+            );
         }
     }
 }
 
 fn reproduce(which: &str, json: Option<&Path>) -> Result<bool, String> {
-    let selected: Vec<&'static dyn Lab> = if which == "all" { labs::all().to_vec() } else { vec![find_lab(which)?] };
+    let selected: Vec<&'static dyn Lab> = if which == "all" {
+        labs::all().to_vec()
+    } else {
+        vec![find_lab(which)?]
+    };
     let mut reports = Vec::new();
     for lab in selected {
         let rep = lab.reproduce();
@@ -115,31 +128,48 @@ fn reproduce(which: &str, json: Option<&Path>) -> Result<bool, String> {
     Ok(ok)
 }
 
-fn run(lab_id: &str, seed: u64, duration: Option<f64>, csv_path: &Path, set: &[String]) -> Result<(), String> {
+fn run(
+    lab_id: &str,
+    seed: u64,
+    duration: Option<f64>,
+    csv_path: &Path,
+    set: &[String],
+) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
     let mut params = ParamValues::defaults(lab.params());
     let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
     if !errors.is_empty() {
-        return Err(errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "));
+        return Err(errors
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("; "));
     }
     let duration_s = duration.unwrap_or(lab.default_duration_s());
     if !(duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1e6) {
-        return Err(format!("--duration must be a number of seconds in (0, 1e6], got {duration_s}"));
+        return Err(format!(
+            "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
+        ));
     }
-    let file = std::fs::File::create(csv_path).map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+    let file = std::fs::File::create(csv_path)
+        .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
     let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
     let mut sim = Simulation::with_history(lab, params.clone(), seed, 2);
     let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
-    out.write_record(sim.recorder().specs().iter().map(|s| s.header())).map_err(io)?;
-    out.write_record(sim.last_row().iter().map(|v| format_value(*v))).map_err(io)?;
+    out.write_record(sim.recorder().specs().iter().map(|s| s.header()))
+        .map_err(io)?;
+    out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
+        .map_err(io)?;
     let mut rows = 1u64;
     let end = duration_s - 1e-9 * sim.dt_s();
     while sim.t_s() < end {
         sim.step();
-        out.write_record(sim.last_row().iter().map(|v| format_value(*v))).map_err(io)?;
+        out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
+            .map_err(io)?;
         rows += 1;
     }
-    out.flush().map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
+    out.flush()
+        .map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
     let sidecar = csv_path.with_extension("json");
     let meta = serde_json::json!({
         "attlab_version": env!("CARGO_PKG_VERSION"),
@@ -158,8 +188,14 @@ fn run(lab_id: &str, seed: u64, duration: Option<f64>, csv_path: &Path, set: &[S
         "csv": csv_path.file_name().map(|n| n.to_string_lossy().to_string()),
     });
     let text = serde_json::to_string_pretty(&meta).map_err(|e| e.to_string())?;
-    std::fs::write(&sidecar, text).map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
-    println!("wrote {rows} rows × {} series to {} and parameters to {}", sim.recorder().specs().len(), csv_path.display(), sidecar.display());
+    std::fs::write(&sidecar, text)
+        .map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
+    println!(
+        "wrote {rows} rows × {} series to {} and parameters to {}",
+        sim.recorder().specs().len(),
+        csv_path.display(),
+        sidecar.display()
+    );
     Ok(())
 }
 
@@ -173,7 +209,12 @@ fn bench(steps: usize) {
             sim.step();
         }
         let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
-        println!("{:<22} {:<34} {:>12.0}", lab.id(), "simulation step (all)", ns);
+        println!(
+            "{:<22} {:<34} {:>12.0}",
+            lab.id(),
+            "simulation step (all)",
+            ns
+        );
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         let mut run = lab.build(&params, &mut rng);
         let dt = lab.dt_s(&params);
@@ -185,7 +226,12 @@ fn bench(steps: usize) {
             }
             let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
             std::hint::black_box(est.estimate());
-            println!("{:<22} {:<34} {:>12.0}", lab.id(), format!("estimator {}", est.id()), ns);
+            println!(
+                "{:<22} {:<34} {:>12.0}",
+                lab.id(),
+                format!("estimator {}", est.id()),
+                ns
+            );
         }
     }
     let _ = std::io::stdout().flush();

@@ -20,12 +20,16 @@ pub struct AngleProfile {
 impl AngleProfile {
     /// Angle at `t_s` (rad).
     pub fn angle(&self, t_s: f64) -> f64 {
-        self.rate_rad_s * t_s + self.amplitude_rad * (self.frequency_rad_s * t_s + self.phase_rad).sin()
+        self.rate_rad_s * t_s
+            + self.amplitude_rad * (self.frequency_rad_s * t_s + self.phase_rad).sin()
     }
 
     /// Its time derivative (rad/s).
     pub fn rate(&self, t_s: f64) -> f64 {
-        self.rate_rad_s + self.amplitude_rad * self.frequency_rad_s * (self.frequency_rad_s * t_s + self.phase_rad).cos()
+        self.rate_rad_s
+            + self.amplitude_rad
+                * self.frequency_rad_s
+                * (self.frequency_rad_s * t_s + self.phase_rad).cos()
     }
 }
 
@@ -45,15 +49,31 @@ impl EulerMotion {
     /// A_γ = 25°, A_ϑ = 30°, ω_ψ = 1 °/s, ω_ϑ = ω_γ = 0.05 rad/s.
     pub fn paper3() -> Self {
         Self {
-            yaw: AngleProfile { rate_rad_s: 1f64.to_radians(), ..AngleProfile::default() },
-            pitch: AngleProfile { amplitude_rad: 30f64.to_radians(), frequency_rad_s: 0.05, phase_rad: std::f64::consts::FRAC_PI_2, ..AngleProfile::default() },
-            roll: AngleProfile { amplitude_rad: 25f64.to_radians(), frequency_rad_s: 0.05, ..AngleProfile::default() },
+            yaw: AngleProfile {
+                rate_rad_s: 1f64.to_radians(),
+                ..AngleProfile::default()
+            },
+            pitch: AngleProfile {
+                amplitude_rad: 30f64.to_radians(),
+                frequency_rad_s: 0.05,
+                phase_rad: std::f64::consts::FRAC_PI_2,
+                ..AngleProfile::default()
+            },
+            roll: AngleProfile {
+                amplitude_rad: 25f64.to_radians(),
+                frequency_rad_s: 0.05,
+                ..AngleProfile::default()
+            },
         }
     }
 
     /// Euler angles at `t_s`.
     pub fn euler(&self, t_s: f64) -> EulerYpr {
-        EulerYpr::new(self.yaw.angle(t_s), self.pitch.angle(t_s), self.roll.angle(t_s))
+        EulerYpr::new(
+            self.yaw.angle(t_s),
+            self.pitch.angle(t_s),
+            self.roll.angle(t_s),
+        )
     }
 
     /// `q_ref_from_body` at `t_s`.
@@ -71,9 +91,17 @@ impl EulerMotion {
     /// assert!((w.y - (25f64.to_radians() * 0.05 + psi_dot * 0.5)).abs() < 1e-15);
     /// ```
     pub fn body_rate_rad_s(&self, t_s: f64) -> Vector3<f64> {
-        let (psi_d, th_d, ga_d) = (self.yaw.rate(t_s), self.pitch.rate(t_s), self.roll.rate(t_s));
+        let (psi_d, th_d, ga_d) = (
+            self.yaw.rate(t_s),
+            self.pitch.rate(t_s),
+            self.roll.rate(t_s),
+        );
         let (sth, cth) = self.pitch.angle(t_s).sin_cos();
         let (sga, cga) = self.roll.angle(t_s).sin_cos();
-        Vector3::new(th_d * cga - psi_d * cth * sga, ga_d + psi_d * sth, psi_d * cth * cga + th_d * sga)
+        Vector3::new(
+            th_d * cga - psi_d * cth * sga,
+            ga_d + psi_d * sth,
+            psi_d * cth * cga + th_d * sga,
+        )
     }
 }

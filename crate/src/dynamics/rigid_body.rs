@@ -27,7 +27,11 @@ pub struct RigidBody {
 impl RigidBody {
     /// A body at `state`, torque free.
     pub fn new(inertia_kg_m2: Vector3<f64>, state: RigidBodyState) -> Self {
-        Self { inertia_kg_m2, torque_body_n_m: Vector3::zeros(), state }
+        Self {
+            inertia_kg_m2,
+            torque_body_n_m: Vector3::zeros(),
+            state,
+        }
     }
 
     fn derivative(&self, x: &SVector<f64, 7>) -> SVector<f64, 7> {
@@ -47,7 +51,9 @@ impl RigidBody {
         let x = SVector::<f64, 7>::from_column_slice(&[q.w, q.i, q.j, q.k, w.x, w.y, w.z]);
         let x = rk4_step(0.0, &x, dt_s, |_, x| self.derivative(x));
         self.state = RigidBodyState {
-            q_ref_from_body: UnitQuaternion::from_quaternion(Quaternion::new(x[0], x[1], x[2], x[3])),
+            q_ref_from_body: UnitQuaternion::from_quaternion(Quaternion::new(
+                x[0], x[1], x[2], x[3],
+            )),
             rate_body_rad_s: Vector3::new(x[4], x[5], x[6]),
         };
     }
@@ -60,7 +66,9 @@ impl RigidBody {
 
     /// Angular momentum in the reference frame (N·m·s); constant without torque.
     pub fn angular_momentum_ref(&self) -> Vector3<f64> {
-        let h_body = self.inertia_kg_m2.component_mul(&self.state.rate_body_rad_s);
+        let h_body = self
+            .inertia_kg_m2
+            .component_mul(&self.state.rate_body_rad_s);
         self.state.q_ref_from_body * h_body
     }
 }
@@ -101,7 +109,15 @@ mod tests {
             body.step(0.001);
         }
         let lambda = (i3 - i1) / i1 * w3;
-        let angle = body.state.rate_body_rad_s.y.atan2(body.state.rate_body_rad_s.x);
-        assert!((angle - lambda * t).abs() < 1e-9, "angle {angle} vs {}", lambda * t);
+        let angle = body
+            .state
+            .rate_body_rad_s
+            .y
+            .atan2(body.state.rate_body_rad_s.x);
+        assert!(
+            (angle - lambda * t).abs() < 1e-9,
+            "angle {angle} vs {}",
+            lambda * t
+        );
     }
 }

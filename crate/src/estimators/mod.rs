@@ -109,7 +109,12 @@ pub struct IntegrationErrorModel {
 impl IntegrationErrorModel {
     /// Starts with zero uncertainty (the initial attitude is known).
     pub fn new(noise_sigma_rad_s: f64, bias_sigma_rad_s: f64) -> Self {
-        Self { noise_sigma_rad_s, bias_sigma_rad_s, arw_variance_rad2: 0.0, elapsed_s: 0.0 }
+        Self {
+            noise_sigma_rad_s,
+            bias_sigma_rad_s,
+            arw_variance_rad2: 0.0,
+            elapsed_s: 0.0,
+        }
     }
 
     /// Adds one step: each sample's noise enters the angle as σ·dt.

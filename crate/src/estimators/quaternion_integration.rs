@@ -3,7 +3,7 @@
 //! between samples. The reference every other attitude estimator is compared with.
 
 use super::{Estimate, Estimator, IntegrationErrorModel, Measurements};
-use crate::math::{step_quaternion_rk4, RateSegment};
+use crate::math::{RateSegment, step_quaternion_rk4};
 use crate::params::ParamValues;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -18,7 +18,11 @@ pub struct QuaternionIntegration {
 impl QuaternionIntegration {
     /// Starts at `q0_ref_from_body`; `error_model` sets the published variance.
     pub fn new(q0_ref_from_body: UnitQuaternion<f64>, error_model: IntegrationErrorModel) -> Self {
-        Self { q_ref_from_body: q0_ref_from_body, last_rate_rad_s: None, error_model }
+        Self {
+            q_ref_from_body: q0_ref_from_body,
+            last_rate_rad_s: None,
+            error_model,
+        }
     }
 }
 
@@ -40,9 +44,14 @@ impl Estimator for QuaternionIntegration {
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {
-        let Some(rate) = m.gyro_body_rad_s else { return };
+        let Some(rate) = m.gyro_body_rad_s else {
+            return;
+        };
         let start = self.last_rate_rad_s.unwrap_or(rate);
-        let seg = RateSegment { start_rad_s: start, end_rad_s: rate };
+        let seg = RateSegment {
+            start_rad_s: start,
+            end_rad_s: rate,
+        };
         self.q_ref_from_body = step_quaternion_rk4(&self.q_ref_from_body, |f| seg.at(f), dt_s);
         self.last_rate_rad_s = Some(rate);
         self.error_model.step(dt_s);

@@ -4,7 +4,7 @@
 //! through any attitude.
 
 use super::{Estimate, Estimator, IntegrationErrorModel, Measurements};
-use crate::math::{step_uvz_rk4, RateSegment, WzAttitude};
+use crate::math::{RateSegment, WzAttitude, step_uvz_rk4};
 use crate::params::ParamValues;
 use nalgebra::Vector3;
 
@@ -20,7 +20,12 @@ pub struct WzIntegration {
 impl WzIntegration {
     /// Starts at `wz0`; `error_model` sets the published variance.
     pub fn new(wz0: WzAttitude, error_model: IntegrationErrorModel) -> Self {
-        Self { wz: wz0, last_rate_rad_s: None, error_model, chart_switches: 0 }
+        Self {
+            wz: wz0,
+            last_rate_rad_s: None,
+            error_model,
+            chart_switches: 0,
+        }
     }
 
     /// How many times the chart has switched so far.
@@ -47,9 +52,14 @@ impl Estimator for WzIntegration {
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {
-        let Some(rate) = m.gyro_body_rad_s else { return };
+        let Some(rate) = m.gyro_body_rad_s else {
+            return;
+        };
         let start = self.last_rate_rad_s.unwrap_or(rate);
-        let seg = RateSegment { start_rad_s: start, end_rad_s: rate };
+        let seg = RateSegment {
+            start_rad_s: start,
+            end_rad_s: rate,
+        };
         let next = step_uvz_rk4(&self.wz, |f| seg.at(f), dt_s);
         if next.chart != self.wz.chart {
             self.chart_switches += 1;

@@ -6,7 +6,9 @@
 
 use super::{AnchorRow, Lab, LabRun, Reproduction, SensorModel, TruthModel, TruthState};
 use crate::dynamics::{RigidBody, RigidBodyState};
-use crate::estimators::{IntegrationErrorModel, Measurements, QuaternionIntegration, WzIntegration};
+use crate::estimators::{
+    IntegrationErrorModel, Measurements, QuaternionIntegration, WzIntegration,
+};
 use crate::math::{EulerYpr, WzAttitude};
 use crate::params::{ParamSpec, ParamValues};
 use crate::record::{SeriesGroup, SeriesSpec};
@@ -18,19 +20,51 @@ use rand_chacha::ChaCha8Rng;
 /// The free-rotation lab.
 pub struct FreeRotation;
 
-const SPIN_AXES: &[&str] = &["x (smallest I: stable)", "y (intermediate I: flips)", "z (largest I: stable)"];
+const SPIN_AXES: &[&str] = &[
+    "x (smallest I: stable)",
+    "y (intermediate I: flips)",
+    "z (largest I: stable)",
+];
 
 const PARAMS: &[ParamSpec] = &[
-    ParamSpec::real("inertia_x_kg_m2", "Inertia Ixx", "kg·m²", 0.1, 10.0, 1.0).log().help("Principal moment of inertia about body x."),
-    ParamSpec::real("inertia_y_kg_m2", "Inertia Iyy", "kg·m²", 0.1, 10.0, 2.0).log().help("Principal moment of inertia about body y."),
-    ParamSpec::real("inertia_z_kg_m2", "Inertia Izz", "kg·m²", 0.1, 10.0, 3.0).log().help("Principal moment of inertia about body z."),
-    ParamSpec::real("spin_deg_s", "Initial spin", "°/s", 0.0, 360.0, 40.0).on_reset().help("Initial rotation rate (applies at reset)."),
-    ParamSpec::choice("spin_axis", "Spin axis", SPIN_AXES, 1).on_reset().help("Axis of the initial spin; the intermediate axis is unstable and the body flips."),
-    ParamSpec::real("tilt_deg", "Initial tilt", "°", 0.0, 180.0, 20.0).on_reset().help("Initial roll of the body from level (applies at reset)."),
-    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 2.0, 0.02).help("White noise of each gyro sample; it accumulates as an angle random walk."),
-    ParamSpec::real("gyro_bias_deg_s", "Gyro bias", "°/s", 0.0, 2.0, 0.1).help("Constant zero offset on each axis (+, −, +); integration turns it into a drift."),
-    ParamSpec::real("gyro_walk_deg_s_sqrt_s", "Bias random walk", "°/s/√s", 0.0, 0.1, 0.0).help("Bias instability: the bias itself drifts as a random walk."),
-    ParamSpec::real("rate_hz", "Sample rate", "Hz", 10.0, 1000.0, 100.0).log().integer().help("Gyro sample rate = simulation rate."),
+    ParamSpec::real("inertia_x_kg_m2", "Inertia Ixx", "kg·m²", 0.1, 10.0, 1.0)
+        .log()
+        .help("Principal moment of inertia about body x."),
+    ParamSpec::real("inertia_y_kg_m2", "Inertia Iyy", "kg·m²", 0.1, 10.0, 2.0)
+        .log()
+        .help("Principal moment of inertia about body y."),
+    ParamSpec::real("inertia_z_kg_m2", "Inertia Izz", "kg·m²", 0.1, 10.0, 3.0)
+        .log()
+        .help("Principal moment of inertia about body z."),
+    ParamSpec::real("spin_deg_s", "Initial spin", "°/s", 0.0, 360.0, 40.0)
+        .on_reset()
+        .help("Initial rotation rate (applies at reset)."),
+    ParamSpec::choice("spin_axis", "Spin axis", SPIN_AXES, 1)
+        .on_reset()
+        .help("Axis of the initial spin; the intermediate axis is unstable and the body flips."),
+    ParamSpec::real("tilt_deg", "Initial tilt", "°", 0.0, 180.0, 20.0)
+        .on_reset()
+        .help("Initial roll of the body from level (applies at reset)."),
+    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 2.0, 0.02)
+        .log()
+        .help("White noise of each gyro sample; it accumulates as an angle random walk."),
+    ParamSpec::real("gyro_bias_deg_s", "Gyro bias", "°/s", 0.0, 2.0, 0.1)
+        .log()
+        .help("Constant zero offset on each axis (+, −, +); integration turns it into a drift."),
+    ParamSpec::real(
+        "gyro_walk_deg_s_sqrt_s",
+        "Bias random walk",
+        "°/s/√s",
+        0.0,
+        0.1,
+        0.0,
+    )
+    .log()
+    .help("Bias instability: the bias itself drifts as a random walk."),
+    ParamSpec::real("rate_hz", "Sample rate", "Hz", 10.0, 1000.0, 100.0)
+        .log()
+        .integer()
+        .help("Gyro sample rate = simulation rate."),
 ];
 
 impl Lab for FreeRotation {
@@ -67,15 +101,24 @@ impl Lab for FreeRotation {
         let mut truth = Tumble::new(params);
         truth.apply_params(params);
         let state = truth.state();
-        let mut sensors = GyroSensors { gyro: Gyro3::new(Gyro3Config::default()) };
+        let mut sensors = GyroSensors {
+            gyro: Gyro3::new(Gyro3Config::default()),
+        };
         sensors.apply_params(params);
         let model = IntegrationErrorModel::new(0.0, 0.0);
         let mut estimators: Vec<Box<dyn crate::estimators::Estimator>> = vec![
             Box::new(QuaternionIntegration::new(state.q_ref_from_body, model)),
-            Box::new(WzIntegration::new(WzAttitude::from_quaternion(&state.q_ref_from_body), model)),
+            Box::new(WzIntegration::new(
+                WzAttitude::from_quaternion(&state.q_ref_from_body),
+                model,
+            )),
         ];
         estimators.iter_mut().for_each(|e| e.apply_params(params));
-        LabRun { truth: Box::new(truth), sensors: Box::new(sensors), estimators }
+        LabRun {
+            truth: Box::new(truth),
+            sensors: Box::new(sensors),
+            estimators,
+        }
     }
 
     fn default_duration_s(&self) -> f64 {
@@ -103,15 +146,24 @@ impl Tumble {
             _ => Vector3::new(0.02, 1.0, 0.02),
         };
         let q0 = EulerYpr::new(0.0, 0.0, params.get("tilt_deg").to_radians()).to_quaternion();
-        let state = RigidBodyState { q_ref_from_body: q0, rate_body_rad_s: axis.normalize() * spin };
-        Self { body: RigidBody::new(Vector3::new(1.0, 2.0, 3.0), state), t_s: 0.0 }
+        let state = RigidBodyState {
+            q_ref_from_body: q0,
+            rate_body_rad_s: axis.normalize() * spin,
+        };
+        Self {
+            body: RigidBody::new(Vector3::new(1.0, 2.0, 3.0), state),
+            t_s: 0.0,
+        }
     }
 }
 
 impl TruthModel for Tumble {
     fn apply_params(&mut self, params: &ParamValues) {
-        self.body.inertia_kg_m2 =
-            Vector3::new(params.get("inertia_x_kg_m2"), params.get("inertia_y_kg_m2"), params.get("inertia_z_kg_m2"));
+        self.body.inertia_kg_m2 = Vector3::new(
+            params.get("inertia_x_kg_m2"),
+            params.get("inertia_y_kg_m2"),
+            params.get("inertia_z_kg_m2"),
+        );
     }
 
     fn step(&mut self, dt_s: f64) {
@@ -121,7 +173,12 @@ impl TruthModel for Tumble {
 
     fn state(&self) -> TruthState {
         let s = self.body.state;
-        TruthState { t_s: self.t_s, q_ref_from_body: s.q_ref_from_body, rate_body_rad_s: s.rate_body_rad_s, angle_rad: None }
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: s.q_ref_from_body,
+            rate_body_rad_s: s.rate_body_rad_s,
+            angle_rad: None,
+        }
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
@@ -154,14 +211,20 @@ impl SensorModel for GyroSensors {
 
     fn sample(&mut self, truth: &TruthState, dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements {
         let rate = self.gyro.sample(&truth.rate_body_rad_s, dt_s, rng);
-        Measurements { t_s: truth.t_s, gyro_body_rad_s: Some(rate), ..Measurements::default() }
+        Measurements {
+            t_s: truth.t_s,
+            gyro_body_rad_s: Some(rate),
+            ..Measurements::default()
+        }
     }
 }
 
 /// Largest value of series `name` over the held history.
 fn max_of(sim: &Simulation, name: &str) -> f64 {
     let r = sim.recorder();
-    r.index_of(name).and_then(|i| r.column(i)).map_or(f64::NAN, |c| c.iter().fold(0.0_f64, |m, v| m.max(v.abs())))
+    r.index_of(name)
+        .and_then(|i| r.column(i))
+        .map_or(f64::NAN, |c| c.iter().fold(0.0_f64, |m, v| m.max(v.abs())))
 }
 
 fn run(assignments: &[&str], duration_s: f64) -> Simulation {
@@ -178,27 +241,63 @@ fn run(assignments: &[&str], duration_s: f64) -> Simulation {
 fn reproduce() -> Reproduction {
     let mut rows = Vec::new();
     let clean = run(&["gyro_noise_deg_s=0", "gyro_bias_deg_s=0"], 60.0);
-    let fine = run(&["gyro_noise_deg_s=0", "gyro_bias_deg_s=0", "rate_hz=200"], 60.0);
+    let fine = run(
+        &["gyro_noise_deg_s=0", "gyro_bias_deg_s=0", "rate_hz=200"],
+        60.0,
+    );
     let q_err = max_of(&clean, "quat-rk4.err_deg").to_radians();
     let q_err_fine = max_of(&fine, "quat-rk4.err_deg").to_radians();
     // The integrators see the rate only at the samples (linear in between) while the truth
     // integrates the exact rate, so the error-free error is O(dt²): halving dt quarters it.
     let ratio = q_err / q_err_fine;
-    rows.push(AnchorRow { quantity: "error-free: max quaternion error, 100 Hz, 60 s".into(), expected: "small, O(dt²)".into(), measured: q_err, unit: "rad", pass: q_err < 1e-4 });
-    rows.push(AnchorRow { quantity: "error-free: error ratio 100 Hz / 200 Hz".into(), expected: "4 ± 0.5 (O(dt²))".into(), measured: ratio, unit: "", pass: (ratio - 4.0).abs() < 0.5 });
+    rows.push(AnchorRow {
+        quantity: "error-free: max quaternion error, 100 Hz, 60 s".into(),
+        expected: "small, O(dt²)".into(),
+        measured: q_err,
+        unit: "rad",
+        pass: q_err < 1e-4,
+    });
+    rows.push(AnchorRow {
+        quantity: "error-free: error ratio 100 Hz / 200 Hz".into(),
+        expected: "4 ± 0.5 (O(dt²))".into(),
+        measured: ratio,
+        unit: "",
+        pass: (ratio - 4.0).abs() < 0.5,
+    });
     let mut k_diff = 0.0_f64;
     for axis in ["k_x", "k_y", "k_z"] {
         let a = column(&clean, &format!("quat-rk4.{axis}"));
         let b = column(&clean, &format!("uvz-rk4.{axis}"));
-        k_diff = a.iter().zip(&b).fold(k_diff, |m, (x, y)| m.max((x - y).abs()));
+        k_diff = a
+            .iter()
+            .zip(&b)
+            .fold(k_diff, |m, (x, y)| m.max((x - y).abs()));
     }
-    rows.push(AnchorRow { quantity: "quaternion vs (u,v,z) on the same samples: max |Δk|".into(), expected: "≤ 1e-9".into(), measured: k_diff, unit: "", pass: k_diff <= 1e-9 });
+    rows.push(AnchorRow {
+        quantity: "quaternion vs (u,v,z) on the same samples: max |Δk|".into(),
+        expected: "≤ 1e-9".into(),
+        measured: k_diff,
+        unit: "",
+        pass: k_diff <= 1e-9,
+    });
     let (e0, e1) = first_last(&clean, "truth.energy_j");
     let drift = ((e1 - e0) / e0).abs();
-    rows.push(AnchorRow { quantity: "truth: relative energy drift, 60 s".into(), expected: "< 1e-9".into(), measured: drift, unit: "", pass: drift < 1e-9 });
+    rows.push(AnchorRow {
+        quantity: "truth: relative energy drift, 60 s".into(),
+        expected: "< 1e-9".into(),
+        measured: drift,
+        unit: "",
+        pass: drift < 1e-9,
+    });
     let max_kz = max_of(&clean, "truth.k_z");
     let min_kz = min_of(&clean, "truth.k_z");
-    rows.push(AnchorRow { quantity: "intermediate-axis tumble: lowest vertical k_z".into(), expected: "< -0.9 (upside down)".into(), measured: min_kz, unit: "", pass: min_kz < -0.9 && max_kz > 0.9 });
+    rows.push(AnchorRow {
+        quantity: "intermediate-axis tumble: lowest vertical k_z".into(),
+        expected: "< -0.9 (upside down)".into(),
+        measured: min_kz,
+        unit: "",
+        pass: min_kz < -0.9 && max_kz > 0.9,
+    });
     let biased = run(&["gyro_noise_deg_s=0", "gyro_bias_deg_s=0.1"], 60.0);
     let b_err = last_of(&biased, "quat-rk4.err_deg");
     let sigma = last_of(&biased, "quat-rk4.P_axis_rad2").sqrt().to_degrees();
@@ -220,12 +319,18 @@ fn reproduce() -> Reproduction {
 
 fn column(sim: &Simulation, name: &str) -> Vec<f64> {
     let r = sim.recorder();
-    r.index_of(name).and_then(|i| r.column(i)).map(|c| c.iter().copied().collect()).unwrap_or_default()
+    r.index_of(name)
+        .and_then(|i| r.column(i))
+        .map(|c| c.iter().copied().collect())
+        .unwrap_or_default()
 }
 
 fn first_last(sim: &Simulation, name: &str) -> (f64, f64) {
     let c = column(sim, name);
-    (c.first().copied().unwrap_or(f64::NAN), c.last().copied().unwrap_or(f64::NAN))
+    (
+        c.first().copied().unwrap_or(f64::NAN),
+        c.last().copied().unwrap_or(f64::NAN),
+    )
 }
 
 fn last_of(sim: &Simulation, name: &str) -> f64 {

@@ -109,8 +109,17 @@ impl Reproduction {
 
     /// Plain-text table.
     pub fn to_table(&self) -> String {
-        let w = self.rows.iter().map(|r| r.quantity.chars().count()).max().unwrap_or(8).max(8);
-        let mut s = format!("== {} ==\n{:<w$}  {:>24}  {:>14}  {:<8} ok\n", self.lab, "quantity", "expected", "measured", "unit");
+        let w = self
+            .rows
+            .iter()
+            .map(|r| r.quantity.chars().count())
+            .max()
+            .unwrap_or(8)
+            .max(8);
+        let mut s = format!(
+            "== {} ==\n{:<w$}  {:>24}  {:>14}  {:<8} ok\n",
+            self.lab, "quantity", "expected", "measured", "unit"
+        );
         for r in &self.rows {
             s += &format!(
                 "{:<w$}  {:>24}  {:>14.6e}  {:<8} {}\n",
@@ -153,7 +162,12 @@ pub trait Lab: Sync {
 impl LabRun {
     /// Steps truth and sensors only, `steps` times, and returns the measurements: the input
     /// for timing or replaying the estimators on their own.
-    pub fn measurement_trace(&mut self, dt_s: f64, steps: usize, rng: &mut ChaCha8Rng) -> Vec<Measurements> {
+    pub fn measurement_trace(
+        &mut self,
+        dt_s: f64,
+        steps: usize,
+        rng: &mut ChaCha8Rng,
+    ) -> Vec<Measurements> {
         (0..steps)
             .map(|_| {
                 self.truth.step(dt_s);

@@ -19,7 +19,11 @@ pub struct EulerYpr {
 impl EulerYpr {
     /// Angles in paper order (yaw, pitch, roll).
     pub fn new(yaw_rad: f64, pitch_rad: f64, roll_rad: f64) -> Self {
-        Self { yaw_rad, pitch_rad, roll_rad }
+        Self {
+            yaw_rad,
+            pitch_rad,
+            roll_rad,
+        }
     }
 
     /// Paper 3's eq. (22) matrix *A*.
@@ -49,7 +53,11 @@ impl EulerYpr {
                 roll_rad: (-a[(0, 2)]).atan2(a[(2, 2)]),
             }
         } else {
-            Self { yaw_rad: a[(0, 1)].atan2(a[(0, 0)]), pitch_rad, roll_rad: 0.0 }
+            Self {
+                yaw_rad: a[(0, 1)].atan2(a[(0, 0)]),
+                pitch_rad,
+                roll_rad: 0.0,
+            }
         }
     }
 

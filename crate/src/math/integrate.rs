@@ -1,7 +1,7 @@
 //! Fixed-step RK4 and the two attitude kinematics it integrates: the quaternion
 //! (`q̇ = ½ q ⊗ (0, ω)`) and paper 3's (u, v, z) system (eq. 21).
 
-use super::wz::{WzAttitude, WzChart, CHART_SWITCH_MODULUS};
+use super::wz::{CHART_SWITCH_MODULUS, WzAttitude, WzChart};
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
 
 /// One classical Runge–Kutta step of `ẋ = f(t, x)` from `t_s` over `dt_s`.
@@ -42,7 +42,10 @@ pub struct RateSegment {
 impl RateSegment {
     /// A constant rate over the step.
     pub fn constant(rate_rad_s: Vector3<f64>) -> Self {
-        Self { start_rad_s: rate_rad_s, end_rad_s: rate_rad_s }
+        Self {
+            start_rad_s: rate_rad_s,
+            end_rad_s: rate_rad_s,
+        }
     }
 
     /// The rate at `fraction` ∈ [0, 1] of the step.
@@ -52,7 +55,10 @@ impl RateSegment {
 }
 
 /// `q̇ = ½ q ⊗ (0, ω_body)` for `q_ref_from_body`, as a 4-vector (w, i, j, k).
-pub fn quaternion_derivative(q: &SVector<f64, 4>, rate_body_rad_s: &Vector3<f64>) -> SVector<f64, 4> {
+pub fn quaternion_derivative(
+    q: &SVector<f64, 4>,
+    rate_body_rad_s: &Vector3<f64>,
+) -> SVector<f64, 4> {
     let q = Quaternion::new(q[0], q[1], q[2], q[3]);
     let omega = Quaternion::from_imag(*rate_body_rad_s);
     let d = q * omega * 0.5;
@@ -68,7 +74,9 @@ pub fn step_quaternion_rk4(
 ) -> UnitQuaternion<f64> {
     let q = q_ref_from_body.quaternion();
     let x = SVector::<f64, 4>::new(q.w, q.i, q.j, q.k);
-    let x = rk4_step(0.0, &x, dt_s, |t, x| quaternion_derivative(x, &rate_at(t / dt_s)));
+    let x = rk4_step(0.0, &x, dt_s, |t, x| {
+        quaternion_derivative(x, &rate_at(t / dt_s))
+    });
     UnitQuaternion::from_quaternion(Quaternion::new(x[0], x[1], x[2], x[3]))
 }
 
@@ -102,11 +110,22 @@ fn chart_rates(chart: WzChart, rate_body_rad_s: Vector3<f64>) -> Vector3<f64> {
 /// One RK4 step of (u, v, z) in the attitude's chart, then a chart switch if |w| (or |s|)
 /// has passed [`CHART_SWITCH_MODULUS`]. `rate_at(f)` is the body rate at fraction `f` of
 /// the step.
-pub fn step_uvz_rk4(att: &WzAttitude, rate_at: impl Fn(f64) -> Vector3<f64>, dt_s: f64) -> WzAttitude {
+pub fn step_uvz_rk4(
+    att: &WzAttitude,
+    rate_at: impl Fn(f64) -> Vector3<f64>,
+    dt_s: f64,
+) -> WzAttitude {
     let x = Vector3::new(att.u, att.v, att.z_rad);
     let chart = att.chart;
-    let x = rk4_step(0.0, &x, dt_s, |t, x| uvz_derivative(x, &chart_rates(chart, rate_at(t / dt_s))));
-    let next = WzAttitude { u: x[0], v: x[1], z_rad: x[2], chart };
+    let x = rk4_step(0.0, &x, dt_s, |t, x| {
+        uvz_derivative(x, &chart_rates(chart, rate_at(t / dt_s)))
+    });
+    let next = WzAttitude {
+        u: x[0],
+        v: x[1],
+        z_rad: x[2],
+        chart,
+    };
     if next.modulus() > CHART_SWITCH_MODULUS {
         let other = match chart {
             WzChart::North => WzChart::Flipped,

@@ -19,7 +19,11 @@ pub struct KrylovAngles {
 impl KrylovAngles {
     /// Angles in sequence order.
     pub fn new(alpha1_rad: f64, alpha2_rad: f64, alpha3_rad: f64) -> Self {
-        Self { alpha1_rad, alpha2_rad, alpha3_rad }
+        Self {
+            alpha1_rad,
+            alpha2_rad,
+            alpha3_rad,
+        }
     }
 
     /// Matrix *A* (`v_body = A v_ref`).
@@ -46,7 +50,11 @@ impl KrylovAngles {
             }
         } else {
             // A = R_y(±90°) R_z(α₁): row 1 is (−sin α₁, cos α₁, 0).
-            Self { alpha1_rad: (-a[(1, 0)]).atan2(a[(1, 1)]), alpha2_rad, alpha3_rad: 0.0 }
+            Self {
+                alpha1_rad: (-a[(1, 0)]).atan2(a[(1, 1)]),
+                alpha2_rad,
+                alpha3_rad: 0.0,
+            }
         }
     }
 

@@ -25,12 +25,11 @@ mod wz;
 pub use covariance::{is_symmetric_positive_definite, joseph_update, nees, symmetrize};
 pub use euler::EulerYpr;
 pub use integrate::{
-    quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uvz_derivative,
-    RateSegment,
+    RateSegment, quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uvz_derivative,
 };
 pub use krylov::KrylovAngles;
 pub use rotation::{
     dcm_from_quaternion, quaternion_from_dcm, rot_x, rot_y, rot_z, rotation_angle_between,
     small_angle_error_body, vertical_in_body,
 };
-pub use wz::{WzAttitude, WzChart, CHART_SWITCH_MODULUS};
+pub use wz::{CHART_SWITCH_MODULUS, WzAttitude, WzChart};

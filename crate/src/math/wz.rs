@@ -10,8 +10,8 @@
 //! `A = F·A(s)·A(z′)`. The same kinematics (eq. 21) hold for `s` with the rates
 //! (ω_ξ, −ω_η, −ω_ζ).
 
-use super::rotation::{dcm_from_quaternion, quaternion_from_dcm, rot_z};
 use super::EulerYpr;
+use super::rotation::{dcm_from_quaternion, quaternion_from_dcm, rot_z};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -66,7 +66,12 @@ pub fn a_of_w(u: f64, v: f64) -> Matrix3<f64> {
 impl WzAttitude {
     /// (u, v, z) in the north chart.
     pub fn north(u: f64, v: f64, z_rad: f64) -> Self {
-        Self { u, v, z_rad, chart: WzChart::North }
+        Self {
+            u,
+            v,
+            z_rad,
+            chart: WzChart::North,
+        }
     }
 
     /// Paper 3's eq. (15) (north chart) or `F·A(s)·A(z′)` (flipped chart).
@@ -113,7 +118,11 @@ impl WzAttitude {
     /// assert_eq!(WzAttitude::from_dcm(&a).chart, WzChart::Flipped);
     /// ```
     pub fn from_dcm(a: &Matrix3<f64>) -> Self {
-        let chart = if a[(2, 2)] >= 0.0 { WzChart::North } else { WzChart::Flipped };
+        let chart = if a[(2, 2)] >= 0.0 {
+            WzChart::North
+        } else {
+            WzChart::Flipped
+        };
         // c′ ≥ 0 (north) or c′ < 0 (flipped) keeps the denominator ≥ 1.
         Self::from_dcm_in_chart(a, chart).unwrap_or(Self::north(0.0, 0.0, 0.0))
     }
@@ -146,7 +155,11 @@ impl WzAttitude {
     /// The reference vertical in body axes (a′, b′, c′), eq. (13) — chart independent.
     pub fn vertical_in_body(&self) -> Vector3<f64> {
         let n = 1.0 + self.u * self.u + self.v * self.v;
-        let k = Vector3::new(2.0 * self.u, 2.0 * self.v, 1.0 - self.u * self.u - self.v * self.v) / n;
+        let k = Vector3::new(
+            2.0 * self.u,
+            2.0 * self.v,
+            1.0 - self.u * self.u - self.v * self.v,
+        ) / n;
         match self.chart {
             WzChart::North => k,
             WzChart::Flipped => flip() * k,
@@ -196,8 +209,16 @@ mod tests {
         let e = WzAttitude::north(u, v, z).to_euler();
         let yaw = z + (2.0 * u * v).atan2(1.0 + u * u - v * v);
         assert_relative_eq!(e.yaw_rad, yaw, epsilon = 1e-14);
-        assert_relative_eq!(e.pitch_rad, (2.0 * v / (1.0 + u * u + v * v)).asin(), epsilon = 1e-14);
-        assert_relative_eq!(e.roll_rad, (-2.0 * u).atan2(1.0 - u * u - v * v), epsilon = 1e-14);
+        assert_relative_eq!(
+            e.pitch_rad,
+            (2.0 * v / (1.0 + u * u + v * v)).asin(),
+            epsilon = 1e-14
+        );
+        assert_relative_eq!(
+            e.roll_rad,
+            (-2.0 * u).atan2(1.0 - u * u - v * v),
+            epsilon = 1e-14
+        );
     }
 
     #[test]

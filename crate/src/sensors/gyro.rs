@@ -1,6 +1,6 @@
 //! A three-axis rate gyro: constant bias + random-walk bias + white noise + quantisation.
 
-use super::noise::{quantize, RandomWalk, WhiteNoise};
+use super::noise::{RandomWalk, WhiteNoise, quantize};
 use nalgebra::Vector3;
 use rand::Rng;
 
@@ -42,19 +42,30 @@ pub struct Gyro3 {
 impl Gyro3 {
     /// A gyro whose random-walk bias starts at zero.
     pub fn new(config: Gyro3Config) -> Self {
-        let walk = [RandomWalk { value: 0.0, sigma_per_sqrt_s: 0.0 }; 3];
+        let walk = [RandomWalk {
+            value: 0.0,
+            sigma_per_sqrt_s: 0.0,
+        }; 3];
         Self { config, walk }
     }
 
     /// The current total bias (constant + walk), rad/s.
     pub fn bias_rad_s(&self) -> Vector3<f64> {
-        self.config.bias_rad_s + Vector3::new(self.walk[0].value, self.walk[1].value, self.walk[2].value)
+        self.config.bias_rad_s
+            + Vector3::new(self.walk[0].value, self.walk[1].value, self.walk[2].value)
     }
 
     /// One reading of the true body rate `rate_body_rad_s`, after `dt_s` since the last one.
-    pub fn sample(&mut self, rate_body_rad_s: &Vector3<f64>, dt_s: f64, rng: &mut impl Rng) -> Vector3<f64> {
+    pub fn sample(
+        &mut self,
+        rate_body_rad_s: &Vector3<f64>,
+        dt_s: f64,
+        rng: &mut impl Rng,
+    ) -> Vector3<f64> {
         let c = self.config;
-        let white = WhiteNoise { sigma: c.noise_sigma_rad_s };
+        let white = WhiteNoise {
+            sigma: c.noise_sigma_rad_s,
+        };
         Vector3::from_fn(|i, _| {
             self.walk[i].sigma_per_sqrt_s = c.bias_walk_rad_s_per_sqrt_s;
             let walk = self.walk[i].step(dt_s, rng);

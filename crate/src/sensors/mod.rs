@@ -4,4 +4,4 @@ mod gyro;
 mod noise;
 
 pub use gyro::{Gyro3, Gyro3Config};
-pub use noise::{quantize, Averager, RandomWalk, WhiteNoise};
+pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};

@@ -33,7 +33,9 @@ pub struct RandomWalk {
 impl RandomWalk {
     /// Advance by `dt_s` and return the new value.
     pub fn step(&mut self, dt_s: f64, rng: &mut impl Rng) -> f64 {
-        let noise = WhiteNoise { sigma: self.sigma_per_sqrt_s * dt_s.max(0.0).sqrt() };
+        let noise = WhiteNoise {
+            sigma: self.sigma_per_sqrt_s * dt_s.max(0.0).sqrt(),
+        };
         self.value += noise.sample(rng);
         self.value
     }
@@ -48,8 +50,16 @@ impl RandomWalk {
 /// assert_eq!(quantize(25.0, 0.1, 10.0), 10.0);
 /// ```
 pub fn quantize(x: f64, lsb: f64, range: f64) -> f64 {
-    let clipped = if range > 0.0 { x.clamp(-range, range) } else { x };
-    if lsb > 0.0 { (clipped / lsb).round() * lsb } else { clipped }
+    let clipped = if range > 0.0 {
+        x.clamp(-range, range)
+    } else {
+        x
+    };
+    if lsb > 0.0 {
+        (clipped / lsb).round() * lsb
+    } else {
+        clipped
+    }
 }
 
 /// Averages every `n` consecutive samples into one (a sensor decimating from its internal
@@ -64,7 +74,11 @@ pub struct Averager {
 impl Averager {
     /// Average blocks of `n` samples (`n` is at least 1).
     pub fn new(n: usize) -> Self {
-        Self { n: n.max(1), sum: 0.0, count: 0 }
+        Self {
+            n: n.max(1),
+            sum: 0.0,
+            count: 0,
+        }
     }
 
     /// Push a sample; returns the block mean when a block completes.
@@ -112,7 +126,11 @@ mod tests {
         let mean = xs.iter().sum::<f64>() / n as f64;
         let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n as f64;
         // σ̂ of 2e5 samples has a relative standard error of 1/√(2n) ≈ 0.16 %.
-        assert!((var.sqrt() - 0.5).abs() < 0.5 * 0.01, "sigma {}", var.sqrt());
+        assert!(
+            (var.sqrt() - 0.5).abs() < 0.5 * 0.01,
+            "sigma {}",
+            var.sqrt()
+        );
         assert!(mean.abs() < 5.0 * 0.5 / (n as f64).sqrt(), "mean {mean}");
     }
 
@@ -122,7 +140,10 @@ mod tests {
         let mut rng = ChaCha8Rng::seed_from_u64(11);
         let mut finals = Vec::new();
         for _ in 0..runs {
-            let mut rw = RandomWalk { value: 0.0, sigma_per_sqrt_s: 0.2 };
+            let mut rw = RandomWalk {
+                value: 0.0,
+                sigma_per_sqrt_s: 0.2,
+            };
             for _ in 0..100 {
                 rw.step(0.1, &mut rng);
             }
@@ -138,7 +159,9 @@ mod tests {
         let mut rng = ChaCha8Rng::seed_from_u64(3);
         let w = WhiteNoise { sigma: 1.0 };
         let mut avg = Averager::new(16);
-        let means: Vec<f64> = (0..16 * 20_000).filter_map(|_| avg.push(w.sample(&mut rng))).collect();
+        let means: Vec<f64> = (0..16 * 20_000)
+            .filter_map(|_| avg.push(w.sample(&mut rng)))
+            .collect();
         let sd = (means.iter().map(|x| x * x).sum::<f64>() / means.len() as f64).sqrt();
         assert!((sd - 0.25).abs() < 0.25 * 0.03, "sd {sd}");
     }

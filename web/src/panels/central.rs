@@ -21,15 +21,24 @@ pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
         let w3d = top.width() * 0.42;
         let wsphere = top.width() * 0.30;
         let r3d = Rect::from_min_size(top.min, Vec2::new(w3d - 4.0, top_h));
-        let rsphere = Rect::from_min_size(top.min + Vec2::new(w3d, 0.0), Vec2::new(wsphere - 4.0, top_h));
+        let rsphere = Rect::from_min_size(
+            top.min + Vec2::new(w3d, 0.0),
+            Vec2::new(wsphere - 4.0, top_h),
+        );
         let rplane = Rect::from_min_max(top.min + Vec2::new(w3d + wsphere, 0.0), top.max);
         let sources = sources(app);
         let source_refs: Vec<&str> = sources.iter().map(String::as_str).collect();
-        let tracks = tracks(app.sim.recorder(), &source_refs, app.sim.estimates().iter().map(|e| e.1).collect());
+        let tracks = tracks(
+            app.sim.recorder(),
+            &source_refs,
+            app.sim.estimates().iter().map(|e| e.1).collect(),
+        );
         draw_body(ui, app, r3d);
         let caption = chart_caption(app);
         riemann_sphere::show_sphere(ui, rsphere, &mut app.sphere, &tracks, &caption);
-        ui.scope_builder(egui::UiBuilder::new().max_rect(rplane), |ui| riemann_sphere::show_plane(ui, &tracks));
+        ui.scope_builder(egui::UiBuilder::new().max_rect(rplane), |ui| {
+            riemann_sphere::show_plane(ui, &tracks)
+        });
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
             plots::show(ui, app.sim.recorder(), &source_refs, &mut app.plots);
@@ -38,13 +47,17 @@ pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
 }
 
 fn sources(app: &AttLabApp) -> Vec<String> {
-    std::iter::once("truth".to_string()).chain(app.sim.estimates().iter().map(|e| e.0.to_string())).collect()
+    std::iter::once("truth".to_string())
+        .chain(app.sim.estimates().iter().map(|e| e.0.to_string()))
+        .collect()
 }
 
 fn draw_body(ui: &mut Ui, app: &mut AttLabApp, rect: Rect) {
     let truth = app.sim.truth().q_ref_from_body;
     let estimates = app.sim.estimates();
-    let ghost = estimates.get(app.ghost_index).and_then(|e| e.2.q_ref_from_body.map(|q| (q, e.1)));
+    let ghost = estimates
+        .get(app.ghost_index)
+        .and_then(|e| e.2.q_ref_from_body.map(|q| (q, e.1)));
     let scene = body3d::Scene { truth, ghost };
     let ready = app.gpu_ready();
     body3d::show(ui, rect, &mut app.camera, &scene, ready);
@@ -68,8 +81,15 @@ fn chart_caption(app: &AttLabApp) -> String {
 fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sphere::SphereTrack> {
     let mut out = Vec::new();
     for (i, src) in sources.iter().enumerate() {
-        let col = |q: &str| rec.index_of(&format!("{src}.{q}")).and_then(|j| rec.column(j));
-        let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) = (col("k_x"), col("k_y"), col("k_z"), col("u"), col("v")) else { continue };
+        let col = |q: &str| {
+            rec.index_of(&format!("{src}.{q}"))
+                .and_then(|j| rec.column(j))
+        };
+        let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) =
+            (col("k_x"), col("k_y"), col("k_z"), col("u"), col("v"))
+        else {
+            continue;
+        };
         let n = kx.len();
         let start = n.saturating_sub(TRAIL_ROWS);
         let stride = ((n - start) / TRAIL_POINTS).max(1);
@@ -81,13 +101,26 @@ fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sp
                 k_body.push(Vector3::new(kx[j], ky[j], kz[j]));
                 w.push([u[j], v[j]]);
             }
-            j = if j + stride >= n && j != n - 1 { n - 1 } else { j + stride };
+            j = if j + stride >= n && j != n - 1 {
+                n - 1
+            } else {
+                j + stride
+            };
         }
         if k_body.is_empty() {
             continue;
         }
-        let name = if i == 0 { "truth".to_string() } else { labels.get(i - 1).copied().unwrap_or(src).to_string() };
-        out.push(riemann_sphere::SphereTrack { name, color: plots::source_color(i), k_body, w });
+        let name = if i == 0 {
+            "truth".to_string()
+        } else {
+            labels.get(i - 1).copied().unwrap_or(src).to_string()
+        };
+        out.push(riemann_sphere::SphereTrack {
+            name,
+            color: plots::source_color(i),
+            k_body,
+            w,
+        });
     }
     out
 }

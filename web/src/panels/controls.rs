@@ -9,45 +9,62 @@ use egui::{Color32, RichText, Ui};
 
 /// Draws the left panel and collects commands.
 pub fn controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
-    egui::Panel::left("controls").resizable(true).default_size(300.0).show(ui, |ui| {
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            ui.heading("Attitude Lab");
-            lab_picker(ui, app, commands);
-            ui.separator();
-            run_controls(ui, app, commands);
-            ui.separator();
-            parameters(ui, app, commands);
-            ui.separator();
-            outputs(ui, app, commands);
-            messages(ui, app, commands);
-            ui.separator();
-            explanation(ui, app);
+    egui::Panel::left("controls")
+        .resizable(true)
+        .default_size(300.0)
+        .show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                ui.heading("Attitude Lab");
+                lab_picker(ui, app, commands);
+                ui.separator();
+                run_controls(ui, app, commands);
+                ui.separator();
+                parameters(ui, app, commands);
+                ui.separator();
+                outputs(ui, app, commands);
+                messages(ui, app, commands);
+                ui.separator();
+                explanation(ui, app);
+            });
         });
-    });
 }
 
 fn lab_picker(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
     let current = app.sim.lab();
-    egui::ComboBox::from_label("Lab").selected_text(current.title()).width(220.0).show_ui(ui, |ui| {
-        for lab in labs::all() {
-            if ui.selectable_label(lab.id() == current.id(), lab.title()).clicked() && lab.id() != current.id() {
-                commands.push(Command::SelectLab(*lab));
+    egui::ComboBox::from_label("Lab")
+        .selected_text(current.title())
+        .width(220.0)
+        .show_ui(ui, |ui| {
+            for lab in labs::all() {
+                if ui
+                    .selectable_label(lab.id() == current.id(), lab.title())
+                    .clicked()
+                    && lab.id() != current.id()
+                {
+                    commands.push(Command::SelectLab(*lab));
+                }
             }
-        }
-    });
+        });
     ui.label(RichText::new(current.paper()).small().italics());
 }
 
 fn run_controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
-        let label = if app.playing { "⏸ Pause" } else { "▶ Play" };
+        let label = if app.playing { "Pause" } else { "▶ Play" };
         if ui.button(label).clicked() {
             app.playing = !app.playing;
         }
-        if ui.add_enabled(!app.playing, egui::Button::new("Step")).clicked() {
+        if ui
+            .add_enabled(!app.playing, egui::Button::new("Step"))
+            .clicked()
+        {
             commands.push(Command::StepOnce);
         }
-        if ui.button("⟲ Reset").on_hover_text("Restart at t = 0 with the seed below").clicked() {
+        if ui
+            .button("⟲ Reset")
+            .on_hover_text("Restart at t = 0 with the seed below")
+            .clicked()
+        {
             commands.push(Command::Reset);
         }
     });
@@ -55,12 +72,21 @@ fn run_controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
         ui.label("Seed");
         ui.add(egui::DragValue::new(&mut app.seed).range(0..=u64::MAX));
         if ui.button("New seed").clicked() {
-            app.seed = app.seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) >> 16;
+            app.seed = app
+                .seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407)
+                >> 16;
             commands.push(Command::Reset);
         }
     });
     let (lo, hi) = attlab::state::SPEED_RANGE;
-    ui.add(egui::Slider::new(&mut app.speed, lo..=hi).logarithmic(true).text("speed ×").max_decimals(1));
+    ui.add(
+        egui::Slider::new(&mut app.speed, lo..=hi)
+            .logarithmic(true)
+            .text("speed ×")
+            .max_decimals(1),
+    );
 }
 
 fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
@@ -81,7 +107,11 @@ fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
 /// One widget for one parameter; returns the new value if the user changed it.
 fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
     let mut v = value;
-    let hint = if spec.needs_reset { format!("{} (applies at Reset)", spec.help) } else { spec.help.to_string() };
+    let hint = if spec.needs_reset {
+        format!("{} (applies at Reset)", spec.help)
+    } else {
+        spec.help.to_string()
+    };
     let response = match spec.kind {
         ParamKind::Toggle => {
             let mut on = v >= 0.5;
@@ -92,12 +122,16 @@ fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
         ParamKind::Choice(options) => {
             let mut index = v.max(0.0) as usize;
             let selected = options.get(index).copied().unwrap_or("?");
-            let r = egui::ComboBox::from_label(spec.label).selected_text(selected).show_index(ui, &mut index, options.len(), |i| options[i]);
+            let r = egui::ComboBox::from_label(spec.label)
+                .selected_text(selected)
+                .show_index(ui, &mut index, options.len(), |i| options[i]);
             v = index as f64;
             r
         }
         ParamKind::Real | ParamKind::Integer => {
-            let mut slider = egui::Slider::new(&mut v, spec.min..=spec.max).text(spec.label).logarithmic(spec.scale == Scale::Log && spec.min > 0.0);
+            let mut slider = egui::Slider::new(&mut v, spec.min..=spec.max)
+                .text(spec.label)
+                .logarithmic(spec.scale == Scale::Log && spec.min > 0.0);
             if spec.scale == Scale::Log && spec.min == 0.0 {
                 slider = slider.logarithmic(true).smallest_positive(1e-4);
             }
@@ -110,26 +144,48 @@ fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
             ui.add(slider)
         }
     };
-    let response = if hint.is_empty() { response } else { response.on_hover_text(hint) };
+    let response = if hint.is_empty() {
+        response
+    } else {
+        response.on_hover_text(hint)
+    };
     (response.changed() && v != value).then_some(v)
 }
 
 fn outputs(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
     let estimates = app.sim.estimates();
-    let with_attitude: Vec<(usize, &str)> = estimates.iter().enumerate().filter(|(_, e)| e.2.q_ref_from_body.is_some()).map(|(i, e)| (i, e.1)).collect();
+    let with_attitude: Vec<(usize, &str)> = estimates
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.2.q_ref_from_body.is_some())
+        .map(|(i, e)| (i, e.1))
+        .collect();
     if !with_attitude.is_empty() {
-        let current = with_attitude.iter().find(|(i, _)| *i == app.ghost_index).map_or("—", |x| x.1);
-        egui::ComboBox::from_label("3D ghost").selected_text(current).show_ui(ui, |ui| {
-            for (i, label) in &with_attitude {
-                ui.selectable_value(&mut app.ghost_index, *i, *label);
-            }
-        });
+        let current = with_attitude
+            .iter()
+            .find(|(i, _)| *i == app.ghost_index)
+            .map_or("—", |x| x.1);
+        egui::ComboBox::from_label("3D ghost")
+            .selected_text(current)
+            .show_ui(ui, |ui| {
+                for (i, label) in &with_attitude {
+                    ui.selectable_value(&mut app.ghost_index, *i, *label);
+                }
+            });
     }
     ui.horizontal(|ui| {
-        if ui.button("Export CSV").on_hover_text("All recorded series (the last rows kept in memory)").clicked() {
+        if ui
+            .button("Export CSV")
+            .on_hover_text("All recorded series (the last rows kept in memory)")
+            .clicked()
+        {
             commands.push(Command::ExportCsv);
         }
-        if ui.button("Copy link").on_hover_text("A link that restores lab, seed, speed and parameters").clicked() {
+        if ui
+            .button("Copy link")
+            .on_hover_text("A link that restores lab, seed, speed and parameters")
+            .clicked()
+        {
             ui.ctx().copy_text(format!("#{}", app.fragment()));
         }
     });
@@ -138,7 +194,11 @@ fn outputs(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
 fn messages(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
     for (i, m) in app.messages.iter().enumerate() {
         ui.horizontal_wrapped(|ui| {
-            let color = if m.is_error { Color32::LIGHT_RED } else { Color32::LIGHT_GREEN };
+            let color = if m.is_error {
+                Color32::LIGHT_RED
+            } else {
+                Color32::LIGHT_GREEN
+            };
             if ui.small_button("✕").clicked() {
                 commands.push(Command::Dismiss(i));
             }
@@ -148,14 +208,16 @@ fn messages(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
 }
 
 fn explanation(ui: &mut Ui, app: &mut AttLabApp) {
-    egui::CollapsingHeader::new("What am I looking at?").default_open(false).show(ui, |ui| {
-        ui.label(app.sim.lab().summary());
-        ui.add_space(4.0);
-        ui.label(RichText::new(
+    egui::CollapsingHeader::new("What am I looking at?")
+        .default_open(false)
+        .show(ui, |ui| {
+            ui.label(app.sim.lab().summary());
+            ui.add_space(4.0);
+            ui.label(RichText::new(
             "Frames: reference ζ up; body ξ′ right, η′ forward, ζ′ up. The sphere shows the \
              vertical k = (a′, b′, c′) in body axes; the ray from the pole S through k meets the \
              body plane at w = u + jv = (a′ + jb′)/(1 + c′). |w| = 1 is pitch ±90°; w → ∞ is \
              upside down, where the (u, v, z) integrator switches to s = 1/w.",
         ).small());
-    });
+        });
 }

@@ -1,7 +1,7 @@
 //! The 3D body view: a wgpu paint callback drawing the truth body and the estimate as a
 //! translucent ghost beside it, with a mouse-orbit camera.
 
-use super::mesh::{body_mesh, place, sorted_vertices, Triangle, Vertex};
+use super::mesh::{Triangle, Vertex, body_mesh, place, sorted_vertices};
 use eframe::egui_wgpu::{self, wgpu};
 use egui::{Rect, Sense, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
@@ -20,7 +20,11 @@ pub struct OrbitCamera {
 
 impl Default for OrbitCamera {
     fn default() -> Self {
-        Self { yaw_rad: -1.2, pitch_rad: 0.45, distance: 7.5 }
+        Self {
+            yaw_rad: -1.2,
+            pitch_rad: 0.45,
+            distance: 7.5,
+        }
     }
 }
 
@@ -37,7 +41,9 @@ impl OrbitCamera {
         let view = Matrix4::look_at_rh(&self.eye(), &Point3::origin(), &Vector3::z());
         let proj = Matrix4::new_perspective(aspect.max(1e-3), 40f64.to_radians(), 0.1, 100.0);
         // OpenGL clip z (−1…1) → wgpu (0…1).
-        let gl_to_wgpu = Matrix4::new(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.0, 0.0, 1.0);
+        let gl_to_wgpu = Matrix4::new(
+            1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.0, 0.0, 0.0, 1.0,
+        );
         gl_to_wgpu * proj * view
     }
 
@@ -96,14 +102,21 @@ pub fn init(render_state: &egui_wgpu::RenderState) {
         entries: &[wgpu::BindGroupLayoutEntry {
             binding: 0,
             visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
             count: None,
         }],
     });
     let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("attlab_body3d_bind_group"),
         layout: &layout,
-        entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform_buffer.as_entire_binding() }],
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: uniform_buffer.as_entire_binding(),
+        }],
     });
     let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some("attlab_body3d_pipeline_layout"),
@@ -142,15 +155,22 @@ pub fn init(render_state: &egui_wgpu::RenderState) {
     let vertex_capacity = 4096;
     let vertex_buffer = new_vertex_buffer(device, vertex_capacity);
     let srgb = render_state.target_format.is_srgb();
-    log::info!("body3d pipeline ready (target {:?}, sRGB {srgb})", render_state.target_format);
-    render_state.renderer.write().callback_resources.insert(Body3dResources {
-        pipeline,
-        bind_group,
-        uniform_buffer,
-        vertex_buffer,
-        vertex_capacity,
-        vertex_count: 0,
-    });
+    log::info!(
+        "body3d pipeline ready (target {:?}, sRGB {srgb})",
+        render_state.target_format
+    );
+    render_state
+        .renderer
+        .write()
+        .callback_resources
+        .insert(Body3dResources {
+            pipeline,
+            bind_group,
+            uniform_buffer,
+            vertex_buffer,
+            vertex_capacity,
+            vertex_count: 0,
+        });
     SRGB_TARGET.get_or_init(|| srgb);
 }
 
@@ -179,7 +199,9 @@ impl egui_wgpu::CallbackTrait for Body3dCallback {
         _encoder: &mut wgpu::CommandEncoder,
         resources: &mut egui_wgpu::CallbackResources,
     ) -> Vec<wgpu::CommandBuffer> {
-        let Some(res) = resources.get_mut::<Body3dResources>() else { return Vec::new() };
+        let Some(res) = resources.get_mut::<Body3dResources>() else {
+            return Vec::new();
+        };
         if self.vertices.len() > res.vertex_capacity {
             res.vertex_capacity = self.vertices.len().next_power_of_two();
             res.vertex_buffer = new_vertex_buffer(device, res.vertex_capacity);
@@ -192,8 +214,15 @@ impl egui_wgpu::CallbackTrait for Body3dCallback {
         Vec::new()
     }
 
-    fn paint(&self, _info: egui::PaintCallbackInfo, pass: &mut wgpu::RenderPass<'static>, resources: &egui_wgpu::CallbackResources) {
-        let Some(res) = resources.get::<Body3dResources>() else { return };
+    fn paint(
+        &self,
+        _info: egui::PaintCallbackInfo,
+        pass: &mut wgpu::RenderPass<'static>,
+        resources: &egui_wgpu::CallbackResources,
+    ) {
+        let Some(res) = resources.get::<Body3dResources>() else {
+            return;
+        };
         if res.vertex_count == 0 {
             return;
         }
@@ -219,15 +248,35 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 4.0, egui::Color32::from_rgb(16, 20, 30));
     if !gpu_ready {
-        painter.text(rect.center(), egui::Align2::CENTER_CENTER, "3D view needs the wgpu renderer", egui::FontId::proportional(14.0), egui::Color32::LIGHT_RED);
+        painter.text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            "3D view needs the wgpu renderer",
+            egui::FontId::proportional(14.0),
+            egui::Color32::LIGHT_RED,
+        );
         return;
     }
     let eye = camera.eye();
     let mut tris = Vec::with_capacity(mesh().len() * 2 + 64);
     let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
-    place(mesh(), &scene.truth, Vector3::new(0.0, -spacing, 0.0), 1.0, &eye, &mut tris);
+    place(
+        mesh(),
+        &scene.truth,
+        Vector3::new(0.0, -spacing, 0.0),
+        1.0,
+        &eye,
+        &mut tris,
+    );
     if let Some((q, _)) = scene.ghost {
-        place(mesh(), &q, Vector3::new(0.0, spacing, 0.0), 0.35, &eye, &mut tris);
+        place(
+            mesh(),
+            &q,
+            Vector3::new(0.0, spacing, 0.0),
+            0.35,
+            &eye,
+            &mut tris,
+        );
     }
     let vp = camera.view_proj(f64::from(rect.width() / rect.height().max(1.0)));
     let mut view_proj = [[0.0f32; 4]; 4];
@@ -237,14 +286,39 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         }
     }
     let srgb = SRGB_TARGET.get().copied().unwrap_or(false);
-    let uniforms = Uniforms { view_proj, light_dir: [0.4, -0.6, 0.8, 0.28], flags: [if srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0] };
-    let callback = Body3dCallback { uniforms, vertices: sorted_vertices(tris) };
+    let uniforms = Uniforms {
+        view_proj,
+        light_dir: [0.4, -0.6, 0.8, 0.28],
+        flags: [if srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0],
+    };
+    let callback = Body3dCallback {
+        uniforms,
+        vertices: sorted_vertices(tris),
+    };
     painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
     let font = egui::FontId::proportional(13.0);
     let dim = egui::Color32::from_gray(200);
-    painter.text(rect.left_top() + egui::vec2(8.0, 6.0), egui::Align2::LEFT_TOP, "truth (solid)", font.clone(), dim);
+    painter.text(
+        rect.left_top() + egui::vec2(8.0, 6.0),
+        egui::Align2::LEFT_TOP,
+        "truth (solid)",
+        font.clone(),
+        dim,
+    );
     if let Some((_, label)) = scene.ghost {
-        painter.text(rect.right_top() + egui::vec2(-8.0, 6.0), egui::Align2::RIGHT_TOP, format!("estimate (ghost): {label}"), font.clone(), dim);
+        painter.text(
+            rect.right_top() + egui::vec2(-8.0, 6.0),
+            egui::Align2::RIGHT_TOP,
+            format!("estimate (ghost): {label}"),
+            font.clone(),
+            dim,
+        );
     }
-    painter.text(rect.left_bottom() + egui::vec2(8.0, -6.0), egui::Align2::LEFT_BOTTOM, "drag to orbit · scroll to zoom · axes x red, y green, z blue", font, egui::Color32::from_gray(140));
+    painter.text(
+        rect.left_bottom() + egui::vec2(8.0, -6.0),
+        egui::Align2::LEFT_BOTTOM,
+        "drag to orbit · scroll to zoom · axes x red, y green, z blue",
+        font,
+        egui::Color32::from_gray(140),
+    );
 }

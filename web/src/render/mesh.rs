@@ -38,12 +38,30 @@ fn cuboid(center: Vector3<f64>, half: Vector3<f64>, color: [f32; 3], out: &mut V
                 p
             };
             let quad = if sign > 0.0 {
-                [corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0)]
+                [
+                    corner(-1.0, -1.0),
+                    corner(1.0, -1.0),
+                    corner(1.0, 1.0),
+                    corner(-1.0, 1.0),
+                ]
             } else {
-                [corner(-1.0, -1.0), corner(-1.0, 1.0), corner(1.0, 1.0), corner(1.0, -1.0)]
+                [
+                    corner(-1.0, -1.0),
+                    corner(-1.0, 1.0),
+                    corner(1.0, 1.0),
+                    corner(1.0, -1.0),
+                ]
             };
-            out.push(Triangle { corners: [quad[0], quad[1], quad[2]], normal: n, color });
-            out.push(Triangle { corners: [quad[0], quad[2], quad[3]], normal: n, color });
+            out.push(Triangle {
+                corners: [quad[0], quad[1], quad[2]],
+                normal: n,
+                color,
+            });
+            out.push(Triangle {
+                corners: [quad[0], quad[2], quad[3]],
+                normal: n,
+                color,
+            });
         }
     }
 }
@@ -52,12 +70,31 @@ fn cuboid(center: Vector3<f64>, half: Vector3<f64>, color: [f32; 3], out: &mut V
 /// forward axis of paper 3) and the three body axes (x red, y green, z blue).
 pub fn body_mesh() -> Vec<Triangle> {
     let mut t = Vec::new();
-    cuboid(Vector3::zeros(), Vector3::new(0.35, 0.5, 0.3), [0.78, 0.74, 0.62], &mut t);
+    cuboid(
+        Vector3::zeros(),
+        Vector3::new(0.35, 0.5, 0.3),
+        [0.78, 0.74, 0.62],
+        &mut t,
+    );
     for s in [-1.0, 1.0] {
-        cuboid(Vector3::new(s * 0.85, 0.0, 0.0), Vector3::new(0.45, 0.28, 0.02), [0.20, 0.32, 0.72], &mut t);
+        cuboid(
+            Vector3::new(s * 0.85, 0.0, 0.0),
+            Vector3::new(0.45, 0.28, 0.02),
+            [0.20, 0.32, 0.72],
+            &mut t,
+        );
     }
-    cuboid(Vector3::new(0.0, 0.62, 0.0), Vector3::new(0.08, 0.12, 0.08), [0.85, 0.55, 0.2], &mut t);
-    let axes = [(0, [0.9, 0.2, 0.2]), (1, [0.2, 0.8, 0.25]), (2, [0.25, 0.45, 1.0])];
+    cuboid(
+        Vector3::new(0.0, 0.62, 0.0),
+        Vector3::new(0.08, 0.12, 0.08),
+        [0.85, 0.55, 0.2],
+        &mut t,
+    );
+    let axes = [
+        (0, [0.9, 0.2, 0.2]),
+        (1, [0.2, 0.8, 0.25]),
+        (2, [0.25, 0.45, 1.0]),
+    ];
     for (axis, color) in axes {
         let mut c = Vector3::zeros();
         c[axis] = 0.75;
@@ -90,7 +127,11 @@ pub fn place(
         let depth = to_eye.norm();
         let color = [tri.color[0], tri.color[1], tri.color[2], alpha];
         let normal = [n.x as f32, n.y as f32, n.z as f32];
-        let v = world.map(|p| Vertex { position: [p.x as f32, p.y as f32, p.z as f32], normal, color });
+        let v = world.map(|p| Vertex {
+            position: [p.x as f32, p.y as f32, p.z as f32],
+            normal,
+            color,
+        });
         out.push((depth, v));
     }
 }
@@ -113,7 +154,10 @@ mod tests {
             let e1 = t.corners[1] - t.corners[0];
             let e2 = t.corners[2] - t.corners[0];
             let geometric = e1.cross(&e2);
-            assert!(geometric.dot(&t.normal) > 0.0, "winding disagrees with normal");
+            assert!(
+                geometric.dot(&t.normal) > 0.0,
+                "winding disagrees with normal"
+            );
         }
     }
 
@@ -121,7 +165,14 @@ mod tests {
     fn sorting_puts_far_triangles_first() {
         let eye = Point3::new(0.0, -5.0, 0.0);
         let mut tris = Vec::new();
-        place(&body_mesh(), &UnitQuaternion::identity(), Vector3::zeros(), 0.4, &eye, &mut tris);
+        place(
+            &body_mesh(),
+            &UnitQuaternion::identity(),
+            Vector3::zeros(),
+            0.4,
+            &eye,
+            &mut tris,
+        );
         let depths: Vec<f64> = {
             let mut t = tris.clone();
             t.sort_by(|a, b| b.0.total_cmp(&a.0));

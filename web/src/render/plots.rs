@@ -32,7 +32,11 @@ pub struct PlotState {
 
 impl Default for PlotState {
     fn default() -> Self {
-        Self { group: SeriesGroup::Error, log_covariance: true, show_envelope: true }
+        Self {
+            group: SeriesGroup::Error,
+            log_covariance: true,
+            show_envelope: true,
+        }
     }
 }
 
@@ -70,7 +74,14 @@ pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState
         }
     });
     let Some(t) = rec.index_of("t_s") else { return };
-    let color_of = |name: &str| source_color(sources.iter().position(|s| *s == source_of(name)).unwrap_or(0));
+    let color_of = |name: &str| {
+        source_color(
+            sources
+                .iter()
+                .position(|s| *s == source_of(name))
+                .unwrap_or(0),
+        )
+    };
     let group = state.group;
     let (log_cov, envelope) = (state.log_covariance, state.show_envelope);
     Plot::new(("series_plot", group.title()))
@@ -93,9 +104,17 @@ pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState
             if group == SeriesGroup::Error && envelope {
                 for (i, spec) in rec.specs().iter().enumerate() {
                     if spec.name.ends_with("P_axis_rad2") {
-                        let pts: Vec<[f64; 2]> = rec.decimated(t, i, MAX_POINTS).into_iter().map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt().to_degrees()]).collect();
+                        let pts: Vec<[f64; 2]> = rec
+                            .decimated(t, i, MAX_POINTS)
+                            .into_iter()
+                            .map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt().to_degrees()])
+                            .collect();
                         let name = format!("{} 3σ per axis [deg]", source_of(&spec.name));
-                        plot.line(Line::new(name, pts).color(color_of(&spec.name).gamma_multiply(0.6)).style(LineStyle::dashed_loose()));
+                        plot.line(
+                            Line::new(name, pts)
+                                .color(color_of(&spec.name).gamma_multiply(0.6))
+                                .style(LineStyle::dashed_loose()),
+                        );
                     }
                 }
             }
@@ -103,5 +122,7 @@ pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState
 }
 
 fn has_data(rec: &Recorder, name: &str) -> bool {
-    rec.index_of(name).and_then(|i| rec.column(i)).is_some_and(|c| c.iter().rev().take(64).any(|v| v.is_finite()))
+    rec.index_of(name)
+        .and_then(|i| rec.column(i))
+        .is_some_and(|c| c.iter().rev().take(64).any(|v| v.is_finite()))
 }

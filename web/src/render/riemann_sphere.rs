@@ -30,7 +30,10 @@ pub struct SphereView {
 
 impl Default for SphereView {
     fn default() -> Self {
-        Self { yaw_rad: 0.6, pitch_rad: 0.35 }
+        Self {
+            yaw_rad: 0.6,
+            pitch_rad: 0.35,
+        }
     }
 }
 
@@ -44,10 +47,19 @@ impl Projector {
     /// Screen position and whether the point is on the viewer's side.
     fn project(&self, p: &Vector3<f64>) -> (Pos2, bool) {
         let q = self.rot * p;
-        (self.center + Vec2::new(q.x as f32, -q.z as f32) * self.radius, q.y <= 0.0)
+        (
+            self.center + Vec2::new(q.x as f32, -q.z as f32) * self.radius,
+            q.y <= 0.0,
+        )
     }
 
-    fn polyline(&self, painter: &Painter, pts: impl Iterator<Item = Vector3<f64>>, front: Stroke, back: Stroke) {
+    fn polyline(
+        &self,
+        painter: &Painter,
+        pts: impl Iterator<Item = Vector3<f64>>,
+        front: Stroke,
+        back: Stroke,
+    ) {
         let mut prev: Option<(Pos2, bool)> = None;
         for p in pts {
             let cur = self.project(&p);
@@ -68,31 +80,67 @@ fn draw_grid(pr: &Projector, painter: &Painter) {
     let back = Stroke::new(0.6, Color32::from_gray(50));
     for lat_deg in [-60.0f64, -30.0, 30.0, 60.0] {
         let (s, c) = lat_deg.to_radians().sin_cos();
-        pr.polyline(painter, circle_points(|a| Vector3::new(c * a.cos(), c * a.sin(), s)), front, back);
+        pr.polyline(
+            painter,
+            circle_points(|a| Vector3::new(c * a.cos(), c * a.sin(), s)),
+            front,
+            back,
+        );
     }
     for lon_deg in [0.0f64, 30.0, 60.0, 90.0, 120.0, 150.0] {
         let (s, c) = lon_deg.to_radians().sin_cos();
-        pr.polyline(painter, circle_points(|a| Vector3::new(c * a.cos(), s * a.cos(), a.sin())), front, back);
+        pr.polyline(
+            painter,
+            circle_points(|a| Vector3::new(c * a.cos(), s * a.cos(), a.sin())),
+            front,
+            back,
+        );
     }
     // The complex plane ζ′ = 0 cuts the sphere in |w| = 1 (pitch ±90° in paper 3).
     let eq_front = Stroke::new(1.8, Color32::from_rgb(120, 160, 230));
     let eq_back = Stroke::new(1.0, Color32::from_rgb(60, 80, 120));
-    pr.polyline(painter, circle_points(|a| Vector3::new(a.cos(), a.sin(), 0.0)), eq_front, eq_back);
+    pr.polyline(
+        painter,
+        circle_points(|a| Vector3::new(a.cos(), a.sin(), 0.0)),
+        eq_front,
+        eq_back,
+    );
     let axis = Stroke::new(1.0, Color32::from_gray(140));
-    for (dir, label) in [(Vector3::x(), "ξ′ → u"), (Vector3::y(), "η′ → v"), (Vector3::z(), "ζ′")] {
+    for (dir, label) in [
+        (Vector3::x(), "ξ′ → u"),
+        (Vector3::y(), "η′ → v"),
+        (Vector3::z(), "ζ′"),
+    ] {
         let (a, _) = pr.project(&(-dir * 1.45));
         let (b, _) = pr.project(&(dir * 1.45));
         painter.line_segment([a, b], axis);
-        painter.text(b, Align2::LEFT_CENTER, label, FontId::proportional(12.0), Color32::from_gray(180));
+        painter.text(
+            b,
+            Align2::LEFT_CENTER,
+            label,
+            FontId::proportional(12.0),
+            Color32::from_gray(180),
+        );
     }
     let (s, _) = pr.project(&Vector3::new(0.0, 0.0, -1.0));
     painter.circle_filled(s, 4.0, Color32::from_rgb(230, 200, 80));
-    painter.text(s + Vec2::new(6.0, 2.0), Align2::LEFT_TOP, "S (pole of w)", FontId::proportional(12.0), Color32::from_rgb(230, 200, 80));
+    painter.text(
+        s + Vec2::new(6.0, 2.0),
+        Align2::LEFT_TOP,
+        "S (pole of w)",
+        FontId::proportional(12.0),
+        Color32::from_rgb(230, 200, 80),
+    );
 }
 
 fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
     let faint = track.color.gamma_multiply(0.35);
-    pr.polyline(painter, track.k_body.iter().copied(), Stroke::new(1.6, track.color), Stroke::new(1.0, faint));
+    pr.polyline(
+        painter,
+        track.k_body.iter().copied(),
+        Stroke::new(1.6, track.color),
+        Stroke::new(1.0, faint),
+    );
     let Some(k) = track.k_body.last() else { return };
     let (p, front) = pr.project(k);
     painter.circle_filled(p, if front { 5.0 } else { 3.5 }, track.color);
@@ -100,7 +148,11 @@ fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
     let south = Vector3::new(0.0, 0.0, -1.0);
     if 1.0 + k.z > 0.2 {
         let w = Vector3::new(k.x / (1.0 + k.z), k.y / (1.0 + k.z), 0.0);
-        let end = if w.norm() > 2.5 { w * (2.5 / w.norm()) } else { w };
+        let end = if w.norm() > 2.5 {
+            w * (2.5 / w.norm())
+        } else {
+            w
+        };
         let (a, _) = pr.project(&south);
         let (b, _) = pr.project(&end);
         painter.line_segment([a, b], Stroke::new(1.0, track.color.gamma_multiply(0.8)));
@@ -109,7 +161,13 @@ fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
 }
 
 /// Draws the sphere in `rect`; drag turns it.
-pub fn show_sphere(ui: &mut Ui, rect: Rect, view: &mut SphereView, tracks: &[SphereTrack], caption: &str) {
+pub fn show_sphere(
+    ui: &mut Ui,
+    rect: Rect,
+    view: &mut SphereView,
+    tracks: &[SphereTrack],
+    caption: &str,
+) {
     let response = ui.allocate_rect(rect, Sense::drag());
     if response.dragged() {
         let d = response.drag_delta();
@@ -119,31 +177,70 @@ pub fn show_sphere(ui: &mut Ui, rect: Rect, view: &mut SphereView, tracks: &[Sph
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 4.0, Color32::from_rgb(16, 20, 30));
     let radius = 0.33 * rect.width().min(rect.height() * 1.1);
-    let rot = Rotation3::from_axis_angle(&Vector3::x_axis(), view.pitch_rad) * Rotation3::from_axis_angle(&Vector3::z_axis(), view.yaw_rad);
-    let pr = Projector { rot, center: rect.center() + Vec2::new(0.0, 8.0), radius };
-    painter.circle(pr.center, radius, Color32::from_rgba_unmultiplied(60, 80, 120, 40), Stroke::new(1.2, Color32::from_gray(120)));
+    let rot = Rotation3::from_axis_angle(&Vector3::x_axis(), view.pitch_rad)
+        * Rotation3::from_axis_angle(&Vector3::z_axis(), view.yaw_rad);
+    let pr = Projector {
+        rot,
+        center: rect.center() + Vec2::new(0.0, 8.0),
+        radius,
+    };
+    painter.circle(
+        pr.center,
+        radius,
+        Color32::from_rgba_unmultiplied(60, 80, 120, 40),
+        Stroke::new(1.2, Color32::from_gray(120)),
+    );
     draw_grid(&pr, &painter);
     for t in tracks {
         draw_track(&pr, &painter, t);
     }
-    painter.text(rect.left_top() + Vec2::new(8.0, 6.0), Align2::LEFT_TOP, "Riemann sphere: vertical k in body axes", FontId::proportional(13.0), Color32::from_gray(210));
-    painter.text(rect.left_bottom() + Vec2::new(8.0, -6.0), Align2::LEFT_BOTTOM, caption, FontId::proportional(12.0), Color32::from_rgb(230, 200, 80));
+    painter.text(
+        rect.left_top() + Vec2::new(8.0, 6.0),
+        Align2::LEFT_TOP,
+        "Riemann sphere: vertical k in body axes",
+        FontId::proportional(13.0),
+        Color32::from_gray(210),
+    );
+    painter.text(
+        rect.left_bottom() + Vec2::new(8.0, -6.0),
+        Align2::LEFT_BOTTOM,
+        caption,
+        FontId::proportional(12.0),
+        Color32::from_rgb(230, 200, 80),
+    );
 }
 
 /// The complex plane with the w trajectories and the unit circle |w| = 1.
 pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
-    let circle: PlotPoints<'_> = (0..=96).map(|i| { let a = f64::from(i) * std::f64::consts::TAU / 96.0; [a.cos(), a.sin()] }).collect();
+    let circle: PlotPoints<'_> = (0..=96)
+        .map(|i| {
+            let a = f64::from(i) * std::f64::consts::TAU / 96.0;
+            [a.cos(), a.sin()]
+        })
+        .collect();
     Plot::new("w_plane")
         .data_aspect(1.0)
         .legend(Legend::default())
         .x_axis_label("u = Re w")
         .y_axis_label("v = Im w")
         .show(ui, |plot| {
-            plot.line(Line::new("|w| = 1", circle).color(Color32::from_rgb(120, 160, 230)).width(1.0));
+            plot.line(
+                Line::new("|w| = 1", circle)
+                    .color(Color32::from_rgb(120, 160, 230))
+                    .width(1.0),
+            );
             for t in tracks {
-                let pts: Vec<[f64; 2]> = t.w.iter().copied().filter(|p| p[0].is_finite() && p[1].is_finite() && p[0].hypot(p[1]) < 50.0).collect();
+                let pts: Vec<[f64; 2]> =
+                    t.w.iter()
+                        .copied()
+                        .filter(|p| p[0].is_finite() && p[1].is_finite() && p[0].hypot(p[1]) < 50.0)
+                        .collect();
                 if let Some(last) = pts.last().copied() {
-                    plot.points(Points::new(t.name.clone(), vec![last]).radius(4.0).color(t.color));
+                    plot.points(
+                        Points::new(t.name.clone(), vec![last])
+                            .radius(4.0)
+                            .color(t.color),
+                    );
                 }
                 plot.line(Line::new(t.name.clone(), pts).color(t.color));
             }

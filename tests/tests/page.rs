@@ -1,0 +1,339 @@
+//! Page test: loads the built site in headless Chromium through chromedriver (W3C WebDriver
+//! over HTTP), waits until the app has drawn frames, fails on app errors, severe console
+//! entries or panics, and checks that a screenshot is not blank.
+//!
+//! Ignored in the normal run: `cargo xtask test` builds `dist/`, serves it and runs
+//! `cargo test -p attlab-tests --test page -- --ignored --nocapture` with `ATTLAB_PAGE_URL`.
+#![cfg(not(target_arch = "wasm32"))]
+
+use base64::Engine as _;
+use serde_json::{Value, json};
+use std::collections::HashSet;
+use std::net::TcpListener;
+use std::path::PathBuf;
+use std::process::{Child, Command, Stdio};
+use std::thread::sleep;
+use std::time::{Duration, Instant};
+
+/// The real Chromium binary (`/usr/bin/chromium` is a wrapper script).
+const CHROMIUM: &str = "/usr/lib/chromium/chromium";
+/// Debian's chromedriver; `CHROMEDRIVER` overrides it.
+const DEFAULT_CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+/// Headless flags: software WebGL2 (SwiftShader), no network chatter, fixed window.
+const CHROMIUM_ARGS: &[&str] = &[
+    "--headless=new",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-dev-shm-usage",
+    "--enable-unsafe-swiftshader",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--window-size=1280,800",
+];
+/// Frames the app must have drawn.
+const MIN_FRAMES: f64 = 30.0;
+/// How long to wait for those frames.
+const FRAME_TIMEOUT: Duration = Duration::from_secs(60);
+/// Screenshot checks: a blank or near-blank canvas fails them.
+const MIN_LUMA_STD_DEV: f64 = 5.0;
+/// Fewest distinct RGB colours the screenshot must have.
+const MIN_DISTINCT_COLOURS: usize = 64;
+/// Reads `window.attlabStatus` as JSON text (or null before the app runs).
+const STATUS_SCRIPT: &str =
+    "return window.attlabStatus ? JSON.stringify(window.attlabStatus) : null;";
+
+/// The workspace's `target/page-test/` folder (screenshot and chromedriver log).
+fn out_dir() -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let dir = root.join("target").join("page-test");
+    std::fs::create_dir_all(&dir).expect("create target/page-test");
+    dir.canonicalize().unwrap_or(dir)
+}
+
+/// A free loopback port (bound, then released for chromedriver).
+fn free_port() -> u16 {
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind a loopback port");
+    listener.local_addr().expect("local address").port()
+}
+
+/// A chromedriver child process, killed on drop, and an HTTP client for it.
+struct Driver {
+    child: Child,
+    base: String,
+    agent: ureq::Agent,
+}
+
+impl Driver {
+    /// Starts chromedriver on a free port and waits until it reports ready.
+    fn start() -> Driver {
+        let exe = std::env::var("CHROMEDRIVER").unwrap_or_else(|_| DEFAULT_CHROMEDRIVER.into());
+        let port = free_port();
+        let log = out_dir().join("chromedriver.log");
+        let child = Command::new(&exe)
+            .arg(format!("--port={port}"))
+            .arg(format!("--log-path={}", log.display()))
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap_or_else(|e| panic!("cannot start {exe}: {e}"));
+        let agent = ureq::AgentBuilder::new()
+            .timeout(Duration::from_secs(120))
+            .build();
+        let driver = Driver {
+            child,
+            base: format!("http://127.0.0.1:{port}"),
+            agent,
+        };
+        let deadline = Instant::now() + Duration::from_secs(20);
+        loop {
+            let ready = driver
+                .call("GET", "/status", None)
+                .is_ok_and(|v| v["ready"] == true);
+            if ready {
+                return driver;
+            }
+            assert!(
+                Instant::now() < deadline,
+                "chromedriver did not get ready on port {port}"
+            );
+            sleep(Duration::from_millis(100));
+        }
+    }
+
+    /// One WebDriver call; returns the response's `value`.
+    fn call(&self, method: &str, path: &str, body: Option<&Value>) -> Result<Value, String> {
+        let request = self.agent.request(method, &format!("{}{path}", self.base));
+        let response = match body {
+            Some(body) => request.send_json(body),
+            None => request.call(),
+        };
+        match response {
+            Ok(response) => response
+                .into_json::<Value>()
+                .map(|mut v| v["value"].take())
+                .map_err(|e| format!("{method} {path}: bad JSON: {e}")),
+            Err(ureq::Error::Status(code, response)) => {
+                let text = response.into_string().unwrap_or_default();
+                Err(format!("{method} {path}: HTTP {code}: {text}"))
+            }
+            Err(e) => Err(format!("{method} {path}: {e}")),
+        }
+    }
+}
+
+impl Drop for Driver {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// A browser session, deleted on drop (which also closes Chromium).
+struct Session<'a> {
+    driver: &'a Driver,
+    id: String,
+}
+
+impl<'a> Session<'a> {
+    /// Opens headless Chromium with browser console logging on.
+    fn new(driver: &'a Driver) -> Session<'a> {
+        let caps = json!({ "capabilities": { "alwaysMatch": {
+            "browserName": "chrome",
+            "goog:chromeOptions": { "binary": CHROMIUM, "args": CHROMIUM_ARGS },
+            "goog:loggingPrefs": { "browser": "ALL" },
+        }}});
+        let value = driver
+            .call("POST", "/session", Some(&caps))
+            .expect("new session");
+        let id = value["sessionId"].as_str().expect("session id").to_string();
+        let version = &value["capabilities"]["browserVersion"];
+        println!("page test: Chromium {version}, session {id}");
+        Session { driver, id }
+    }
+
+    /// A call on this session (`path` is relative to `/session/{id}`).
+    fn call(&self, method: &str, path: &str, body: Option<&Value>) -> Result<Value, String> {
+        self.driver
+            .call(method, &format!("/session/{}{path}", self.id), body)
+    }
+
+    /// Runs a synchronous script and returns its result.
+    fn execute(&self, script: &str) -> Result<Value, String> {
+        self.call(
+            "POST",
+            "/execute/sync",
+            Some(&json!({ "script": script, "args": [] })),
+        )
+    }
+
+    /// The browser console entries since the last call (chromedriver's log endpoint).
+    fn console(&self) -> Result<Vec<Value>, String> {
+        let value = self.call("POST", "/se/log", Some(&json!({ "type": "browser" })))?;
+        value
+            .as_array()
+            .cloned()
+            .ok_or_else(|| format!("log is not an array: {value}"))
+    }
+
+    /// A PNG screenshot of the viewport.
+    fn screenshot(&self) -> Result<Vec<u8>, String> {
+        let value = self.call("GET", "/screenshot", None)?;
+        let text = value.as_str().ok_or("screenshot is not a string")?;
+        base64::engine::general_purpose::STANDARD
+            .decode(text)
+            .map_err(|e| e.to_string())
+    }
+}
+
+impl Drop for Session<'_> {
+    fn drop(&mut self) {
+        if let Err(e) = self
+            .driver
+            .call("DELETE", &format!("/session/{}", self.id), None)
+        {
+            eprintln!("page test: deleting the session failed: {e}");
+        }
+    }
+}
+
+/// Polls `window.attlabStatus` until it reports `MIN_FRAMES` frames or the timeout passes.
+/// Returns the last status seen (`Null` if the app never set one).
+fn wait_for_frames(session: &Session<'_>) -> Value {
+    let start = Instant::now();
+    let mut status = Value::Null;
+    while start.elapsed() < FRAME_TIMEOUT {
+        match session.execute(STATUS_SCRIPT) {
+            Ok(Value::String(text)) => status = serde_json::from_str(&text).unwrap_or(Value::Null),
+            Ok(_) => {}
+            Err(e) => println!("page test: reading attlabStatus failed: {e}"),
+        }
+        if status["frames"].as_f64().is_some_and(|f| f >= MIN_FRAMES) {
+            println!(
+                "page test: {MIN_FRAMES} frames after {:.1} s",
+                start.elapsed().as_secs_f64()
+            );
+            break;
+        }
+        sleep(Duration::from_millis(250));
+    }
+    status
+}
+
+/// Problems with the app's own status object.
+fn status_problems(status: &Value) -> Vec<String> {
+    let mut problems = Vec::new();
+    let frames = status["frames"].as_f64().unwrap_or(0.0);
+    if frames < MIN_FRAMES {
+        problems.push(format!(
+            "only {frames} frames drawn in {FRAME_TIMEOUT:?} (want {MIN_FRAMES})"
+        ));
+    }
+    match status["errors"].as_array() {
+        Some(errors) if errors.is_empty() => {}
+        Some(errors) => problems.push(format!("attlabStatus.errors is not empty: {errors:?}")),
+        None => problems.push("attlabStatus.errors is missing".into()),
+    }
+    problems
+}
+
+/// Prints console entries; returns problems for SEVERE entries and panics.
+fn console_problems(entries: &[Value]) -> Vec<String> {
+    println!("page test: {} console entries", entries.len());
+    let mut problems = Vec::new();
+    for entry in entries {
+        let level = entry["level"].as_str().unwrap_or("?");
+        let message = entry["message"].as_str().unwrap_or("");
+        println!("  console [{level}] {message}");
+        if level == "SEVERE" || message.contains("panicked") {
+            problems.push(format!("console [{level}] {message}"));
+        }
+    }
+    problems
+}
+
+/// Decodes a PNG into 8-bit RGB pixels.
+fn rgb_pixels(png_bytes: &[u8]) -> Result<Vec<[u8; 3]>, String> {
+    let mut decoder = png::Decoder::new(png_bytes);
+    decoder.set_transformations(png::Transformations::normalize_to_color8());
+    let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
+    let mut buffer = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buffer).map_err(|e| e.to_string())?;
+    let channels = info.color_type.samples();
+    let pixels = buffer[..info.buffer_size()]
+        .chunks_exact(channels)
+        .map(|p| match channels {
+            1 | 2 => [p[0], p[0], p[0]],
+            _ => [p[0], p[1], p[2]],
+        });
+    Ok(pixels.collect())
+}
+
+/// Checks the screenshot is not blank; prints its statistics.
+fn screenshot_problems(png_bytes: &[u8]) -> Vec<String> {
+    let pixels = match rgb_pixels(png_bytes) {
+        Ok(pixels) if !pixels.is_empty() => pixels,
+        Ok(_) => return vec!["the screenshot has no pixels".into()],
+        Err(e) => return vec![format!("the screenshot is not a PNG: {e}")],
+    };
+    let luma =
+        |p: &[u8; 3]| 0.299 * f64::from(p[0]) + 0.587 * f64::from(p[1]) + 0.114 * f64::from(p[2]);
+    #[allow(clippy::cast_precision_loss)]
+    let n = pixels.len() as f64;
+    let mean = pixels.iter().map(luma).sum::<f64>() / n;
+    let std_dev = (pixels.iter().map(|p| (luma(p) - mean).powi(2)).sum::<f64>() / n).sqrt();
+    let colours = pixels.iter().collect::<HashSet<_>>().len();
+    println!(
+        "page test: screenshot luma mean {mean:.1}, std dev {std_dev:.1}, {colours} distinct colours"
+    );
+    let mut problems = Vec::new();
+    if std_dev < MIN_LUMA_STD_DEV {
+        problems.push(format!(
+            "screenshot looks blank: luma std dev {std_dev:.2} < {MIN_LUMA_STD_DEV}"
+        ));
+    }
+    if colours < MIN_DISTINCT_COLOURS {
+        problems.push(format!(
+            "screenshot has only {colours} colours (want {MIN_DISTINCT_COLOURS})"
+        ));
+    }
+    problems
+}
+
+/// Loads the page, waits for frames, and checks status, console and screenshot.
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
+fn page_renders_without_errors() {
+    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
+    let driver = Driver::start();
+    let session = Session::new(&driver);
+    session
+        .call("POST", "/url", Some(&json!({ "url": url })))
+        .expect("navigate");
+    println!("page test: loaded {url}");
+    let status = wait_for_frames(&session);
+    println!("page test: attlabStatus = {status}");
+    let mut problems = status_problems(&status);
+    match session.console() {
+        Ok(entries) => problems.extend(console_problems(&entries)),
+        Err(e) => problems.push(format!("reading the console log failed: {e}")),
+    }
+    match session.screenshot() {
+        Ok(png_bytes) => {
+            let path = out_dir().join("screenshot.png");
+            std::fs::write(&path, &png_bytes).expect("save the screenshot");
+            println!("page test: screenshot saved to {}", path.display());
+            problems.extend(screenshot_problems(&png_bytes));
+        }
+        Err(e) => problems.push(format!("taking a screenshot failed: {e}")),
+    }
+    drop(session);
+    assert!(
+        problems.is_empty(),
+        "page test failed:\n  - {}",
+        problems.join("\n  - ")
+    );
+}

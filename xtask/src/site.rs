@@ -1,0 +1,193 @@
+//! Builds the static site in `dist/`: the release wasm (`web` profile), `wasm-bindgen`,
+//! `wasm-opt -O2` (cached by input hash), `index.html` and `assets/`.
+
+use crate::cmd::{self, Result};
+use crate::{tools, wasm};
+use flate2::Compression;
+use flate2::write::GzEncoder;
+use sha2::{Digest, Sha256};
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// The web crate's package name.
+const WEB_PACKAGE: &str = "attlab-web";
+/// The web crate's library name (the wasm file stem).
+const WEB_LIB: &str = "attlab_web";
+/// The cargo profile for the page build (defined in the root Cargo.toml).
+const WEB_PROFILE: &str = "web";
+/// The optimisation level passed to `wasm-opt`.
+const OPT_LEVEL: &str = "-O2";
+
+/// The `dist/` folder.
+pub fn dist_dir() -> PathBuf {
+    cmd::root().join("dist")
+}
+
+/// Builds the whole site into `dist/` and returns that folder. `optimise` runs `wasm-opt`.
+pub fn build(optimise: bool) -> Result<PathBuf> {
+    tools::ensure_wasm_tools(optimise)?;
+    let raw = build_wasm()?;
+    let dist = dist_dir();
+    if dist.exists() {
+        fs::remove_dir_all(&dist).map_err(|e| format!("removing {}: {e}", dist.display()))?;
+    }
+    let pkg = dist.join("pkg");
+    bindgen(&raw, &pkg)?;
+    let bg = pkg.join(format!("{WEB_LIB}_bg.wasm"));
+    if optimise {
+        optimise_wasm(&raw, &bg)?;
+    } else {
+        println!("xtask: --no-opt: skipping wasm-opt");
+    }
+    copy_file(&cmd::root().join("index.html"), &dist.join("index.html"))?;
+    let assets = cmd::root().join("assets");
+    if assets.is_dir() {
+        copy_dir(&assets, &dist.join("assets"))?;
+    }
+    report_size(&bg)?;
+    println!("xtask: site ready in {}", dist.display());
+    Ok(dist)
+}
+
+/// `cargo build --profile web --target wasm32-unknown-unknown -p attlab-web`.
+fn build_wasm() -> Result<PathBuf> {
+    let mut build = cmd::cargo();
+    build.args([
+        "build",
+        "--profile",
+        WEB_PROFILE,
+        "--target",
+        tools::WASM_TARGET,
+    ]);
+    build.args(["-p", WEB_PACKAGE, "--lib"]);
+    cmd::run(&mut build)?;
+    let wasm = cmd::target_dir()
+        .join(tools::WASM_TARGET)
+        .join(WEB_PROFILE)
+        .join(format!("{WEB_LIB}.wasm"));
+    if wasm.is_file() {
+        Ok(wasm)
+    } else {
+        Err(format!("the build did not produce {}", wasm.display()).into())
+    }
+}
+
+/// `wasm-bindgen --target web --no-typescript --remove-name-section --out-dir <pkg> <wasm>`.
+fn bindgen(wasm: &Path, pkg: &Path) -> Result<()> {
+    let mut bindgen = cmd::new("wasm-bindgen");
+    bindgen
+        .args([
+            "--target",
+            "web",
+            "--no-typescript",
+            "--remove-name-section",
+        ])
+        .arg("--out-dir")
+        .arg(pkg)
+        .arg(wasm);
+    cmd::run(&mut bindgen)
+}
+
+/// Runs `wasm-opt` on `bg` in place, reusing a cached output when the input is unchanged.
+/// The feature flags come from the `target_features` section of rustc's output `raw`.
+fn optimise_wasm(raw: &Path, bg: &Path) -> Result<()> {
+    let raw_bytes = read(raw)?;
+    let (flags, unknown) = wasm::opt_flags(&raw_bytes);
+    if !unknown.is_empty() {
+        println!("xtask: warning: wasm-opt has no flag for wasm features {unknown:?}");
+    }
+    let input = read(bg)?;
+    let mut hasher = Sha256::new();
+    hasher.update(&input);
+    hasher.update(OPT_LEVEL.as_bytes());
+    for flag in &flags {
+        hasher.update(flag.as_bytes());
+    }
+    hasher.update(tools::BINARYEN_VERSION.as_bytes());
+    let key: String = hasher
+        .finalize()
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    let cache_dir = cmd::target_dir().join("wasm-opt-cache");
+    let cached = cache_dir.join(format!("{key}.wasm"));
+    if cached.is_file() {
+        println!("xtask: wasm-opt: cached output {}", cached.display());
+        return copy_file(&cached, bg);
+    }
+    fs::create_dir_all(&cache_dir).map_err(|e| format!("creating {}: {e}", cache_dir.display()))?;
+    let partial = cache_dir.join(format!("{key}.partial.wasm"));
+    println!("xtask: wasm-opt {OPT_LEVEL} (takes a few minutes; cached afterwards)");
+    let mut opt = cmd::new(tools::wasm_opt());
+    opt.arg(OPT_LEVEL)
+        .args(&flags)
+        .arg(bg)
+        .arg("-o")
+        .arg(&partial);
+    cmd::run(&mut opt)?;
+    fs::rename(&partial, &cached).map_err(|e| format!("caching {}: {e}", cached.display()))?;
+    copy_file(&cached, bg)
+}
+
+/// Prints the size of `wasm`, raw and gzipped at the best compression level.
+fn report_size(wasm: &Path) -> Result<()> {
+    let bytes = read(wasm)?;
+    let mut gz = GzEncoder::new(Vec::new(), Compression::best());
+    gz.write_all(&bytes)?;
+    let gz = gz.finish()?;
+    println!(
+        "xtask: {}: {} raw, {} gzipped",
+        wasm.file_name().unwrap_or_default().to_string_lossy(),
+        human(bytes.len()),
+        human(gz.len())
+    );
+    Ok(())
+}
+
+/// `1234567` → `"1234567 B (1.18 MiB)"`.
+fn human(bytes: usize) -> String {
+    #[allow(clippy::cast_precision_loss)]
+    let mib = bytes as f64 / (1024.0 * 1024.0);
+    format!("{bytes} B ({mib:.2} MiB)")
+}
+
+/// Reads a whole file, with the path in the error.
+fn read(path: &Path) -> Result<Vec<u8>> {
+    fs::read(path).map_err(|e| format!("reading {}: {e}", path.display()).into())
+}
+
+/// Copies one file, creating the destination folder.
+fn copy_file(from: &Path, to: &Path) -> Result<()> {
+    if let Some(parent) = to.parent() {
+        fs::create_dir_all(parent).map_err(|e| format!("creating {}: {e}", parent.display()))?;
+    }
+    fs::copy(from, to)
+        .map_err(|e| format!("copying {} to {}: {e}", from.display(), to.display()))?;
+    Ok(())
+}
+
+/// Copies a folder tree.
+fn copy_dir(from: &Path, to: &Path) -> Result<()> {
+    let entries = fs::read_dir(from).map_err(|e| format!("reading {}: {e}", from.display()))?;
+    for entry in entries {
+        let entry = entry?;
+        let target = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &target)?;
+        } else {
+            copy_file(&entry.path(), &target)?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::human;
+
+    #[test]
+    fn human_sizes() {
+        assert_eq!(human(1024 * 1024), "1048576 B (1.00 MiB)");
+    }
+}

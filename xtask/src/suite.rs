@@ -1,0 +1,241 @@
+//! `cargo xtask test`: every check, in order, stopping at the first failure, then a summary
+//! table and the plain closing line `N passed, M failed`.
+
+use crate::cmd::{self, Result};
+use crate::{serve, site, tools};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Test counts from cargo's `test result:` lines.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// Tests that passed.
+    pub passed: u64,
+    /// Tests that failed.
+    pub failed: u64,
+    /// Tests that were ignored.
+    pub ignored: u64,
+}
+
+impl Counts {
+    /// Adds another set of counts to this one.
+    fn add(&mut self, other: Counts) {
+        self.passed += other.passed;
+        self.failed += other.failed;
+        self.ignored += other.ignored;
+    }
+}
+
+/// Sums every `test result: … N passed; M failed; K ignored; …` line in `output`.
+/// `None` when there is no such line.
+pub fn parse_counts(output: &str) -> Option<Counts> {
+    let mut total: Option<Counts> = None;
+    for line in output.lines() {
+        let Some(rest) = line.trim().strip_prefix("test result:") else {
+            continue;
+        };
+        let words: Vec<&str> = rest
+            .split([' ', ';', ','])
+            .filter(|w| !w.is_empty())
+            .collect();
+        let mut counts = Counts::default();
+        for pair in words.windows(2) {
+            let Ok(n) = pair[0].parse::<u64>() else {
+                continue;
+            };
+            match pair[1] {
+                "passed" => counts.passed += n,
+                "failed" => counts.failed += n,
+                "ignored" => counts.ignored += n,
+                _ => {}
+            }
+        }
+        total.get_or_insert_with(Counts::default).add(counts);
+    }
+    total
+}
+
+/// One finished step of the run.
+struct StepResult {
+    name: String,
+    ok: bool,
+    counts: Option<Counts>,
+    took: Duration,
+}
+
+/// The steps run so far.
+#[derive(Default)]
+struct Suite {
+    steps: Vec<StepResult>,
+}
+
+impl Suite {
+    /// Runs a step that is not a test suite; its error stops the run.
+    fn step<T>(&mut self, name: &str, body: impl FnOnce() -> Result<T>) -> Result<T> {
+        banner(name);
+        let start = Instant::now();
+        let result = body();
+        self.record(name, result.is_ok(), None, start);
+        result.map_err(|e| format!("step `{name}` failed: {e}").into())
+    }
+
+    /// Runs a command as a plain check (fmt, clippy).
+    fn check(&mut self, name: &str, mut command: Command) -> Result<()> {
+        self.step(name, || cmd::run(&mut command))
+    }
+
+    /// Runs a `cargo test` command, counting its results.
+    fn tests(&mut self, name: &str, mut command: Command) -> Result<()> {
+        banner(name);
+        let start = Instant::now();
+        let (ok, output) = match cmd::run_tee(&mut command) {
+            Ok(done) => done,
+            Err(e) => {
+                self.record(name, false, None, start);
+                return Err(e);
+            }
+        };
+        let counts = parse_counts(&output);
+        self.record(name, ok, counts, start);
+        if ok {
+            Ok(())
+        } else {
+            Err(format!(
+                "step `{name}` failed: `{}` exited non-zero",
+                cmd::describe(&command)
+            )
+            .into())
+        }
+    }
+
+    /// Records a finished step.
+    fn record(&mut self, name: &str, ok: bool, counts: Option<Counts>, start: Instant) {
+        let took = start.elapsed();
+        self.steps.push(StepResult {
+            name: name.to_string(),
+            ok,
+            counts,
+            took,
+        });
+    }
+
+    /// Prints the table and the closing `N passed, M failed` line. A failed step without
+    /// failed tests of its own (fmt, clippy, a build error) counts as one failure.
+    fn print_summary(&self, total_time: Duration) {
+        println!();
+        println!(
+            "{:<34} {:>6} {:>7} {:>7} {:>8} {:>7}",
+            "step", "result", "passed", "failed", "ignored", "time"
+        );
+        let mut total = Counts::default();
+        for step in &self.steps {
+            let mut counts = step.counts.unwrap_or_default();
+            if !step.ok && counts.failed == 0 {
+                counts.failed = 1;
+            }
+            total.add(counts);
+            let cell = |n: u64| {
+                if step.counts.is_some() || !step.ok {
+                    n.to_string()
+                } else {
+                    "-".into()
+                }
+            };
+            println!(
+                "{:<34} {:>6} {:>7} {:>7} {:>8} {:>6}s",
+                step.name,
+                if step.ok { "ok" } else { "FAILED" },
+                cell(counts.passed),
+                cell(counts.failed),
+                cell(counts.ignored),
+                step.took.as_secs()
+            );
+        }
+        println!(
+            "{:<34} {:>6} {:>7} {:>7} {:>8} {:>6}s",
+            "total",
+            "",
+            total.passed,
+            total.failed,
+            total.ignored,
+            total_time.as_secs()
+        );
+        println!();
+        println!("{} passed, {} failed", total.passed, total.failed);
+    }
+}
+
+/// Prints a step heading.
+fn banner(name: &str) {
+    println!("\n==== xtask test: {name} ====");
+}
+
+/// A cargo command from space-separated arguments, with no stdin.
+fn cargo(args: &str) -> Command {
+    let mut command = cmd::cargo();
+    command.args(args.split_whitespace()).stdin(Stdio::null());
+    command
+}
+
+/// Runs everything; prints the summary whatever happens.
+pub fn run() -> Result<()> {
+    let start = Instant::now();
+    let mut suite = Suite::default();
+    let outcome = run_steps(&mut suite);
+    suite.print_summary(start.elapsed());
+    outcome
+}
+
+/// The steps, in order; the first failure stops the run.
+fn run_steps(suite: &mut Suite) -> Result<()> {
+    suite.step("install missing tools", || {
+        tools::ensure_components()?;
+        tools::ensure_browser()?;
+        tools::ensure_wasm_tools(true)
+    })?;
+    suite.check("fmt", cargo("fmt --all -- --check"))?;
+    let native_clippy = "clippy --workspace --all-targets -- -D warnings";
+    suite.check("clippy (native)", cargo(native_clippy))?;
+    // Every target but benches and examples: the criterion benches are native-only.
+    let wasm_clippy = format!(
+        "clippy --target {} -p attlab -p attlab-web -p attlab-tests --lib --bins --tests \
+         -- -D warnings",
+        tools::WASM_TARGET
+    );
+    suite.check("clippy (wasm)", cargo(&wasm_clippy))?;
+    suite.tests("test (native)", cargo("test --workspace --no-fail-fast"))?;
+    let mut browser = cargo(&format!(
+        "test --target {} -p attlab-tests",
+        tools::WASM_TARGET
+    ));
+    browser.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    suite.tests("test (wasm, headless Chromium)", browser)?;
+    let dist = suite.step("build site (dist/)", || site::build(true))?;
+    let server = suite.step("serve dist/", || serve::start(&dist, 0))?;
+    println!("xtask: serving {} at {}", dist.display(), server.url());
+    let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture");
+    page.env("ATTLAB_PAGE_URL", server.url());
+    page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    suite.tests("page (headless Chromium)", page)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sums_result_lines() {
+        let out = "running 2 tests\n\
+            test result: ok. 5 passed; 0 failed; 1 ignored; 0 measured; 0 filtered out; finished in 0.01s\n\
+            noise\n   test result: FAILED. 2 passed; 3 failed; 0 ignored; 0 measured; 0 filtered out\n";
+        assert_eq!(
+            parse_counts(out),
+            Some(Counts {
+                passed: 7,
+                failed: 3,
+                ignored: 1
+            })
+        );
+        assert_eq!(parse_counts("no tests here"), None);
+    }
+}
