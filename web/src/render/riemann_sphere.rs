@@ -210,6 +210,25 @@ pub fn show_sphere(
     );
 }
 
+/// Largest |w| drawn on the complex plane: beyond it the point is near the pole S and the
+/// trajectory is broken rather than stretching the view.
+const PLANE_LIMIT: f64 = 4.0;
+
+/// Splits a w trajectory into pieces that stay within [`PLANE_LIMIT`].
+fn plane_segments(w: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
+    let mut out = vec![Vec::new()];
+    for p in w {
+        let inside = p[0].is_finite() && p[1].is_finite() && p[0].hypot(p[1]) <= PLANE_LIMIT;
+        match (inside, out.last_mut()) {
+            (true, Some(seg)) => seg.push(*p),
+            (false, Some(seg)) if !seg.is_empty() => out.push(Vec::new()),
+            _ => {}
+        }
+    }
+    out.retain(|s| !s.is_empty());
+    out
+}
+
 /// The complex plane with the w trajectories and the unit circle |w| = 1.
 pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
     let circle: PlotPoints<'_> = (0..=96)
@@ -221,6 +240,10 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
     Plot::new("w_plane")
         .data_aspect(1.0)
         .legend(Legend::default())
+        .include_x(-2.0)
+        .include_x(2.0)
+        .include_y(-2.0)
+        .include_y(2.0)
         .x_axis_label("u = Re w")
         .y_axis_label("v = Im w")
         .show(ui, |plot| {
@@ -230,19 +253,42 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
                     .width(1.0),
             );
             for t in tracks {
-                let pts: Vec<[f64; 2]> =
-                    t.w.iter()
+                if let Some(last) =
+                    t.w.last()
                         .copied()
-                        .filter(|p| p[0].is_finite() && p[1].is_finite() && p[0].hypot(p[1]) < 50.0)
-                        .collect();
-                if let Some(last) = pts.last().copied() {
+                        .filter(|p| p[0].hypot(p[1]) <= PLANE_LIMIT)
+                {
                     plot.points(
                         Points::new(t.name.clone(), vec![last])
                             .radius(4.0)
                             .color(t.color),
                     );
                 }
-                plot.line(Line::new(t.name.clone(), pts).color(t.color));
+                for seg in plane_segments(&t.w) {
+                    plot.line(Line::new(t.name.clone(), seg).color(t.color));
+                }
             }
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn trajectories_break_where_w_leaves_the_plane() {
+        let w = [
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [10.0, 0.0],
+            [f64::NAN, 0.0],
+            [1.0, 1.0],
+            [0.5, 0.5],
+        ];
+        let segs = plane_segments(&w);
+        assert_eq!(
+            segs,
+            vec![vec![[0.0, 0.0], [1.0, 0.0]], vec![[1.0, 1.0], [0.5, 0.5]]]
+        );
+    }
 }
