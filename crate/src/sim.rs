@@ -3,7 +3,7 @@
 use crate::estimators::{Estimate, EstimatorStatus};
 use crate::labs::{Lab, LabRun, TruthState};
 use crate::math::{
-    EulerYpr, WzAttitude, rotation_angle_between, small_angle_error_body, vertical_in_body,
+    EulerYpr, WzAttitude, WzChart, rotation_angle_between, small_angle_error_body, vertical_in_body,
 };
 use crate::params::{ParamError, ParamValues};
 use crate::record::{Recorder, SeriesGroup, SeriesSpec};
@@ -178,6 +178,7 @@ impl Simulation {
             push_errors(&mut self.row, &truth, &est);
             pad(&mut self.row, &est.covariance, e.covariance_names().len());
             pad(&mut self.row, &est.innovation, e.innovation_names().len());
+            pad(&mut self.row, &est.extras, e.extra_names().len());
             self.row.push(self.statuses[i].code());
         }
         self.run.truth.extra_values(&mut self.row);
@@ -201,7 +202,7 @@ fn health(est: &Estimate) -> EstimatorStatus {
     }
 }
 
-const ATTITUDE: [(&str, &str, SeriesGroup); 8] = [
+const ATTITUDE: [(&str, &str, SeriesGroup); 9] = [
     ("yaw_deg", "deg", SeriesGroup::Attitude),
     ("pitch_deg", "deg", SeriesGroup::Attitude),
     ("roll_deg", "deg", SeriesGroup::Attitude),
@@ -210,14 +211,18 @@ const ATTITUDE: [(&str, &str, SeriesGroup); 8] = [
     ("k_z", "", SeriesGroup::Sphere),
     ("u", "", SeriesGroup::Sphere),
     ("v", "", SeriesGroup::Sphere),
+    ("z_deg", "deg", SeriesGroup::Sphere),
 ];
 const RATE: [(&str, &str, SeriesGroup); 3] = [
     ("rate_x_deg_s", "deg/s", SeriesGroup::Rate),
     ("rate_y_deg_s", "deg/s", SeriesGroup::Rate),
     ("rate_z_deg_s", "deg/s", SeriesGroup::Rate),
 ];
-const ERRORS: [(&str, &str, SeriesGroup); 4] = [
+const ERRORS: [(&str, &str, SeriesGroup); 7] = [
     ("err_deg", "deg", SeriesGroup::Error),
+    ("tilt_err_deg", "deg", SeriesGroup::Error),
+    ("pitch_err_deg", "deg", SeriesGroup::Error),
+    ("roll_err_deg", "deg", SeriesGroup::Error),
     ("err_x_deg", "deg", SeriesGroup::Error),
     ("err_y_deg", "deg", SeriesGroup::Error),
     ("err_z_deg", "deg", SeriesGroup::Error),
@@ -228,25 +233,41 @@ const ERRORS: [(&str, &str, SeriesGroup); 4] = [
 const W_RECORD_LIMIT: f64 = 1e6;
 
 fn push_attitude(row: &mut Vec<f64>, q: Option<&UnitQuaternion<f64>>, wz: Option<&WzAttitude>) {
-    let Some(q) = q else {
-        row.extend([f64::NAN; 8]);
+    let wz = wz.copied().or_else(|| q.map(WzAttitude::from_quaternion));
+    let Some(wz) = wz else {
+        row.extend([f64::NAN; 9]);
         return;
     };
-    let e = EulerYpr::from_quaternion(q);
-    row.extend([
-        e.yaw_rad.to_degrees(),
-        e.pitch_rad.to_degrees(),
-        e.roll_rad.to_degrees(),
-    ]);
-    let k = vertical_in_body(q);
-    row.extend([k.x, k.y, k.z]);
-    let wz = wz
-        .copied()
-        .unwrap_or_else(|| WzAttitude::from_quaternion(q));
+    // Pitch and roll depend on the vertical only (eqs. 24–25), so a tilt-only estimate
+    // (q = None) still has them; yaw and z need the full attitude.
+    let k = wz.vertical_in_body();
+    let (pitch, roll) = pitch_roll_of_vertical(&k);
+    let yaw = q.map_or(f64::NAN, |q| {
+        EulerYpr::from_quaternion(q).yaw_rad.to_degrees()
+    });
+    row.extend([yaw, pitch.to_degrees(), roll.to_degrees(), k.x, k.y, k.z]);
     match wz.w() {
         Some((u, v)) if u.hypot(v) < W_RECORD_LIMIT => row.extend([u, v]),
         _ => row.extend([f64::NAN, f64::NAN]),
     }
+    // z is chart dependent; record it in paper 3's chart where that chart exists.
+    let z = match (wz.chart, q) {
+        (WzChart::North, Some(_)) => wz.z_rad,
+        (_, Some(q)) => {
+            WzAttitude::from_dcm_in_chart(&crate::math::dcm_from_quaternion(q), WzChart::North)
+                .map_or(f64::NAN, |w| w.z_rad)
+        }
+        (_, None) => f64::NAN,
+    };
+    row.push(z.to_degrees());
+}
+
+/// Pitch ϑ and roll γ of paper 3 from the vertical in body axes (eq. 27 solved).
+pub fn pitch_roll_of_vertical(k_body: &Vector3<f64>) -> (f64, f64) {
+    (
+        k_body.y.clamp(-1.0, 1.0).asin(),
+        (-k_body.x).atan2(k_body.z),
+    )
 }
 
 fn push_rate(row: &mut Vec<f64>, rate: Option<&Vector3<f64>>) {
@@ -268,15 +289,44 @@ fn push_angle(row: &mut Vec<f64>, angle: Option<f64>, truth: Option<f64>) {
 
 fn push_errors(row: &mut Vec<f64>, truth: &TruthState, est: &Estimate) {
     match est.q_ref_from_body {
-        Some(q) => {
-            row.push(rotation_angle_between(&truth.q_ref_from_body, &q).to_degrees());
-            row.extend(
-                small_angle_error_body(&truth.q_ref_from_body, &q)
-                    .iter()
-                    .map(|x| x.to_degrees()),
-            );
+        Some(q) => row.push(rotation_angle_between(&truth.q_ref_from_body, &q).to_degrees()),
+        None => row.push(f64::NAN),
+    }
+    let k_est = est
+        .wz
+        .map(|w| w.vertical_in_body())
+        .or_else(|| est.q_ref_from_body.map(|q| vertical_in_body(&q)));
+    match k_est {
+        Some(k) => {
+            let k_true = vertical_in_body(&truth.q_ref_from_body);
+            let (p_t, r_t) = pitch_roll_of_vertical(&k_true);
+            let (p_e, r_e) = pitch_roll_of_vertical(&k);
+            let tilt = k_true.cross(&k).norm().atan2(k_true.dot(&k));
+            row.extend([
+                tilt.to_degrees(),
+                (p_e - p_t).to_degrees(),
+                wrap_pi(r_e - r_t).to_degrees(),
+            ]);
         }
-        None => row.extend([f64::NAN; 4]),
+        None => row.extend([f64::NAN; 3]),
+    }
+    match est.q_ref_from_body {
+        Some(q) => row.extend(
+            small_angle_error_body(&truth.q_ref_from_body, &q)
+                .iter()
+                .map(|x| x.to_degrees()),
+        ),
+        None => row.extend([f64::NAN; 3]),
+    }
+}
+
+/// `a` wrapped to (−π, π].
+pub fn wrap_pi(a: f64) -> f64 {
+    let t = a.rem_euclid(std::f64::consts::TAU);
+    if t > std::f64::consts::PI {
+        t - std::f64::consts::TAU
+    } else {
+        t
     }
 }
 
@@ -330,6 +380,9 @@ fn series_for(run: &LabRun) -> Vec<SeriesSpec> {
                 "",
                 SeriesGroup::Innovation,
             ));
+        }
+        for c in e.extra_names() {
+            s.push(SeriesSpec::new(format!("{id}.{c}"), "", SeriesGroup::Lab));
         }
         s.push(SeriesSpec::new(
             format!("{id}.status"),

@@ -165,6 +165,26 @@ fn estimators_publish_as_many_elements_as_they_name() {
 }
 
 #[test]
+fn every_row_has_one_value_per_series() {
+    for lab in labs::all() {
+        let mut sim = Simulation::new(*lab, ParamValues::defaults(lab.params()), 1);
+        assert_eq!(
+            sim.last_row().len(),
+            sim.recorder().specs().len(),
+            "{} at t = 0",
+            lab.id()
+        );
+        sim.step();
+        assert_eq!(
+            sim.last_row().len(),
+            sim.recorder().specs().len(),
+            "{} after a step",
+            lab.id()
+        );
+    }
+}
+
+#[test]
 fn recorder_memory_stays_flat() {
     let lab = labs::all()[0];
     let mut sim = Simulation::with_history(lab, ParamValues::defaults(lab.params()), 1, 500);

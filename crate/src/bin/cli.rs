@@ -116,6 +116,7 @@ fn reproduce(which: &str, json: Option<&Path>) -> Result<bool, String> {
         let rep = lab.reproduce();
         println!("{}", rep.to_table());
         reports.push(rep);
+        print_timings(lab, 200_000);
     }
     if let Some(path) = json {
         let text = serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?;
@@ -197,6 +198,34 @@ fn run(
         sidecar.display()
     );
     Ok(())
+}
+
+/// Times the lab's timing items and prints each against the first (the cost comparison).
+fn print_timings(lab: &'static dyn Lab, reps: usize) {
+    let mut items = lab.timing_items();
+    if items.is_empty() {
+        return;
+    }
+    println!("cost (native, release build, {reps} repetitions each; measured, not a test):");
+    let mut base = None;
+    for item in &mut items {
+        for _ in 0..reps / 10 {
+            (item.run)();
+        }
+        let t0 = Instant::now();
+        for _ in 0..reps {
+            (item.run)();
+        }
+        let ns = t0.elapsed().as_nanos() as f64 / reps as f64;
+        let b = *base.get_or_insert(ns);
+        println!(
+            "  {:<40} {:>8.1} ns   ×{:.2} of the first",
+            item.name,
+            ns,
+            ns / b
+        );
+    }
+    println!();
 }
 
 fn bench(steps: usize) {

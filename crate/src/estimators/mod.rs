@@ -3,11 +3,17 @@
 //! Every estimator publishes the same [`Estimate`] shape, so plots, exports and consistency
 //! checks work for all of them without knowing which one they look at.
 
+mod accel_wz;
+mod blended_wz;
 mod quaternion_integration;
 mod wz_integration;
+mod wz_kalman;
 
+pub use accel_wz::AccelWz;
+pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
 pub use quaternion_integration::QuaternionIntegration;
 pub use wz_integration::WzIntegration;
+pub use wz_kalman::{ACCEL_NOISE_KEY, KF_Q_SCALE_KEY, WzKalman};
 
 use crate::math::WzAttitude;
 use crate::params::ParamValues;
@@ -64,6 +70,9 @@ pub struct Estimate {
     pub covariance: Vec<f64>,
     /// Innovation components, in the order of [`Estimator::innovation_names`].
     pub innovation: Vec<f64>,
+    /// Estimator-specific internals worth plotting, in the order of
+    /// [`Estimator::extra_names`] (e.g. the filter channels of a complementary filter).
+    pub extras: Vec<f64>,
     /// Health.
     pub status: EstimatorStatus,
 }
@@ -80,6 +89,10 @@ pub trait Estimator: Send {
     }
     /// Names (with units) of the innovation components it publishes.
     fn innovation_names(&self) -> &'static [&'static str] {
+        &[]
+    }
+    /// Names (with units) of the internals it publishes in [`Estimate::extras`].
+    fn extra_names(&self) -> &'static [&'static str] {
         &[]
     }
     /// Takes new parameter values (a slider moved); effective from the next step.

@@ -2,8 +2,10 @@
 //! [`all`]. The UI's lab picker, the CLI and the conformance tests iterate that one list.
 
 mod free_rotation;
+mod wz_sphere;
 
 pub use free_rotation::FreeRotation;
+pub use wz_sphere::{WzSphere, motion_of};
 
 use crate::estimators::{Estimator, Measurements};
 use crate::params::{ParamSpec, ParamValues};
@@ -13,7 +15,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {
-    &[&FreeRotation]
+    &[&FreeRotation, &WzSphere]
 }
 
 /// The lab with this id.
@@ -137,6 +139,23 @@ impl Reproduction {
     }
 }
 
+/// A named set of series plotted together, e.g. a figure of the paper.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figure {
+    /// Tab title, e.g. "Fig. 8: v and vᵃ".
+    pub title: &'static str,
+    /// Series names (as recorded) drawn in it.
+    pub series: &'static [&'static str],
+}
+
+/// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).
+pub struct TimingItem {
+    /// What is timed.
+    pub name: &'static str,
+    /// One repetition.
+    pub run: Box<dyn FnMut()>,
+}
+
 /// A lab: truth, sensors, estimators, parameters and the paper's anchors.
 pub trait Lab: Sync {
     /// Stable id (`free-rotation`), used by the CLI and the URL.
@@ -157,6 +176,14 @@ pub trait Lab: Sync {
     fn default_duration_s(&self) -> f64;
     /// Runs the lab's anchor scenarios and compares with the paper.
     fn reproduce(&self) -> Reproduction;
+    /// The paper's figures as plot tabs.
+    fn figures(&self) -> &'static [Figure] {
+        &[]
+    }
+    /// Work whose cost the lab compares (timed by the CLI, never by tests).
+    fn timing_items(&self) -> Vec<TimingItem> {
+        Vec::new()
+    }
 }
 
 impl LabRun {

@@ -99,6 +99,19 @@ pub fn uvz_derivative(uvz: &Vector3<f64>, rate_rad_s: &Vector3<f64>) -> Vector3<
     )
 }
 
+/// Paper 3's eqs. (18–19) alone: the (u, v) subsystem, which needs no z.
+pub fn uv_derivative(
+    uv: &nalgebra::Vector2<f64>,
+    rate_rad_s: &Vector3<f64>,
+) -> nalgebra::Vector2<f64> {
+    let (u, v) = (uv[0], uv[1]);
+    let (wx, wy, wz) = (rate_rad_s[0], rate_rad_s[1], rate_rad_s[2]);
+    nalgebra::Vector2::new(
+        v * wz + u * v * wx - 0.5 * wy * (1.0 + u * u - v * v),
+        -u * wz - u * v * wy + 0.5 * wx * (1.0 - u * u + v * v),
+    )
+}
+
 /// Body rates as seen by the flipped frame F = diag(1, −1, −1)·body.
 fn chart_rates(chart: WzChart, rate_body_rad_s: Vector3<f64>) -> Vector3<f64> {
     match chart {

@@ -25,11 +25,15 @@ mod wz;
 pub use covariance::{is_symmetric_positive_definite, joseph_update, nees, symmetrize};
 pub use euler::EulerYpr;
 pub use integrate::{
-    RateSegment, quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uvz_derivative,
+    RateSegment, quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uv_derivative,
+    uvz_derivative,
 };
 pub use krylov::KrylovAngles;
 pub use rotation::{
     dcm_from_quaternion, quaternion_from_dcm, rot_x, rot_y, rot_z, rotation_angle_between,
     small_angle_error_body, vertical_in_body,
 };
-pub use wz::{CHART_SWITCH_MODULUS, WzAttitude, WzChart};
+pub use wz::{
+    CHART_SWITCH_MODULUS, WzAttitude, WzChart, a_of_w, better_chart, chart_coords_of_vertical,
+    other_chart,
+};

@@ -63,6 +63,46 @@ pub fn a_of_w(u: f64, v: f64) -> Matrix3<f64> {
     ) / n
 }
 
+/// Chart coordinates (u, v) of a vertical `k_body` (any length > 0, e.g. an accelerometer
+/// reading): eq. (28) in the north chart, its flipped twin otherwise. `None` at the chart's
+/// own pole.
+///
+/// ```
+/// # use attlab::math::{chart_coords_of_vertical, WzChart};
+/// # use nalgebra::Vector3;
+/// let (u, v) = chart_coords_of_vertical(&Vector3::new(0.0, 0.5, 0.75f64.sqrt()), WzChart::North).unwrap();
+/// assert!((v - 0.5 / (1.0 + 0.75f64.sqrt())).abs() < 1e-15 && u == 0.0);
+/// ```
+pub fn chart_coords_of_vertical(k_body: &Vector3<f64>, chart: WzChart) -> Option<(f64, f64)> {
+    let n = k_body.norm();
+    if !(n > 0.0 && n.is_finite()) {
+        return None;
+    }
+    let k = k_body / n;
+    let (x, y, z) = match chart {
+        WzChart::North => (k.x, k.y, k.z),
+        WzChart::Flipped => (k.x, -k.y, -k.z),
+    };
+    (1.0 + z > 1e-9).then(|| (x / (1.0 + z), y / (1.0 + z)))
+}
+
+/// The better-conditioned chart for a vertical `k_body`.
+pub fn better_chart(k_body: &Vector3<f64>) -> WzChart {
+    if k_body.z >= 0.0 {
+        WzChart::North
+    } else {
+        WzChart::Flipped
+    }
+}
+
+/// The other chart.
+pub fn other_chart(chart: WzChart) -> WzChart {
+    match chart {
+        WzChart::North => WzChart::Flipped,
+        WzChart::Flipped => WzChart::North,
+    }
+}
+
 impl WzAttitude {
     /// (u, v, z) in the north chart.
     pub fn north(u: f64, v: f64, z_rad: f64) -> Self {

@@ -1,0 +1,142 @@
+//! Paper 3's open-loop blend (Fig. 9): the gyro channel integrates (u, v) by eqs. (18–19),
+//! the accelerometer channel gives (uᵃ, vᵃ) by eq. (28), and
+//! `uᵏ = HPF(u) + LPF(uᵃ)`, `vᵏ = HPF(v) + LPF(vᵃ)` with `W_HPF = Ts/(Ts + 1)`,
+//! `W_LPF = 1/(Ts + 1)`.
+//!
+//! Since HPF + LPF = 1 this is computed as `wᵏ = w + LPF(wᵃ − w)` (digest §4), one
+//! first-order low-pass on the difference, discretised by backward Euler
+//! (`e ← e + dt/(T + dt)·(x − e)`). The gyro channel keeps running open loop (no feedback,
+//! as in the paper). When the gyro channel switches chart (body upside down) the blended point
+//! is carried into the new chart, so the blend works on the whole sphere. The separate
+//! channels HPF(u), HPF(v), LPF(uᵃ), LPF(vᵃ) are published for the paper's Fig. 10.
+
+use super::{Estimate, Estimator, Measurements};
+use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk4};
+use crate::params::ParamValues;
+use nalgebra::Vector3;
+
+/// Parameter key of the blend time constant T (s).
+pub const BLEND_TIME_CONSTANT_KEY: &str = "blend_time_const_s";
+
+/// First-order low-pass `y ← y + dt/(T + dt)·(x − y)`.
+fn low_pass(y: &mut f64, x: f64, dt_s: f64, t_s: f64) {
+    *y += dt_s / (t_s.max(0.0) + dt_s) * (x - *y);
+}
+
+/// The complementary (HPF + LPF) blend of paper 3.
+#[derive(Clone, Debug)]
+pub struct BlendedWz {
+    gyro: WzAttitude,
+    last_rate_rad_s: Option<Vector3<f64>>,
+    /// LPF(wᵃ − w) in the gyro channel's chart.
+    correction: (f64, f64),
+    /// Display channels: LPF(u), LPF(v), LPF(uᵃ), LPF(vᵃ).
+    channels: [f64; 4],
+    time_constant_s: f64,
+}
+
+impl BlendedWz {
+    /// Starts from the attitude `wz0` with time constant `time_constant_s`.
+    pub fn new(wz0: WzAttitude, time_constant_s: f64) -> Self {
+        // Filters start at rest, as in the paper: HPF(v) starts at v₀ and LPF(vᵃ) at 0.
+        Self {
+            gyro: wz0,
+            last_rate_rad_s: None,
+            correction: (0.0, 0.0),
+            channels: [0.0; 4],
+            time_constant_s,
+        }
+    }
+
+    fn blended(&self) -> WzAttitude {
+        WzAttitude {
+            u: self.gyro.u + self.correction.0,
+            v: self.gyro.v + self.correction.1,
+            ..self.gyro
+        }
+    }
+
+    /// Carries the blended point into the gyro channel's new chart after a switch.
+    fn rebase(&mut self, before: &WzAttitude) {
+        let blended = WzAttitude {
+            u: before.u + self.correction.0,
+            v: before.v + self.correction.1,
+            ..*before
+        };
+        self.correction =
+            match chart_coords_of_vertical(&blended.vertical_in_body(), self.gyro.chart) {
+                Some((u, v)) => (u - self.gyro.u, v - self.gyro.v),
+                None => (0.0, 0.0),
+            };
+        self.channels = [
+            self.gyro.u,
+            self.gyro.v,
+            self.gyro.u + self.correction.0,
+            self.gyro.v + self.correction.1,
+        ];
+    }
+}
+
+impl Estimator for BlendedWz {
+    fn id(&self) -> &'static str {
+        "blend"
+    }
+
+    fn label(&self) -> &'static str {
+        "Blend HPF(u) + LPF(uᵃ), Fig. 9"
+    }
+
+    fn extra_names(&self) -> &'static [&'static str] {
+        &["hpf_u", "hpf_v", "lpf_ua", "lpf_va"]
+    }
+
+    fn apply_params(&mut self, params: &ParamValues) {
+        let t = params.get(BLEND_TIME_CONSTANT_KEY);
+        if t.is_finite() {
+            self.time_constant_s = t;
+        }
+    }
+
+    fn step(&mut self, m: &Measurements, dt_s: f64) {
+        if let Some(rate) = m.gyro_body_rad_s {
+            let seg = RateSegment {
+                start_rad_s: self.last_rate_rad_s.unwrap_or(rate),
+                end_rad_s: rate,
+            };
+            let before = self.gyro;
+            self.gyro = step_uvz_rk4(&self.gyro, |f| seg.at(f), dt_s);
+            self.last_rate_rad_s = Some(rate);
+            if self.gyro.chart != before.chart {
+                self.rebase(&before);
+            }
+        }
+        let Some(n) = m.accel_body_g else { return };
+        // The accelerometer point in the gyro channel's chart; skipped near that chart's
+        // pole, where it carries no usable information.
+        let Some((ua, va)) =
+            chart_coords_of_vertical(&n, self.gyro.chart).filter(|(u, v)| u.hypot(*v) < 10.0)
+        else {
+            return;
+        };
+        let t = self.time_constant_s;
+        low_pass(&mut self.correction.0, ua - self.gyro.u, dt_s, t);
+        low_pass(&mut self.correction.1, va - self.gyro.v, dt_s, t);
+        let [lu, lv, lua, lva] = &mut self.channels;
+        low_pass(lu, self.gyro.u, dt_s, t);
+        low_pass(lv, self.gyro.v, dt_s, t);
+        low_pass(lua, ua, dt_s, t);
+        low_pass(lva, va, dt_s, t);
+    }
+
+    fn estimate(&self) -> Estimate {
+        let wz = self.blended();
+        let [lu, lv, lua, lva] = self.channels;
+        Estimate {
+            q_ref_from_body: Some(wz.to_quaternion()),
+            wz: Some(wz),
+            rate_body_rad_s: self.last_rate_rad_s,
+            extras: vec![self.gyro.u - lu, self.gyro.v - lv, lua, lva],
+            ..Estimate::default()
+        }
+    }
+}

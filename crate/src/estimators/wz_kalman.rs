@@ -1,0 +1,223 @@
+//! Beyond paper 3: a Kalman filter in (u, v). The process is the Riccati kinematics
+//! (eqs. 18–19) driven by the gyro; the measurement is the accelerometer's (uᵃ, vᵃ)
+//! (eq. 28). Extended form: the state is propagated by RK4, the covariance by the Jacobian
+//! `F = ∂(u̇, v̇)/∂(u, v)`; gyro noise enters through `G = ∂(u̇, v̇)/∂ω`, accelerometer noise
+//! through `J = ∂(uᵃ, vᵃ)/∂n`, so `R = σₐ² J Jᵀ`. Joseph-form update. A 2×2 covariance, drawn
+//! as a 3σ ellipse around the estimate. When the body turns upside down the state moves to
+//! the flipped chart s = 1/w and the covariance with it (`P ← M P Mᵀ`, M the Jacobian of
+//! 1/w, i.e. multiplication by −1/w²).
+//!
+//! A constant gyro bias is not in the state: it is modelled as extra rate noise of spectral
+//! density b²·τ (b = the bias slider, τ = 1 s), which keeps the filter listening to the
+//! accelerometer; its covariance is then only approximately consistent. With b = 0 the model
+//! is exact (the NEES test). `kf_q_scale` scales the process noise.
+
+use super::{Estimate, EstimatorStatus, GYRO_BIAS_KEY, GYRO_NOISE_KEY, Measurements};
+use crate::math::{
+    RateSegment, WzAttitude, WzChart, chart_coords_of_vertical, joseph_update, step_uvz_rk4,
+    symmetrize,
+};
+use crate::params::ParamValues;
+use nalgebra::{Matrix2, Matrix2x3, Vector2, Vector3};
+
+/// Parameter key of the accelerometer noise σ (g).
+pub const ACCEL_NOISE_KEY: &str = "accel_noise_g";
+/// Parameter key of the process-noise scale.
+pub const KF_Q_SCALE_KEY: &str = "kf_q_scale";
+
+/// Correlation time (s) with which an unmodelled constant gyro bias is turned into process
+/// noise.
+pub const BIAS_CORRELATION_S: f64 = 1.0;
+
+/// The (u, v) Kalman filter.
+#[derive(Clone, Debug)]
+pub struct WzKalman {
+    wz: WzAttitude,
+    p: Matrix2<f64>,
+    last_rate_rad_s: Option<Vector3<f64>>,
+    gyro_sigma_rad_s: f64,
+    bias_sigma_rad_s: f64,
+    accel_sigma_g: f64,
+    q_scale: f64,
+    innovation: Vector2<f64>,
+    status: EstimatorStatus,
+}
+
+/// `F = ∂(u̇, v̇)/∂(u, v)` of eqs. (18–19).
+fn jacobian_state(u: f64, v: f64, w: &Vector3<f64>) -> Matrix2<f64> {
+    let (wx, wy, wz) = (w.x, w.y, w.z);
+    Matrix2::new(
+        v * wx - u * wy,
+        wz + u * wx + v * wy,
+        -wz - v * wy - u * wx,
+        v * wx - u * wy,
+    )
+}
+
+/// `G = ∂(u̇, v̇)/∂ω` of eqs. (18–19).
+fn jacobian_rate(u: f64, v: f64) -> Matrix2x3<f64> {
+    Matrix2x3::new(
+        u * v,
+        -0.5 * (1.0 + u * u - v * v),
+        v,
+        0.5 * (1.0 - u * u + v * v),
+        -u * v,
+        -u,
+    )
+}
+
+/// `J = ∂(uᵃ, vᵃ)/∂n` of eq. (28) at the unit vertical `k` (chart coordinates).
+fn jacobian_accel(k: &Vector3<f64>) -> Matrix2x3<f64> {
+    let d = 1.0 + k.z;
+    Matrix2x3::new(1.0 / d, 0.0, -k.x / (d * d), 0.0, 1.0 / d, -k.y / (d * d))
+}
+
+impl WzKalman {
+    /// Starts at `wz0` with covariance `p0` (in `wz0`'s chart).
+    pub fn new(wz0: WzAttitude, p0: Matrix2<f64>) -> Self {
+        Self {
+            wz: wz0,
+            p: p0,
+            last_rate_rad_s: None,
+            gyro_sigma_rad_s: 0.0,
+            bias_sigma_rad_s: 0.0,
+            accel_sigma_g: 0.01,
+            q_scale: 1.0,
+            innovation: Vector2::zeros(),
+            status: EstimatorStatus::Ok,
+        }
+    }
+
+    fn rates_in_chart(&self, rate: &Vector3<f64>) -> Vector3<f64> {
+        match self.wz.chart {
+            WzChart::North => *rate,
+            WzChart::Flipped => Vector3::new(rate.x, -rate.y, -rate.z),
+        }
+    }
+
+    fn predict(&mut self, rate: Vector3<f64>, dt_s: f64) {
+        let seg = RateSegment {
+            start_rad_s: self.last_rate_rad_s.unwrap_or(rate),
+            end_rad_s: rate,
+        };
+        let mid = self.rates_in_chart(&seg.at(0.5));
+        let (u, v) = (self.wz.u, self.wz.v);
+        let phi = Matrix2::identity() + jacobian_state(u, v, &mid) * dt_s;
+        let g = jacobian_rate(u, v);
+        // White gyro noise: σ² per sample enters as σ² dt². The unmodelled bias b enters as
+        // rate noise of spectral density b²·τ (τ = BIAS_CORRELATION_S), so the predicted
+        // error from it after τ seconds is b·τ, what a constant bias really does by then.
+        let angle_var = (self.gyro_sigma_rad_s * dt_s).powi(2)
+            + self.bias_sigma_rad_s.powi(2) * BIAS_CORRELATION_S * dt_s;
+        let q = g * g.transpose() * (angle_var * self.q_scale);
+        let before = self.wz;
+        self.wz = step_uvz_rk4(&self.wz, |f| seg.at(f), dt_s);
+        self.p = symmetrize(&(phi * self.p * phi.transpose() + q));
+        if self.wz.chart != before.chart {
+            self.p = chart_change(&self.p, &self.wz);
+        }
+        self.last_rate_rad_s = Some(rate);
+    }
+
+    fn update(&mut self, n: &Vector3<f64>) {
+        let Some((ua, va)) =
+            chart_coords_of_vertical(n, self.wz.chart).filter(|(u, v)| u.hypot(*v) < 10.0)
+        else {
+            return;
+        };
+        let k_body = n.normalize();
+        let k_chart = match self.wz.chart {
+            WzChart::North => k_body,
+            WzChart::Flipped => Vector3::new(k_body.x, -k_body.y, -k_body.z),
+        };
+        // (uᵃ, vᵃ) are computed from the normalised reading, so only noise across k matters.
+        let j = jacobian_accel(&k_chart)
+            * (nalgebra::Matrix3::identity() - k_chart * k_chart.transpose());
+        let r = symmetrize(&(j * j.transpose() * self.accel_sigma_g.powi(2)));
+        let y = Vector2::new(ua - self.wz.u, va - self.wz.v);
+        let s = self.p + r;
+        let Some(s_inv) = s.try_inverse() else {
+            self.status = EstimatorStatus::Diverged("innovation covariance is singular".into());
+            return;
+        };
+        let k = self.p * s_inv;
+        let dx = k * y;
+        self.wz.u += dx.x;
+        self.wz.v += dx.y;
+        self.p = joseph_update(&self.p, &k, &Matrix2::identity(), &r);
+        self.innovation = y;
+        if !(self.p.iter().all(|x| x.is_finite()) && self.wz.u.is_finite() && self.wz.v.is_finite())
+        {
+            self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+        }
+    }
+
+    /// The current (u, v) covariance, in the current chart.
+    pub fn covariance(&self) -> Matrix2<f64> {
+        self.p
+    }
+}
+
+/// P carried into the chart of `new` (the point just converted): new = 1/old as complex
+/// numbers, so d(new)/d(old) = −1/old² = −new², a rotation-scaling matrix.
+fn chart_change(p: &Matrix2<f64>, new: &WzAttitude) -> Matrix2<f64> {
+    let (u, v) = (new.u, new.v);
+    let (re, im) = (-(u * u - v * v), -2.0 * u * v);
+    let m = Matrix2::new(re, -im, im, re);
+    symmetrize(&(m * p * m.transpose()))
+}
+
+impl super::Estimator for WzKalman {
+    fn id(&self) -> &'static str {
+        "kf-uv"
+    }
+
+    fn label(&self) -> &'static str {
+        "Kalman filter in (u, v)"
+    }
+
+    fn covariance_names(&self) -> &'static [&'static str] {
+        &["P_uu", "P_uv", "P_vv"]
+    }
+
+    fn innovation_names(&self) -> &'static [&'static str] {
+        &["innov_u", "innov_v"]
+    }
+
+    fn apply_params(&mut self, params: &ParamValues) {
+        let read = |key: &str, into: &mut f64, f: fn(f64) -> f64| {
+            let v = params.get(key);
+            if v.is_finite() {
+                *into = f(v);
+            }
+        };
+        read(GYRO_NOISE_KEY, &mut self.gyro_sigma_rad_s, f64::to_radians);
+        read(GYRO_BIAS_KEY, &mut self.bias_sigma_rad_s, f64::to_radians);
+        read(ACCEL_NOISE_KEY, &mut self.accel_sigma_g, |x| x.max(1e-6));
+        read(KF_Q_SCALE_KEY, &mut self.q_scale, |x| x);
+    }
+
+    fn step(&mut self, m: &Measurements, dt_s: f64) {
+        if self.status != EstimatorStatus::Ok {
+            return;
+        }
+        if let Some(rate) = m.gyro_body_rad_s {
+            self.predict(rate, dt_s);
+        }
+        if let Some(n) = m.accel_body_g {
+            self.update(&n);
+        }
+    }
+
+    fn estimate(&self) -> Estimate {
+        Estimate {
+            q_ref_from_body: Some(self.wz.to_quaternion()),
+            wz: Some(self.wz),
+            rate_body_rad_s: self.last_rate_rad_s,
+            covariance: vec![self.p[(0, 0)], self.p[(0, 1)], self.p[(1, 1)]],
+            innovation: vec![self.innovation.x, self.innovation.y],
+            status: self.status.clone(),
+            ..Estimate::default()
+        }
+    }
+}

@@ -1,0 +1,379 @@
+//! Lab "p3": paper 3 — (w, z) kinematic parameters on the Riemann sphere, gyro and
+//! accelerometer blending (Matveev et al., Devices and Methods of Measurements 2025;16(3)).
+//!
+//! Truth: the paper's motion (yaw ramp, harmonic pitch and roll), classic coning, a slow
+//! tumble that turns the body upside down, or free rotation; true rates from the exact
+//! relations (digest §5). Sensors: gyro with bias and noise, accelerometer with noise and an
+//! optional lateral bump. Estimators: gyro-only (u, v, z) (eq. 21), accelerometer-only
+//! (eq. 28), the paper's HPF/LPF blend (Fig. 9), a Kalman filter in (u, v), and quaternion
+//! integration for comparison.
+
+use super::{Figure, Lab, LabRun, Reproduction, SensorModel, TimingItem, TruthModel, TruthState};
+use crate::dynamics::{AngleProfile, EulerMotion, RigidBody, RigidBodyState};
+use crate::estimators::{
+    AccelWz, BlendedWz, Estimator, IntegrationErrorModel, Measurements, QuaternionIntegration,
+    WzIntegration, WzKalman,
+};
+use crate::math::{WzAttitude, vertical_in_body};
+use crate::params::{ParamSpec, ParamValues};
+use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
+use nalgebra::{Matrix2, Vector3};
+use rand_chacha::ChaCha8Rng;
+
+#[path = "wz_sphere_reproduce.rs"]
+mod reproduce;
+
+/// The paper-3 lab.
+pub struct WzSphere;
+
+const PROFILES: &[&str] = &[
+    "paper 3: yaw ramp, harmonic pitch & roll",
+    "coning (pitch/roll 90° apart)",
+    "slow tumble (turns upside down)",
+    "free rotation (torque free)",
+];
+
+const PARAMS: &[ParamSpec] = &[
+    ParamSpec::choice("profile", "Motion", PROFILES, 0)
+        .on_reset()
+        .help("Which truth motion (applies at Reset)."),
+    ParamSpec::real("roll_amp_deg", "Roll amplitude A_γ", "°", 0.0, 90.0, 25.0)
+        .on_reset()
+        .help("Paper: 25°."),
+    ParamSpec::real("pitch_amp_deg", "Pitch amplitude A_ϑ", "°", 0.0, 89.0, 30.0)
+        .on_reset()
+        .help("Paper: 30°; also the cone half-angle of the coning motion."),
+    ParamSpec::real("yaw_rate_deg_s", "Yaw rate ω_ψ", "°/s", -20.0, 20.0, 1.0)
+        .on_reset()
+        .help("Paper: 1 °/s."),
+    ParamSpec::real(
+        "pitch_freq_rad_s",
+        "Pitch frequency ω_ϑ",
+        "rad/s",
+        0.001,
+        2.0,
+        0.05,
+    )
+    .log()
+    .on_reset()
+    .help("Paper: 0.05 rad/s."),
+    ParamSpec::real(
+        "roll_freq_rad_s",
+        "Roll frequency ω_γ",
+        "rad/s",
+        0.001,
+        2.0,
+        0.05,
+    )
+    .log()
+    .on_reset()
+    .help("Paper: 0.05 rad/s."),
+    ParamSpec::real(
+        "tumble_rate_deg_s",
+        "Tumble roll rate",
+        "°/s",
+        0.5,
+        90.0,
+        6.0,
+    )
+    .log()
+    .on_reset()
+    .help("Roll rate of the slow tumble."),
+    ParamSpec::real("gyro_bias_deg_s", "Gyro bias", "°/s", 0.0, 2.0, 0.1)
+        .log()
+        .help("Zero offset on all three axes (paper: 0.1 °/s); gyro-only integration drifts."),
+    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.0)
+        .log()
+        .help("White noise per sample (the paper has none)."),
+    ParamSpec::real(
+        "accel_noise_g",
+        "Accelerometer noise σ",
+        "g",
+        0.0,
+        0.2,
+        0.01,
+    )
+    .log()
+    .help("White noise per axis (paper: 0.01 g); accelerometer-only (uᵃ, vᵃ) is noisy."),
+    ParamSpec::real("bump_g", "Lateral bump", "g", 0.0, 2.0, 0.0)
+        .help("A 2-s horizontal acceleration pulse: accelerometers cannot tell it from tilt."),
+    ParamSpec::real("bump_time_s", "Bump time", "s", 0.0, 100.0, 50.0).help("When the bump peaks."),
+    ParamSpec::real(
+        "blend_time_const_s",
+        "Blend time constant T",
+        "s",
+        0.01,
+        100.0,
+        1.0,
+    )
+    .log()
+    .help("T of HPF = Ts/(Ts+1) and LPF = 1/(Ts+1) (paper: 1 s)."),
+    ParamSpec::real("kf_q_scale", "KF process-noise scale", "", 0.01, 100.0, 1.0)
+        .log()
+        .help("Scales the Kalman filter's process noise: larger trusts the accelerometer more."),
+    ParamSpec::real("rate_hz", "Sample rate", "Hz", 10.0, 1000.0, 100.0)
+        .log()
+        .integer()
+        .help("Gyro and accelerometer rate = simulation rate."),
+];
+
+const FIGURES: &[Figure] = &[
+    Figure {
+        title: "Fig. 4: u, v",
+        series: &["truth.u", "truth.v", "uvz-rk4.u", "uvz-rk4.v"],
+    },
+    Figure {
+        title: "Fig. 4: z",
+        series: &["truth.z_deg", "uvz-rk4.z_deg"],
+    },
+    Figure {
+        title: "Fig. 5: yaw, pitch, roll",
+        series: &[
+            "truth.yaw_deg",
+            "truth.pitch_deg",
+            "truth.roll_deg",
+            "uvz-rk4.yaw_deg",
+            "uvz-rk4.pitch_deg",
+            "uvz-rk4.roll_deg",
+        ],
+    },
+    Figure {
+        title: "Fig. 8: v, vᵃ",
+        series: &["uvz-rk4.v", "accel.v", "truth.v"],
+    },
+    Figure {
+        title: "Fig. 10: HPF(v), LPF(vᵃ), vᵏ",
+        series: &["blend.hpf_v", "blend.lpf_va", "blend.v", "truth.v"],
+    },
+    Figure {
+        title: "Tilt errors",
+        series: &[
+            "uvz-rk4.tilt_err_deg",
+            "accel.tilt_err_deg",
+            "blend.tilt_err_deg",
+            "kf-uv.tilt_err_deg",
+            "quat-rk4.tilt_err_deg",
+        ],
+    },
+    Figure {
+        title: "KF covariance",
+        series: &["kf-uv.P_uu", "kf-uv.P_vv", "kf-uv.P_uv"],
+    },
+];
+
+impl Lab for WzSphere {
+    fn id(&self) -> &'static str {
+        "p3"
+    }
+
+    fn title(&self) -> &'static str {
+        "Paper 3: (w, z) on the Riemann sphere"
+    }
+
+    fn paper(&self) -> &'static str {
+        "Matveev et al., Devices and Methods of Measurements 2025;16(3):202–211"
+    }
+
+    fn summary(&self) -> &'static str {
+        "The vertical seen from the body, k = (a′, b′, c′), projected from the pole S onto the body plane gives \
+         w = u + jv = (a′ + jb′)/(1 + c′) (eq. 12); z is the turn about the vertical, A = A(w)·A(z). \
+         The gyro drives u̇ = vω_ζ + uvω_ξ − ½ω_η(1 + u² − v²), v̇ = −uω_ζ − uvω_η + ½ω_ξ(1 − u² + v²), \
+         ż = ω_ζ + uω_ξ + vω_η (eq. 21) — (u, v) without z. Accelerometers give uᵃ = n_ξ/(1 + n_ζ), \
+         vᵃ = n_η/(1 + n_ζ) (eq. 28) with no integration. The gyro channel drifts with the bias, the \
+         accelerometer channel is noisy and is fooled by the lateral bump; the blend \
+         wᵏ = HPF(w) + LPF(wᵃ) with time constant T keeps the best of both, and the Kalman filter \
+         chooses its own gain from the noise levels (its 3σ ellipse is drawn on the plane and the sphere). \
+         Sliders: bias, noise, bump, T and the KF scale act live; the motion sliders apply at Reset. \
+         The slow tumble turns the body upside down: watch the chart switch to s = 1/w."
+    }
+
+    fn params(&self) -> &'static [ParamSpec] {
+        PARAMS
+    }
+
+    fn dt_s(&self, params: &ParamValues) -> f64 {
+        1.0 / params.get("rate_hz").clamp(1.0, 1e4)
+    }
+
+    fn build(&self, params: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
+        let truth = P3Truth::new(params);
+        let q0 = truth.state().q_ref_from_body;
+        let wz0 = WzAttitude::from_quaternion(&q0);
+        let mut sensors = GyroAccel {
+            gyro: Gyro3::new(Gyro3Config::default()),
+            accel_sigma_g: 0.0,
+            bump: (0.0, 0.0),
+        };
+        sensors.apply_params(params);
+        let model = IntegrationErrorModel::new(0.0, 0.0);
+        let p0 = Matrix2::identity() * 1e-6;
+        let mut estimators: Vec<Box<dyn Estimator>> = vec![
+            Box::new(WzIntegration::new(wz0, model)),
+            Box::new(AccelWz::new()),
+            Box::new(BlendedWz::new(wz0, 1.0)),
+            Box::new(WzKalman::new(wz0, p0)),
+            Box::new(QuaternionIntegration::new(q0, model)),
+        ];
+        estimators.iter_mut().for_each(|e| e.apply_params(params));
+        LabRun {
+            truth: Box::new(truth),
+            sensors: Box::new(sensors),
+            estimators,
+        }
+    }
+
+    fn default_duration_s(&self) -> f64 {
+        100.0
+    }
+
+    fn reproduce(&self) -> Reproduction {
+        reproduce::reproduce()
+    }
+
+    fn figures(&self) -> &'static [Figure] {
+        FIGURES
+    }
+
+    fn timing_items(&self) -> Vec<TimingItem> {
+        reproduce::timing_items()
+    }
+}
+
+/// The motion of the selected profile.
+enum Motion {
+    Prescribed(EulerMotion),
+    Free(Box<RigidBody>),
+}
+
+/// Truth: a prescribed Euler-angle motion or a free rigid body, plus the lateral bump.
+struct P3Truth {
+    motion: Motion,
+    t_s: f64,
+}
+
+/// The prescribed motion of profile `index` with the slider values in `p`.
+pub fn motion_of(p: &ParamValues) -> Option<EulerMotion> {
+    let deg = |k: &str| p.get(k).to_radians();
+    let harmonic = |amp: f64, freq: f64, phase: f64| AngleProfile {
+        amplitude_rad: amp,
+        frequency_rad_s: freq,
+        phase_rad: phase,
+        ..AngleProfile::default()
+    };
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    match p.index("profile") {
+        0 => Some(EulerMotion {
+            yaw: AngleProfile {
+                rate_rad_s: deg("yaw_rate_deg_s"),
+                ..AngleProfile::default()
+            },
+            pitch: harmonic(deg("pitch_amp_deg"), p.get("pitch_freq_rad_s"), half_pi),
+            roll: harmonic(deg("roll_amp_deg"), p.get("roll_freq_rad_s"), 0.0),
+        }),
+        1 => Some(EulerMotion {
+            yaw: AngleProfile::default(),
+            pitch: harmonic(deg("pitch_amp_deg"), p.get("pitch_freq_rad_s"), half_pi),
+            roll: harmonic(deg("pitch_amp_deg"), p.get("pitch_freq_rad_s"), 0.0),
+        }),
+        2 => Some(EulerMotion {
+            yaw: AngleProfile {
+                rate_rad_s: deg("yaw_rate_deg_s"),
+                ..AngleProfile::default()
+            },
+            pitch: harmonic(
+                deg("pitch_amp_deg") * 0.3,
+                p.get("pitch_freq_rad_s"),
+                half_pi,
+            ),
+            roll: AngleProfile {
+                rate_rad_s: deg("tumble_rate_deg_s"),
+                ..AngleProfile::default()
+            },
+        }),
+        _ => None,
+    }
+}
+
+impl P3Truth {
+    fn new(p: &ParamValues) -> Self {
+        let motion = match motion_of(p) {
+            Some(m) => Motion::Prescribed(m),
+            None => {
+                let q0 = crate::math::EulerYpr::new(0.0, 20f64.to_radians(), 10f64.to_radians())
+                    .to_quaternion();
+                let rate = Vector3::new(0.02, 1.0, 0.02).normalize() * 20f64.to_radians();
+                Motion::Free(Box::new(RigidBody::new(
+                    Vector3::new(1.0, 2.0, 3.0),
+                    RigidBodyState {
+                        q_ref_from_body: q0,
+                        rate_body_rad_s: rate,
+                    },
+                )))
+            }
+        };
+        Self { motion, t_s: 0.0 }
+    }
+}
+
+impl TruthModel for P3Truth {
+    fn apply_params(&mut self, _params: &ParamValues) {}
+
+    fn step(&mut self, dt_s: f64) {
+        if let Motion::Free(body) = &mut self.motion {
+            body.step(dt_s);
+        }
+        self.t_s += dt_s;
+    }
+
+    fn state(&self) -> TruthState {
+        let (q, w) = match &self.motion {
+            Motion::Prescribed(m) => (m.attitude(self.t_s), m.body_rate_rad_s(self.t_s)),
+            Motion::Free(b) => (b.state.q_ref_from_body, b.state.rate_body_rad_s),
+        };
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: q,
+            rate_body_rad_s: w,
+            angle_rad: None,
+        }
+    }
+}
+
+/// Gyro + accelerometer. The accelerometer measures n = f/g = k_body + A·a_ref/g + noise.
+struct GyroAccel {
+    gyro: Gyro3,
+    accel_sigma_g: f64,
+    /// (peak g, time of peak s) of the lateral bump along the reference ξ axis.
+    bump: (f64, f64),
+}
+
+impl SensorModel for GyroAccel {
+    fn apply_params(&mut self, p: &ParamValues) {
+        let b = p.get("gyro_bias_deg_s").to_radians();
+        self.gyro.config = Gyro3Config {
+            bias_rad_s: Vector3::repeat(b),
+            noise_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
+            ..Gyro3Config::default()
+        };
+        self.accel_sigma_g = p.get("accel_noise_g");
+        self.bump = (p.get("bump_g"), p.get("bump_time_s"));
+    }
+
+    fn sample(&mut self, truth: &TruthState, dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements {
+        let gyro = self.gyro.sample(&truth.rate_body_rad_s, dt_s, rng);
+        let (peak, t_peak) = self.bump;
+        let a_ref_g = Vector3::new(peak * (-0.5 * (truth.t_s - t_peak).powi(2)).exp(), 0.0, 0.0);
+        let noise = WhiteNoise {
+            sigma: self.accel_sigma_g,
+        };
+        let specific_force = vertical_in_body(&truth.q_ref_from_body)
+            + truth.q_ref_from_body.inverse_transform_vector(&a_ref_g);
+        let accel = specific_force + Vector3::from_fn(|_, _| noise.sample(rng));
+        Measurements {
+            t_s: truth.t_s,
+            gyro_body_rad_s: Some(gyro),
+            accel_body_g: Some(accel),
+            ..Measurements::default()
+        }
+    }
+}
