@@ -118,6 +118,16 @@ impl Simulation {
             .collect()
     }
 
+    /// Ids of the estimators, in order.
+    pub fn estimator_ids(&self) -> Vec<&'static str> {
+        self.run.estimators.iter().map(|e| e.id()).collect()
+    }
+
+    /// Covariance element names of estimator `index`.
+    pub fn covariance_names(&self, index: usize) -> Option<&'static [&'static str]> {
+        self.run.estimators.get(index).map(|e| e.covariance_names())
+    }
+
     /// Health of every estimator (by position).
     pub fn statuses(&self) -> &[EstimatorStatus] {
         &self.statuses

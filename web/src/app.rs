@@ -95,7 +95,10 @@ impl AttLabApp {
             speed,
             camera: body3d::OrbitCamera::default(),
             sphere: riemann_sphere::SphereView::default(),
-            plots: plots::PlotState::default(),
+            plots: plots::PlotState {
+                tab: default_tab(lab),
+                ..plots::PlotState::default()
+            },
             ghost_index: 0,
             messages: Vec::new(),
             show_explain: false,
@@ -114,6 +117,7 @@ impl AttLabApp {
         match command {
             Command::SelectLab(lab) => {
                 self.sim = Simulation::new(lab, ParamValues::defaults(lab.params()), self.seed);
+                self.plots.tab = default_tab(lab);
                 self.ghost_index = 0;
                 self.step_debt = 0.0;
             }
@@ -213,6 +217,15 @@ impl AttLabApp {
     /// Whether the 3D renderer is available.
     pub fn gpu_ready(&self) -> bool {
         self.gpu_ready
+    }
+}
+
+/// A lab with figures opens on its first figure, others on the error plot.
+fn default_tab(lab: &'static dyn Lab) -> plots::Tab {
+    if lab.figures().is_empty() {
+        plots::Tab::Group(attlab::record::SeriesGroup::Error)
+    } else {
+        plots::Tab::Figure(0)
     }
 }
 

@@ -2,7 +2,7 @@
 
 use crate::app::AttLabApp;
 use crate::render::{body3d, plots, riemann_sphere};
-use attlab::math::WzChart;
+use attlab::math::{WzAttitude, WzChart};
 use attlab::record::Recorder;
 use egui::{Rect, Ui, Vec2};
 use nalgebra::Vector3;
@@ -28,11 +28,12 @@ pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
         let rplane = Rect::from_min_max(top.min + Vec2::new(w3d + wsphere, 0.0), top.max);
         let sources = sources(app);
         let source_refs: Vec<&str> = sources.iter().map(String::as_str).collect();
-        let tracks = tracks(
+        let mut tracks = tracks(
             app.sim.recorder(),
             &source_refs,
             app.sim.estimates().iter().map(|e| e.1).collect(),
         );
+        attach_ellipses(app, &mut tracks);
         draw_body(ui, app, r3d);
         let caption = chart_caption(app);
         riemann_sphere::show_sphere(ui, rsphere, &mut app.sphere, &tracks, &caption);
@@ -41,7 +42,13 @@ pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
         });
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
-            plots::show(ui, app.sim.recorder(), &source_refs, &mut app.plots);
+            plots::show(
+                ui,
+                app.sim.recorder(),
+                &source_refs,
+                app.sim.lab().figures(),
+                &mut app.plots,
+            );
         });
     });
 }
@@ -120,7 +127,49 @@ fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sp
             color: plots::source_color(i),
             k_body,
             w,
+            ellipse: None,
         });
     }
     out
+}
+
+/// Covariance names of an estimator that publishes a (u, v) covariance.
+const UV_COVARIANCE: [&str; 3] = ["P_uu", "P_uv", "P_vv"];
+
+/// 3σ ellipses of every estimator publishing a (u, v) covariance, in its own chart, mapped
+/// point by point to the w plane and to the sphere (so it stays right in the flipped chart).
+fn attach_ellipses(app: &AttLabApp, tracks: &mut [riemann_sphere::SphereTrack]) {
+    for (i, e) in app.sim.estimates().into_iter().enumerate() {
+        let names_match = app
+            .sim
+            .covariance_names(i)
+            .is_some_and(|n| n == UV_COVARIANCE);
+        let (Some(wz), true) = (e.2.wz, names_match) else {
+            continue;
+        };
+        let [puu, puv, pvv] = [e.2.covariance[0], e.2.covariance[1], e.2.covariance[2]];
+        let Some(chol) = nalgebra::Matrix2::new(puu, puv, puv, pvv).cholesky() else {
+            continue;
+        };
+        let l = chol.l();
+        let ring: Vec<WzAttitude> = (0..64)
+            .map(|j| {
+                let a = f64::from(j) * std::f64::consts::TAU / 64.0;
+                let d = l * nalgebra::Vector2::new(a.cos(), a.sin()) * 3.0;
+                WzAttitude {
+                    u: wz.u + d.x,
+                    v: wz.v + d.y,
+                    ..wz
+                }
+            })
+            .collect();
+        let plane = ring
+            .iter()
+            .map(|p| p.w().map_or([f64::NAN, f64::NAN], |(u, v)| [u, v]))
+            .collect();
+        let sphere = ring.iter().map(WzAttitude::vertical_in_body).collect();
+        if let Some(t) = tracks.iter_mut().find(|t| t.name == e.1) {
+            t.ellipse = Some((plane, sphere));
+        }
+    }
 }

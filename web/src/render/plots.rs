@@ -1,5 +1,6 @@
 //! Time plots of the recorded series, one tab per series group, coloured by source.
 
+use attlab::labs::Figure;
 use attlab::record::{Recorder, SeriesGroup};
 use egui::{Color32, Ui};
 use egui_plot::{Legend, Line, LineStyle, Plot};
@@ -19,11 +20,20 @@ pub fn source_color(source_index: usize) -> Color32 {
     PALETTE[source_index % PALETTE.len()]
 }
 
+/// A plot tab: one of the lab's figures, or every series of a group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Tab {
+    /// The lab's figure with this index.
+    Figure(usize),
+    /// All series of a group.
+    Group(SeriesGroup),
+}
+
 /// Plot-panel settings kept by the app.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlotState {
     /// Selected tab.
-    pub group: SeriesGroup,
+    pub tab: Tab,
     /// Draw covariance elements as log10.
     pub log_covariance: bool,
     /// Draw ±3σ envelopes on the error plot.
@@ -33,7 +43,7 @@ pub struct PlotState {
 impl Default for PlotState {
     fn default() -> Self {
         Self {
-            group: SeriesGroup::Error,
+            tab: Tab::Group(SeriesGroup::Error),
             log_covariance: true,
             show_envelope: true,
         }
@@ -46,28 +56,41 @@ fn source_of(name: &str) -> &str {
     name.split('.').next().unwrap_or(name)
 }
 
-/// Tabs and the plot of the selected group. `sources` lists "truth" then the estimator ids,
-/// which fixes their colours.
-pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState) {
-    let groups: Vec<SeriesGroup> = {
-        let mut g: Vec<SeriesGroup> = Vec::new();
-        for s in rec.specs() {
-            if s.group != SeriesGroup::Time && !g.contains(&s.group) && has_data(rec, &s.name) {
-                g.push(s.group);
-            }
+/// Tabs (the lab's figures, then the series groups) and the selected plot. `sources` lists
+/// "truth" then the estimator ids, which fixes their colours in group plots; a figure colours
+/// its series by position so that u and v of one source differ.
+pub fn show(
+    ui: &mut Ui,
+    rec: &Recorder,
+    sources: &[&str],
+    figures: &[Figure],
+    state: &mut PlotState,
+) {
+    let mut groups: Vec<SeriesGroup> = Vec::new();
+    for s in rec.specs() {
+        if s.group != SeriesGroup::Time && !groups.contains(&s.group) && has_data(rec, &s.name) {
+            groups.push(s.group);
         }
-        g
-    };
-    ui.horizontal(|ui| {
+    }
+    if matches!(state.tab, Tab::Figure(i) if i >= figures.len()) {
+        state.tab = Tab::Group(SeriesGroup::Error);
+    }
+    ui.horizontal_wrapped(|ui| {
+        for (i, f) in figures.iter().enumerate() {
+            ui.selectable_value(&mut state.tab, Tab::Figure(i), f.title);
+        }
+        if !figures.is_empty() {
+            ui.separator();
+        }
         for g in &groups {
-            ui.selectable_value(&mut state.group, *g, g.title());
+            ui.selectable_value(&mut state.tab, Tab::Group(*g), g.title());
         }
         ui.separator();
-        match state.group {
-            SeriesGroup::Covariance => {
+        match state.tab {
+            Tab::Group(SeriesGroup::Covariance) => {
                 ui.checkbox(&mut state.log_covariance, "log10");
             }
-            SeriesGroup::Error => {
+            Tab::Group(SeriesGroup::Error) => {
                 ui.checkbox(&mut state.show_envelope, "±3σ envelope");
             }
             _ => {}
@@ -82,40 +105,60 @@ pub fn show(ui: &mut Ui, rec: &Recorder, sources: &[&str], state: &mut PlotState
                 .unwrap_or(0),
         )
     };
-    let group = state.group;
-    let (log_cov, envelope) = (state.log_covariance, state.show_envelope);
-    Plot::new(("series_plot", group.title()))
+    let tab = state.tab;
+    let lines: Vec<(usize, Color32)> = match tab {
+        Tab::Figure(f) => figures[f]
+            .series
+            .iter()
+            .enumerate()
+            .filter_map(|(k, n)| rec.index_of(n).map(|i| (i, source_color(k))))
+            .collect(),
+        Tab::Group(g) => rec
+            .specs()
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.group == g)
+            .map(|(i, s)| (i, color_of(&s.name)))
+            .collect(),
+    };
+    let log_cov = state.log_covariance && tab == Tab::Group(SeriesGroup::Covariance);
+    let envelope = state.show_envelope && tab == Tab::Group(SeriesGroup::Error);
+    Plot::new(("series_plot", format!("{tab:?}")))
         .legend(Legend::default())
         .x_axis_label("t [s]")
         .show(ui, |plot| {
-            for (i, spec) in rec.specs().iter().enumerate() {
-                if spec.group != group || !has_data(rec, &spec.name) {
+            for (i, color) in lines {
+                let spec = &rec.specs()[i];
+                if !has_data(rec, &spec.name) {
                     continue;
                 }
                 let mut pts = rec.decimated(t, i, MAX_POINTS);
                 let mut label = spec.header();
-                if group == SeriesGroup::Covariance && log_cov {
+                if log_cov {
                     pts.retain(|p| p[1] > 0.0);
                     pts.iter_mut().for_each(|p| p[1] = p[1].log10());
                     label = format!("log10 {label}");
                 }
-                plot.line(Line::new(label, pts).color(color_of(&spec.name)).width(1.4));
+                plot.line(Line::new(label, pts).color(color).width(1.4));
             }
-            if group == SeriesGroup::Error && envelope {
-                for (i, spec) in rec.specs().iter().enumerate() {
-                    if spec.name.ends_with("P_axis_rad2") {
-                        let pts: Vec<[f64; 2]> = rec
-                            .decimated(t, i, MAX_POINTS)
-                            .into_iter()
-                            .map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt().to_degrees()])
-                            .collect();
-                        let name = format!("{} 3σ per axis [deg]", source_of(&spec.name));
-                        plot.line(
-                            Line::new(name, pts)
-                                .color(color_of(&spec.name).gamma_multiply(0.6))
-                                .style(LineStyle::dashed_loose()),
-                        );
-                    }
+            if envelope {
+                for (i, spec) in rec
+                    .specs()
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, s)| s.name.ends_with("P_axis_rad2"))
+                {
+                    let pts: Vec<[f64; 2]> = rec
+                        .decimated(t, i, MAX_POINTS)
+                        .into_iter()
+                        .map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt().to_degrees()])
+                        .collect();
+                    let name = format!("{} 3σ per axis [deg]", source_of(&spec.name));
+                    plot.line(
+                        Line::new(name, pts)
+                            .color(color_of(&spec.name).gamma_multiply(0.6))
+                            .style(LineStyle::dashed_loose()),
+                    );
                 }
             }
         });

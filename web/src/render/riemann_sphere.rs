@@ -17,7 +17,12 @@ pub struct SphereTrack {
     pub k_body: Vec<Vector3<f64>>,
     /// (u, v) points for the complex plane (non-finite where w is at infinity).
     pub w: Vec<[f64; 2]>,
+    /// A 3σ covariance ellipse around the current point.
+    pub ellipse: Option<Ellipse>,
 }
+
+/// A closed ring of points, on the w plane and on the sphere.
+pub type Ellipse = (Vec<[f64; 2]>, Vec<Vector3<f64>>);
 
 /// Orientation of the sphere drawing (drag to turn).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -142,6 +147,15 @@ fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
         Stroke::new(1.0, faint),
     );
     let Some(k) = track.k_body.last() else { return };
+    if let Some((_, ring)) = &track.ellipse {
+        let closed = ring.iter().chain(ring.first()).copied();
+        pr.polyline(
+            painter,
+            closed,
+            Stroke::new(1.5, track.color),
+            Stroke::new(1.0, faint),
+        );
+    }
     let (p, front) = pr.project(k);
     painter.circle_filled(p, if front { 5.0 } else { 3.5 }, track.color);
     // Projection ray from S through k to the plane ζ′ = 0, where it meets w = u + jv.
@@ -266,6 +280,16 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
                 }
                 for seg in plane_segments(&t.w) {
                     plot.line(Line::new(t.name.clone(), seg).color(t.color));
+                }
+                if let Some((ring, _)) = &t.ellipse {
+                    let closed: Vec<[f64; 2]> = ring.iter().chain(ring.first()).copied().collect();
+                    for seg in plane_segments(&closed) {
+                        plot.line(
+                            Line::new(format!("{} 3σ", t.name), seg)
+                                .color(t.color)
+                                .style(egui_plot::LineStyle::dashed_dense()),
+                        );
+                    }
                 }
             }
         });
