@@ -32,9 +32,20 @@ fn steps(c: &mut Criterion) {
     }
 }
 
+/// The labs' own cost comparisons (e.g. paper 3's (u, v) vs (u, v, z) vs quaternion).
+fn timing_items(c: &mut Criterion) {
+    for lab in labs::all() {
+        for mut item in lab.timing_items() {
+            c.bench_function(&format!("{}/{}", lab.id(), item.name), |b| {
+                b.iter(|| (item.run)())
+            });
+        }
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = steps
+    targets = steps, timing_items
 }
 criterion_main!(benches);

@@ -155,7 +155,8 @@ impl Recorder {
 
     /// (x, y) points of two series for drawing, at most about `max_points`: rows are grouped
     /// into buckets and each bucket keeps its minimum and maximum y, so spikes survive
-    /// decimation. Non-finite y values are skipped.
+    /// decimation. A bucket with missing (non-finite) y values adds a `[x, NaN]` gap marker,
+    /// so lines can be broken there instead of bridging the gap.
     pub fn decimated(&self, x: usize, y: usize, max_points: usize) -> Vec<[f64; 2]> {
         let (Some(xs), Some(ys)) = (self.columns.get(x), self.columns.get(y)) else {
             return Vec::new();
@@ -167,10 +168,12 @@ impl Recorder {
         let mut start = 0;
         while start < n {
             let end = (start + per).min(n);
-            let (mut lo, mut hi): (Option<usize>, Option<usize>) = (None, None);
+            let (mut lo, mut hi, mut gap): (Option<usize>, Option<usize>, Option<usize>) =
+                (None, None, None);
             for i in start..end {
                 let v = ys[i];
                 if !v.is_finite() {
+                    gap = gap.or(Some(i));
                     continue;
                 }
                 if lo.is_none_or(|j| v < ys[j]) {
@@ -180,13 +183,25 @@ impl Recorder {
                     hi = Some(i);
                 }
             }
-            let mut pick: Vec<usize> = lo.into_iter().chain(hi).collect();
+            let mut pick: Vec<usize> = lo.into_iter().chain(hi).chain(gap).collect();
             pick.sort_unstable();
             pick.dedup();
-            out.extend(pick.into_iter().map(|i| [xs[i], ys[i]]));
+            out.extend(
+                pick.into_iter()
+                    .map(|i| [xs[i], if ys[i].is_finite() { ys[i] } else { f64::NAN }]),
+            );
             start = end;
         }
         out
+    }
+
+    /// Splits decimated points at their gap markers into drawable pieces.
+    pub fn split_at_gaps(points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
+        points
+            .split(|p| !p[1].is_finite())
+            .filter(|s| !s.is_empty())
+            .map(<[_]>::to_vec)
+            .collect()
     }
 
     /// Writes all held rows as CSV with a `name [unit]` header.
@@ -248,8 +263,22 @@ mod tests {
         }
         let pts = r.decimated(0, 1, 200);
         assert!(pts.len() <= 202, "{}", pts.len());
+        assert!(pts.iter().all(|p| p[1].is_finite()));
         assert!(pts.iter().any(|p| p == &[4321.0, 50.0]));
         assert!(pts.windows(2).all(|w| w[0][0] < w[1][0]));
+    }
+
+    #[test]
+    fn gaps_break_the_line() {
+        let mut r = rec(100);
+        for i in 0..100 {
+            let y = if (40..45).contains(&i) { f64::NAN } else { 1.0 };
+            r.push(&[i as f64, y]);
+        }
+        let pieces = Recorder::split_at_gaps(&r.decimated(0, 1, 1000));
+        assert_eq!(pieces.len(), 2);
+        assert_eq!(pieces[0].last().unwrap()[0], 39.0);
+        assert_eq!(pieces[1].first().unwrap()[0], 45.0);
     }
 
     #[test]

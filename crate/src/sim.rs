@@ -238,9 +238,11 @@ const ERRORS: [(&str, &str, SeriesGroup); 7] = [
     ("err_z_deg", "deg", SeriesGroup::Error),
 ];
 
-/// |w| above which (u, v) are not recorded (the point is off any plot; the sphere view
-/// uses the chart-free vertical k instead).
-const W_RECORD_LIMIT: f64 = 1e6;
+/// |w| above which (u, v) are recorded as missing: the point is then within ~11° of the
+/// pole S, where paper 3's chart has no numerical meaning (the (u, v, z) integrator has
+/// switched to s = 1/w) and the values would swamp every plot. The chart-free vertical
+/// k_x, k_y, k_z is always recorded.
+const W_RECORD_LIMIT: f64 = 10.0;
 
 fn push_attitude(row: &mut Vec<f64>, q: Option<&UnitQuaternion<f64>>, wz: Option<&WzAttitude>) {
     let wz = wz.copied().or_else(|| q.map(WzAttitude::from_quaternion));

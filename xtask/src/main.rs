@@ -28,6 +28,8 @@ commands:
   serve [--port N] [--no-opt]   build dist/ and serve it on 127.0.0.1:N (default 8080)
   dist [--no-opt]               build dist/ only
   test                          run every check and test suite (what CI runs)
+  bench                         time every lab natively (attlab bench) and in headless
+                                Chromium (wasm criterion bench of the labs' timing items)
 
 --no-opt skips wasm-opt (faster build, bigger wasm).";
 
@@ -48,6 +50,8 @@ enum Task {
     },
     /// Everything CI runs.
     Test,
+    /// Native and wasm timings (never part of `test`: these machines are noisy).
+    Bench,
     /// Print usage.
     Help,
 }
@@ -80,6 +84,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
         "serve" => Ok(Task::Serve { port, optimise }),
         "dist" => Ok(Task::Dist { optimise }),
         "test" => Ok(Task::Test),
+        "bench" => Ok(Task::Bench),
         "help" | "--help" | "-h" => Ok(Task::Help),
         other => Err(format!("unknown command `{other}`")),
     }
@@ -101,11 +106,34 @@ fn run(task: Task) -> cmd::Result<()> {
         }
         Task::Dist { optimise } => site::build(optimise).map(|_| ()),
         Task::Test => suite::run(),
+        Task::Bench => bench(),
         Task::Help => {
             println!("{USAGE}");
             Ok(())
         }
     }
+}
+
+/// `attlab bench` natively, then the wasm criterion bench in headless Chromium.
+fn bench() -> cmd::Result<()> {
+    tools::ensure_components()?;
+    tools::ensure_browser()?;
+    tools::ensure_wasm_tools(false)?;
+    let mut native = cmd::cargo();
+    native.args(["run", "--release", "-p", "attlab", "--", "bench"]);
+    cmd::run(&mut native)?;
+    let mut wasm = cmd::cargo();
+    wasm.args([
+        "bench",
+        "--target",
+        tools::WASM_TARGET,
+        "-p",
+        "attlab-tests",
+        "--bench",
+        "wasm_kinematics",
+    ]);
+    wasm.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    cmd::run(&mut wasm)
 }
 
 fn main() -> ExitCode {
@@ -138,6 +166,7 @@ mod tests {
     fn parses_commands() {
         assert_eq!(parse(&args(&[])), Ok(Task::Help));
         assert_eq!(parse(&args(&["test"])), Ok(Task::Test));
+        assert_eq!(parse(&args(&["bench"])), Ok(Task::Bench));
         assert_eq!(
             parse(&args(&["dist", "--no-opt"])),
             Ok(Task::Dist { optimise: false })

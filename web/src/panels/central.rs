@@ -82,7 +82,7 @@ fn chart_caption(app: &AttLabApp) -> String {
             })
         })
         .collect();
-    charts.join(" · ")
+    charts.join("\n")
 }
 
 fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sphere::SphereTrack> {

@@ -124,7 +124,7 @@ pub fn show(
     let log_cov = state.log_covariance && tab == Tab::Group(SeriesGroup::Covariance);
     let envelope = state.show_envelope && tab == Tab::Group(SeriesGroup::Error);
     Plot::new(("series_plot", format!("{tab:?}")))
-        .legend(Legend::default())
+        .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label("t [s]")
         .show(ui, |plot| {
             for (i, color) in lines {
@@ -139,7 +139,9 @@ pub fn show(
                     pts.iter_mut().for_each(|p| p[1] = p[1].log10());
                     label = format!("log10 {label}");
                 }
-                plot.line(Line::new(label, pts).color(color).width(1.4));
+                for piece in Recorder::split_at_gaps(&pts) {
+                    plot.line(Line::new(label.clone(), piece).color(color).width(1.4));
+                }
             }
             if envelope {
                 for (i, spec) in rec

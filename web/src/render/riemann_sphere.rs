@@ -253,7 +253,11 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
         .collect();
     Plot::new("w_plane")
         .data_aspect(1.0)
-        .legend(Legend::default())
+        .legend(
+            Legend::default()
+                .text_style(egui::TextStyle::Small)
+                .background_alpha(0.6),
+        )
         .include_x(-2.0)
         .include_x(2.0)
         .include_y(-2.0)
