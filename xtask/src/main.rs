@@ -133,6 +133,8 @@ fn bench() -> cmd::Result<()> {
         "wasm_kinematics",
     ]);
     wasm.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    // The criterion run is one long synchronous call in the page (~10 s per item).
+    wasm.env("WASM_BINDGEN_TEST_TIMEOUT", "600");
     cmd::run(&mut wasm)
 }
 

@@ -262,6 +262,7 @@ fn bench(steps: usize) {
                 ns
             );
         }
+        print_timings(*lab, steps * 10);
     }
     let _ = std::io::stdout().flush();
 }
