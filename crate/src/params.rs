@@ -50,6 +50,9 @@ pub struct ParamSpec {
     pub help: &'static str,
     /// True when a change only takes effect at the next reset (e.g. an initial condition).
     pub needs_reset: bool,
+    /// Key of another parameter that must be non-zero for this one to act (e.g. the time of
+    /// an impulse acts only when the impulse has a size).
+    pub requires: Option<&'static str>,
 }
 
 impl ParamSpec {
@@ -73,6 +76,7 @@ impl ParamSpec {
             kind: ParamKind::Real,
             help: "",
             needs_reset: false,
+            requires: None,
         }
     }
 
@@ -96,6 +100,14 @@ impl ParamSpec {
     pub const fn on_reset(self) -> Self {
         Self {
             needs_reset: true,
+            ..self
+        }
+    }
+
+    /// Acts only while parameter `key` is non-zero.
+    pub const fn requires(self, key: &'static str) -> Self {
+        Self {
+            requires: Some(key),
             ..self
         }
     }

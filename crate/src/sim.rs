@@ -153,6 +153,7 @@ impl Simulation {
     /// One fixed step.
     pub fn step(&mut self) {
         let dt_s = self.dt_s();
+        self.run.truth.draw_noise(&mut self.rng);
         self.run.truth.step(dt_s);
         let truth = self.run.truth.state();
         let measurements = self.run.sensors.sample(&truth, dt_s, &mut self.rng);
@@ -185,6 +186,12 @@ impl Simulation {
             push_attitude(&mut self.row, est.q_ref_from_body.as_ref(), est.wz.as_ref());
             push_rate(&mut self.row, est.rate_body_rad_s.as_ref());
             push_angle(&mut self.row, est.angle_rad, truth.angle_rad);
+            if truth.angle_rad.is_some() {
+                let rate_err = est
+                    .rate_body_rad_s
+                    .map_or(f64::NAN, |r| (r.z - truth.rate_body_rad_s.z).to_degrees());
+                self.row.push(rate_err);
+            }
             push_errors(&mut self.row, &truth, &est);
             pad(&mut self.row, &est.covariance, e.covariance_names().len());
             pad(&mut self.row, &est.innovation, e.innovation_names().len());
@@ -375,6 +382,11 @@ fn series_for(run: &LabRun) -> Vec<SeriesSpec> {
             s.push(SeriesSpec::new(
                 format!("{id}.angle_err_deg"),
                 "deg",
+                SeriesGroup::Error,
+            ));
+            s.push(SeriesSpec::new(
+                format!("{id}.rate_err_deg_s"),
+                "deg/s",
                 SeriesGroup::Error,
             ));
         }

@@ -49,6 +49,9 @@ enum Command {
         /// Parameter override `key=value` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// A named preset of the lab (see `attlab labs`), applied before `--set`.
+        #[arg(long)]
+        preset: Option<String>,
     },
     /// Time one simulation step of every lab and one step of every estimator.
     Bench {
@@ -73,7 +76,8 @@ pub fn main() -> ExitCode {
             duration,
             csv,
             set,
-        } => run(&lab, seed, duration, &csv, &set).map(|()| true),
+            preset,
+        } => run(&lab, seed, duration, &csv, preset.as_deref(), &set).map(|()| true),
         Command::Bench { steps } => {
             bench(steps.max(10));
             Ok(true)
@@ -96,6 +100,9 @@ fn find_lab(id: &str) -> Result<&'static dyn Lab, String> {
 fn list_labs() {
     for lab in labs::all() {
         println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
+        for p in lab.presets() {
+            println!("  --preset {} ({})", p.name, p.help);
+        }
         for p in lab.params() {
             println!(
                 "  --set {}=<{} … {}> {} (default {}) {}",
@@ -134,10 +141,28 @@ fn run(
     seed: u64,
     duration: Option<f64>,
     csv_path: &Path,
+    preset: Option<&str>,
     set: &[String],
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
     let mut params = ParamValues::defaults(lab.params());
+    if let Some(name) = preset {
+        let names = || {
+            lab.presets()
+                .iter()
+                .map(|p| p.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let p = lab
+            .presets()
+            .iter()
+            .find(|p| p.name == name)
+            .ok_or_else(|| format!("no preset `{name}` in {lab_id} (presets: {})", names()))?;
+        for (k, v) in p.values {
+            params.set(lab.params(), k, *v).map_err(|e| e.to_string())?;
+        }
+    }
     let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
     if !errors.is_empty() {
         return Err(errors

@@ -5,12 +5,15 @@
 
 mod accel_wz;
 mod blended_wz;
+mod one_axis_kf;
 mod quaternion_integration;
+pub mod scalar_kf;
 mod wz_integration;
 mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
+pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
 pub use quaternion_integration::QuaternionIntegration;
 pub use wz_integration::WzIntegration;
 pub use wz_kalman::{ACCEL_NOISE_KEY, KF_Q_SCALE_KEY, WzKalman};

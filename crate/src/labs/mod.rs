@@ -2,9 +2,11 @@
 //! [`all`]. The UI's lab picker, the CLI and the conformance tests iterate that one list.
 
 mod free_rotation;
+mod suspended_mockup;
 mod wz_sphere;
 
 pub use free_rotation::FreeRotation;
+pub use suspended_mockup::{P1ErrorStats, SuspendedMockup, p1_run_stats};
 pub use wz_sphere::{WzSphere, motion_of};
 
 use crate::estimators::{Estimator, Measurements};
@@ -15,7 +17,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {
-    &[&FreeRotation, &WzSphere]
+    &[&FreeRotation, &SuspendedMockup, &WzSphere]
 }
 
 /// The lab with this id.
@@ -56,6 +58,8 @@ pub trait TruthModel: Send {
     }
     /// Values of [`TruthModel::extra_series`], in order.
     fn extra_values(&self, _out: &mut Vec<f64>) {}
+    /// Draws the random inputs (e.g. a disturbance torque) for the next step.
+    fn draw_noise(&mut self, _rng: &mut ChaCha8Rng) {}
 }
 
 /// The lab's sensors.
@@ -148,6 +152,18 @@ pub struct Figure {
     pub series: &'static [&'static str],
 }
 
+/// A named set of parameter values (e.g. a real instrument) that the UI offers as a button
+/// and the CLI as `--preset NAME`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Preset {
+    /// Button label.
+    pub name: &'static str,
+    /// What it stands for.
+    pub help: &'static str,
+    /// (parameter key, value) pairs it sets.
+    pub values: &'static [(&'static str, f64)],
+}
+
 /// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).
 pub struct TimingItem {
     /// What is timed.
@@ -180,6 +196,10 @@ pub trait Lab: Sync {
     fn figures(&self) -> &'static [Figure] {
         &[]
     }
+    /// Named parameter sets (instruments, scenarios).
+    fn presets(&self) -> &'static [Preset] {
+        &[]
+    }
     /// Work whose cost the lab compares (timed by the CLI, never by tests).
     fn timing_items(&self) -> Vec<TimingItem> {
         Vec::new()
@@ -197,6 +217,7 @@ impl LabRun {
     ) -> Vec<Measurements> {
         (0..steps)
             .map(|_| {
+                self.truth.draw_noise(rng);
                 self.truth.step(dt_s);
                 let truth = self.truth.state();
                 self.sensors.sample(&truth, dt_s, rng)

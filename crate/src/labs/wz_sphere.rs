@@ -97,7 +97,9 @@ const PARAMS: &[ParamSpec] = &[
     .help("White noise per axis (paper: 0.01 g); accelerometer-only (uᵃ, vᵃ) is noisy."),
     ParamSpec::real("bump_g", "Lateral bump", "g", 0.0, 2.0, 0.0)
         .help("A 2-s horizontal acceleration pulse: accelerometers cannot tell it from tilt."),
-    ParamSpec::real("bump_time_s", "Bump time", "s", 0.0, 100.0, 50.0).help("When the bump peaks."),
+    ParamSpec::real("bump_time_s", "Bump time", "s", 0.0, 100.0, 50.0)
+        .requires("bump_g")
+        .help("When the bump peaks."),
     ParamSpec::real(
         "blend_time_const_s",
         "Blend time constant T",

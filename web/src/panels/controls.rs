@@ -96,9 +96,31 @@ fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
             commands.push(Command::RestoreDefaults);
         }
     });
+    let presets = app.sim.lab().presets();
+    if !presets.is_empty() {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Presets:");
+            for preset in presets {
+                if ui
+                    .button(preset.name)
+                    .on_hover_text(format!(
+                        "{} — parameters marked 'applies at Reset' need Reset",
+                        preset.help
+                    ))
+                    .clicked()
+                {
+                    commands.extend(preset.values.iter().map(|(k, v)| Command::SetParam(k, *v)));
+                }
+            }
+        });
+    }
     for spec in app.sim.lab().params() {
         let value = app.sim.params().get(spec.key);
-        if let Some(v) = param_widget(ui, spec, value) {
+        let active = spec.requires.is_none_or(|k| app.sim.params().get(k) != 0.0);
+        let changed = ui
+            .add_enabled_ui(active, |ui| param_widget(ui, spec, value))
+            .inner;
+        if let Some(v) = changed {
             commands.push(Command::SetParam(spec.key, v));
         }
     }

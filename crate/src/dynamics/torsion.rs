@@ -1,0 +1,116 @@
+//! Paper 1's truth: a body on a thin string, twisting about the vertical as a damped torsion
+//! pendulum, I φ̈ = −f φ − 2ζ√(fI) φ̇ + τ (the 1-DOF model of §3.3 plus damping and an
+//! external torque), with the torsion stiffness from the string: f = G·I_p/L, I_p = πd⁴/32.
+
+use crate::math::rk4_step;
+use nalgebra::Vector2;
+
+/// Shear moduli (Pa) of the string materials the lab offers.
+pub const STRING_MATERIALS: &[(&str, f64)] = &[
+    ("steel", 8.0e10),
+    ("titanium alloy", 4.1e10),
+    ("tungsten", 1.61e11),
+    ("nylon", 1.0e9),
+];
+
+/// Torsion stiffness f = G·I_p/L (N·m/rad) of a round string.
+///
+/// ```
+/// # use attlab::dynamics::string_stiffness_n_m_per_rad;
+/// // Paper 1: steel, d = 0.35 mm gives G·I_p ≈ 1.18e-4 N·m².
+/// let g_ip = string_stiffness_n_m_per_rad(8.0e10, 0.35e-3, 1.0);
+/// assert!((g_ip - 1.18e-4).abs() < 0.01e-4);
+/// ```
+pub fn string_stiffness_n_m_per_rad(shear_modulus_pa: f64, diameter_m: f64, length_m: f64) -> f64 {
+    let polar_moment_m4 = std::f64::consts::PI * diameter_m.powi(4) / 32.0;
+    shear_modulus_pa * polar_moment_m4 / length_m
+}
+
+/// The damped torsion pendulum.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TorsionPendulum {
+    /// Moment of inertia about the string (kg·m²).
+    pub inertia_kg_m2: f64,
+    /// Torsion stiffness (N·m/rad).
+    pub stiffness_n_m_per_rad: f64,
+    /// Damping ratio ζ.
+    pub damping_ratio: f64,
+    /// External torque held over a step (N·m).
+    pub torque_n_m: f64,
+    /// (φ rad, φ̇ rad/s).
+    pub state: Vector2<f64>,
+}
+
+impl TorsionPendulum {
+    /// Natural angular frequency Ω = √(f/I) (rad/s).
+    pub fn omega_rad_s(&self) -> f64 {
+        (self.stiffness_n_m_per_rad / self.inertia_kg_m2).sqrt()
+    }
+
+    /// Period T = 2π/Ω (s).
+    pub fn period_s(&self) -> f64 {
+        std::f64::consts::TAU / self.omega_rad_s()
+    }
+
+    /// Advance by `dt_s` (RK4).
+    pub fn step(&mut self, dt_s: f64) {
+        let (w, zeta, accel) = (
+            self.omega_rad_s(),
+            self.damping_ratio,
+            self.torque_n_m / self.inertia_kg_m2,
+        );
+        self.state = rk4_step(0.0, &self.state, dt_s, |_, x| {
+            Vector2::new(x[1], -w * w * x[0] - 2.0 * zeta * w * x[1] + accel)
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn undamped_pendulum_returns_after_one_period() {
+        let mut p = TorsionPendulum {
+            inertia_kg_m2: 0.5,
+            stiffness_n_m_per_rad: 5.9e-5,
+            damping_ratio: 0.0,
+            torque_n_m: 0.0,
+            state: Vector2::new(1.0, 0.0),
+        };
+        let t = p.period_s();
+        let n = 100_000;
+        for _ in 0..n {
+            p.step(t / n as f64);
+        }
+        assert!(
+            (p.state[0] - 1.0).abs() < 1e-9 && p.state[1].abs() < 1e-9,
+            "{:?}",
+            p.state
+        );
+    }
+
+    #[test]
+    fn damped_motion_matches_the_analytic_solution() {
+        let mut p = TorsionPendulum {
+            inertia_kg_m2: 0.5,
+            stiffness_n_m_per_rad: 5.9e-5,
+            damping_ratio: 0.05,
+            torque_n_m: 0.0,
+            state: Vector2::new(1.0, 0.0),
+        };
+        let (w, t) = (p.omega_rad_s(), p.period_s());
+        let n = 100_000;
+        for _ in 0..n {
+            p.step(t / n as f64);
+        }
+        // φ(t) = e^{−ζΩt}[cos Ω_d t + (ζΩ/Ω_d) sin Ω_d t], Ω_d = Ω√(1−ζ²), from φ = 1, φ̇ = 0.
+        let wd = w * (1.0 - 0.05f64.powi(2)).sqrt();
+        let expected = (-0.05 * w * t).exp() * ((wd * t).cos() + 0.05 * w / wd * (wd * t).sin());
+        assert!(
+            (p.state[0] - expected).abs() < 1e-9,
+            "{} vs {expected}",
+            p.state[0]
+        );
+    }
+}

@@ -1,0 +1,372 @@
+//! Lab "p1": paper 1 — a mock-up suspended on a thin string twists about the vertical (a
+//! damped torsion pendulum); a one-axis rate gyro is the only sensor (Ivanov & Ovchinnikov,
+//! "Determination of the orientation of a suspended mock-up using a one-axis gyroscope",
+//! KIAM RAS preprint). Estimators: direct integration, the permanent-rotation KF and the
+//! torsional KF, each with covariance matching over a window of N measurements (or none).
+
+use super::{Figure, Lab, LabRun, Preset, Reproduction, SensorModel, TruthModel, TruthState};
+use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
+use crate::estimators::{AngleIntegration, Estimator, Measurements, OneAxisKf, OneAxisModel};
+use crate::params::{ParamSpec, ParamValues};
+use crate::record::{SeriesGroup, SeriesSpec};
+use crate::sensors::{Averager, WhiteNoise, quantize};
+use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
+use rand_chacha::ChaCha8Rng;
+
+#[path = "suspended_mockup_reproduce.rs"]
+mod reproduce;
+
+pub use reproduce::{ErrorStats as P1ErrorStats, run_stats as p1_run_stats};
+
+/// The paper-1 lab.
+pub struct SuspendedMockup;
+
+const MATERIALS: &[&str] = &[
+    "steel (G = 80 GPa)",
+    "titanium alloy (41 GPa)",
+    "tungsten (161 GPa)",
+    "nylon (1 GPa)",
+];
+
+const Q_USES: &[&str] = &[
+    "process noise Q for the next window",
+    "reset P := Q_N (saw-tooth)",
+];
+
+const PRESETS: &[Preset] = &[
+    Preset {
+        name: "VG-910D",
+        help: "Fizoptika fibre-optic gyro: ±200 °/s, 24-bit output at 300 Hz (the paper's lab gyro)",
+        values: &[
+            ("gyro_range_deg_s", 200.0),
+            ("gyro_bits", 24.0),
+            ("input_rate_hz", 300.0),
+        ],
+    },
+    Preset {
+        name: "ADIS16100",
+        help: "Analog Devices MEMS gyro: ±300 °/s, 12-bit output, 1000 Hz (rate uncertain in the OCR)",
+        values: &[
+            ("gyro_range_deg_s", 300.0),
+            ("gyro_bits", 12.0),
+            ("input_rate_hz", 1000.0),
+        ],
+    },
+];
+
+const PARAMS: &[ParamSpec] = &[
+    ParamSpec::choice("string_material", "String material", MATERIALS, 0).help("Sets the shear modulus G in f = G·I_p/L."),
+    ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴."),
+    ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 2.0).log().help("Stiffness f = G·I_p/L."),
+    ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.5).log().help("Period T = 2π√(I/f)."),
+    ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.01).log().help("Air and string losses (not given in the paper)."),
+    ParamSpec::real("initial_angle_deg", "Initial angle φ₀", "°", -720.0, 720.0, 360.0).on_reset().help("Paper: 360°."),
+    ParamSpec::real("initial_rate_deg_s", "Initial rate", "°/s", -20.0, 20.0, 0.0).on_reset(),
+    ParamSpec::real("init_error_deg", "Filters' initial angle error", "°", -180.0, 180.0, 0.0).on_reset().help("The paper tried ≈100°: the torsional KF stayed accurate."),
+    ParamSpec::real("p0_angle_deg", "Filters' initial angle σ", "°", 0.001, 360.0, 0.01).log().on_reset().help("√a₀ of the initial covariance (paper: a₀ = 1e-4 deg², i.e. 0.01°). Raise it with a wrong initial angle."),
+    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.04).log().help("White noise per input sample (paper: 0.04)."),
+    ParamSpec::real("gyro_range_deg_s", "Gyro range ±", "°/s", 1.0, 1000.0, 200.0).log().help("Readings clip here (VG-910D: 200, ADIS16100: 300)."),
+    ParamSpec::real("gyro_bits", "Gyro resolution", "bit", 4.0, 24.0, 24.0).integer().help("Quantisation step = 2·range/2^bits."),
+    ParamSpec::real("input_rate_hz", "Gyro output rate", "Hz", 10.0, 2000.0, 300.0).log().integer().on_reset().help("The gyro's own rate (VG-910D: 300 Hz)."),
+    ParamSpec::real("filter_rate_hz", "Filter rate", "Hz", 1.0, 300.0, 100.0).log().integer().on_reset().help("Averaging takes the input rate down to this (paper: 100 Hz)."),
+    ParamSpec::real("kf_window", "Adaptation window N", "", 0.0, 5000.0, 100.0).log().integer().help("Covariance matching every N measurements; 0 = off (Q = 0: P collapses)."),
+    ParamSpec::choice("kf_q_use", "Q_N is used as", Q_USES, 0).help("The paper is ambiguous: process noise for the next window, or a reset of P (saw-tooth P)."),
+    ParamSpec::toggle("kf_adapt_r", "Adapt R as well", false),
+    ParamSpec::real("kf_period_error_pct", "Torsional KF period error", "%", -50.0, 100.0, 0.0).help("Model period T = true T·(1 + e): set it wrong on purpose."),
+    ParamSpec::real("impulse_time_s", "Torque impulse at", "s", 0.0, 600.0, 5.0).requires("impulse_deg_s"),
+    ParamSpec::real("impulse_deg_s", "Impulse size (rate jump)", "°/s", -10.0, 10.0, 0.0).help("A kick that changes φ̇ at once."),
+    ParamSpec::real("swing_amp_deg", "Pendulum swing", "°", 0.0, 20.0, 0.0).help("Swing about a horizontal axis; leaks into the gyro through its misalignment."),
+    ParamSpec::real("swing_misalign_deg", "Gyro misalignment", "°", 0.0, 10.0, 0.0).help("Tilt of the gyro axis towards the swing axis: the swing leaks in, and the twist rate reads cos(δ) too small."),
+    ParamSpec::real("shake_torque_n_m", "Suspension shaking (torque σ)", "N·m", 0.0, 1e-3, 0.0).log().help("Random torque from a shaking suspension point."),
+];
+
+const FIGURES: &[Figure] = &[
+    Figure {
+        title: "Angle",
+        series: &[
+            "truth.angle_deg",
+            "integration.angle_deg",
+            "kf-rotation.angle_deg",
+            "kf-torsion.angle_deg",
+        ],
+    },
+    Figure {
+        title: "Rate",
+        series: &[
+            "integration.rate_z_deg_s",
+            "kf-rotation.rate_z_deg_s",
+            "kf-torsion.rate_z_deg_s",
+            "truth.rate_z_deg_s",
+        ],
+    },
+    Figure {
+        title: "Angle error",
+        series: &[
+            "kf-rotation.angle_err_deg",
+            "kf-torsion.angle_err_deg",
+            "integration.angle_err_deg",
+        ],
+    },
+    Figure {
+        title: "Rate error vs truth",
+        series: &["kf-rotation.rate_err_deg_s", "kf-torsion.rate_err_deg_s"],
+    },
+    Figure {
+        title: "Rate error vs sensor",
+        series: &[
+            "kf-rotation.rate_minus_sensor_deg_s",
+            "kf-torsion.rate_minus_sensor_deg_s",
+        ],
+    },
+    Figure {
+        title: "P: a, b, c",
+        series: &[
+            "kf-rotation.a_rad2",
+            "kf-rotation.b_rad2_s",
+            "kf-rotation.c_rad2_s2",
+            "kf-torsion.a_rad2",
+            "kf-torsion.b_rad2_s",
+            "kf-torsion.c_rad2_s2",
+        ],
+    },
+];
+
+/// Input rate (Hz) and averaging count of the selected gyro.
+pub fn rates(p: &ParamValues) -> (f64, usize) {
+    let input = p.get("input_rate_hz").max(1.0);
+    let m = (input / p.get("filter_rate_hz").max(1.0)).round().max(1.0) as usize;
+    (input, m)
+}
+
+/// True period T (s) from the string and the body.
+pub fn true_period_s(p: &ParamValues) -> f64 {
+    pendulum(p, Vector2::zeros()).period_s()
+}
+
+fn pendulum(p: &ParamValues, state: Vector2<f64>) -> TorsionPendulum {
+    let g = STRING_MATERIALS
+        .get(p.index("string_material"))
+        .map_or(8.0e10, |m| m.1);
+    let f = string_stiffness_n_m_per_rad(
+        g,
+        p.get("string_diameter_mm") * 1e-3,
+        p.get("string_length_m"),
+    );
+    TorsionPendulum {
+        inertia_kg_m2: p.get("inertia_kg_m2"),
+        stiffness_n_m_per_rad: f,
+        damping_ratio: p.get("damping_ratio"),
+        torque_n_m: 0.0,
+        state,
+    }
+}
+
+fn torsion_model(p: &ParamValues) -> OneAxisModel {
+    let t_model = true_period_s(p) * (1.0 + p.get("kf_period_error_pct") / 100.0);
+    OneAxisModel::Torsion {
+        omega_rad_s: std::f64::consts::TAU / t_model.max(1e-6),
+    }
+}
+
+impl Lab for SuspendedMockup {
+    fn id(&self) -> &'static str {
+        "p1"
+    }
+
+    fn title(&self) -> &'static str {
+        "Paper 1: suspended mock-up, one-axis gyro"
+    }
+
+    fn paper(&self) -> &'static str {
+        "Ivanov & Ovchinnikov, one-axis gyroscope and a suspended mock-up, KIAM RAS preprint"
+    }
+
+    fn summary(&self) -> &'static str {
+        "A body hangs on a thin string and twists about the vertical: Iφ̈ = −fφ − damping, with \
+         f = G·I_p/L and I_p = πd⁴/32, so T = 2π√(I/f). A one-axis gyro (noise, quantisation, range, \
+         averaging to the filter rate) is the only sensor. Three estimators: direct integration; a \
+         Kalman filter assuming permanent rotation (φ̈ = 0); one assuming torsional oscillation \
+         (Ω = 2π/T from the model — set the period error to see a wrong model). With adaptation off \
+         (N = 0, Q = 0) P collapses, the gain goes to zero and the filters stop listening. \
+         Covariance matching resets P to the spread of the last N corrections: N ≈ 100 works \
+         best in the paper, N = 1000 is worse, N > 2000 poor. Disturbances: a torque impulse, a \
+         pendulum swing leaking into the gyro, suspension shaking, a wrong initial angle."
+    }
+
+    fn params(&self) -> &'static [ParamSpec] {
+        PARAMS
+    }
+
+    fn dt_s(&self, params: &ParamValues) -> f64 {
+        1.0 / rates(params).0
+    }
+
+    fn build(&self, p: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
+        let x0 = Vector2::new(
+            p.get("initial_angle_deg").to_radians(),
+            p.get("initial_rate_deg_s").to_radians(),
+        );
+        let truth = Suspended {
+            pendulum: pendulum(p, x0),
+            t_s: 0.0,
+            kick: (0.0, 0.0),
+            kicked: false,
+            swing: (0.0, 1.0),
+            shake_n_m: 0.0,
+            rng_torque: 0.0,
+        };
+        let mut truth = truth;
+        truth.apply_params(p);
+        let (_, m) = rates(p);
+        let mut sensors = OneAxisGyro {
+            averager: Averager::new(m),
+            sigma_rad_s: 0.0,
+            lsb_rad_s: 0.0,
+            range_rad_s: 0.0,
+            misalign_rad: 0.0,
+        };
+        sensors.apply_params(p);
+        let xe = Vector2::new(x0[0] + p.get("init_error_deg").to_radians(), x0[1]);
+        // Paper's initial P: 1e-4 deg², deg²/s, deg²/s².
+        let a0 = p.get("p0_angle_deg").powi(2).max(1e-4);
+        let p0 = Matrix2::new(a0, 1e-4, 1e-4, 2e-4) * 1f64.to_radians().powi(2);
+        let mut estimators: Vec<Box<dyn Estimator>> = vec![
+            Box::new(AngleIntegration::new(xe[0])),
+            Box::new(OneAxisKf::new(OneAxisModel::PermanentRotation, xe, p0, m)),
+            Box::new(OneAxisKf::new(torsion_model(p), xe, p0, m).with_model_from(torsion_model)),
+        ];
+        estimators.iter_mut().for_each(|e| e.apply_params(p));
+        LabRun {
+            truth: Box::new(truth),
+            sensors: Box::new(sensors),
+            estimators,
+        }
+    }
+
+    fn default_duration_s(&self) -> f64 {
+        600.0
+    }
+
+    fn reproduce(&self) -> Reproduction {
+        reproduce::reproduce()
+    }
+
+    fn figures(&self) -> &'static [Figure] {
+        FIGURES
+    }
+
+    fn presets(&self) -> &'static [Preset] {
+        PRESETS
+    }
+}
+
+/// The body on the string with its disturbances.
+struct Suspended {
+    pendulum: TorsionPendulum,
+    t_s: f64,
+    /// (time s, rate jump rad/s) of the torque impulse.
+    kick: (f64, f64),
+    kicked: bool,
+    /// (amplitude rad, angular frequency rad/s) of the swing about a horizontal axis.
+    swing: (f64, f64),
+    shake_n_m: f64,
+    rng_torque: f64,
+}
+
+impl Suspended {
+    fn swing_angle_and_rate(&self) -> (f64, f64) {
+        let (amp, w) = self.swing;
+        ((w * self.t_s).sin() * amp, (w * self.t_s).cos() * amp * w)
+    }
+}
+
+impl TruthModel for Suspended {
+    fn apply_params(&mut self, p: &ParamValues) {
+        let fresh = pendulum(p, self.pendulum.state);
+        self.pendulum.inertia_kg_m2 = fresh.inertia_kg_m2;
+        self.pendulum.stiffness_n_m_per_rad = fresh.stiffness_n_m_per_rad;
+        self.pendulum.damping_ratio = fresh.damping_ratio;
+        let kick = (p.get("impulse_time_s"), p.get("impulse_deg_s").to_radians());
+        if kick != self.kick {
+            self.kicked = self.t_s >= kick.0 && kick.0 > 0.0;
+            self.kick = kick;
+        }
+        // A pendulum of the string's length: ω = √(g/L).
+        self.swing = (
+            p.get("swing_amp_deg").to_radians(),
+            (9.81 / p.get("string_length_m")).sqrt(),
+        );
+        self.shake_n_m = p.get("shake_torque_n_m");
+    }
+
+    fn step(&mut self, dt_s: f64) {
+        self.pendulum.torque_n_m = self.shake_n_m * self.rng_torque;
+        self.pendulum.step(dt_s);
+        self.t_s += dt_s;
+        if !self.kicked && self.kick.1 != 0.0 && self.t_s >= self.kick.0 {
+            self.pendulum.state[1] += self.kick.1;
+            self.kicked = true;
+        }
+    }
+
+    fn state(&self) -> TruthState {
+        let (theta, theta_dot) = self.swing_angle_and_rate();
+        let phi = self.pendulum.state[0];
+        let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
+            * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), theta);
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: q,
+            rate_body_rad_s: Vector3::new(theta_dot, 0.0, self.pendulum.state[1]),
+            angle_rad: Some(phi),
+        }
+    }
+
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        vec![SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab)]
+    }
+
+    fn extra_values(&self, out: &mut Vec<f64>) {
+        out.push(self.pendulum.period_s());
+    }
+
+    fn draw_noise(&mut self, rng: &mut ChaCha8Rng) {
+        self.rng_torque = WhiteNoise { sigma: 1.0 }.sample(rng);
+    }
+}
+
+/// The one-axis gyro: white noise, quantisation and range at the input rate, then block
+/// averaging down to the filter rate. Its axis is tilted by `misalign` towards the swing axis.
+struct OneAxisGyro {
+    averager: Averager,
+    sigma_rad_s: f64,
+    lsb_rad_s: f64,
+    range_rad_s: f64,
+    misalign_rad: f64,
+}
+
+impl SensorModel for OneAxisGyro {
+    fn apply_params(&mut self, p: &ParamValues) {
+        let (range_deg_s, bits) = (p.get("gyro_range_deg_s"), p.get("gyro_bits"));
+        self.range_rad_s = range_deg_s.to_radians();
+        self.lsb_rad_s = 2.0 * self.range_rad_s / 2f64.powf(bits);
+        self.sigma_rad_s = p.get("gyro_noise_deg_s").to_radians();
+        self.misalign_rad = p.get("swing_misalign_deg").to_radians();
+    }
+
+    fn sample(&mut self, truth: &TruthState, _dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements {
+        let w = truth.rate_body_rad_s;
+        let along_axis = w.z * self.misalign_rad.cos() + w.x * self.misalign_rad.sin();
+        let raw = along_axis
+            + WhiteNoise {
+                sigma: self.sigma_rad_s,
+            }
+            .sample(rng);
+        let reading = quantize(raw, self.lsb_rad_s, self.range_rad_s);
+        Measurements {
+            t_s: truth.t_s,
+            gyro_axis_rad_s: self.averager.push(reading),
+            ..Measurements::default()
+        }
+    }
+}
