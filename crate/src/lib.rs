@@ -15,3 +15,4 @@ pub mod record;
 pub mod sensors;
 pub mod sim;
 pub mod state;
+pub mod sweep;

@@ -7,6 +7,7 @@ use crate::math::{
 };
 use crate::params::{ParamError, ParamValues};
 use crate::record::{Recorder, SeriesGroup, SeriesSpec};
+use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -28,6 +29,7 @@ pub struct Simulation {
     row: Vec<f64>,
     statuses: Vec<EstimatorStatus>,
     history_rows: usize,
+    replay: Option<std::sync::Arc<RateLog>>,
 }
 
 impl Simulation {
@@ -59,9 +61,45 @@ impl Simulation {
             row: Vec::new(),
             statuses,
             history_rows,
+            replay: None,
         };
         sim.record();
         sim
+    }
+
+    /// Runs `lab`'s estimators on a recorded gyro log instead of simulated truth and sensors
+    /// (paper 1's laboratory mode). The step is the log's median sample interval; each step
+    /// delivers the newest logged sample not yet delivered. There is no truth: the "truth"
+    /// series carry the logged rate and NaN angles, so errors are NaN.
+    pub fn replay(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        log: RateLog,
+        history_rows: usize,
+    ) -> Result<Self, String> {
+        log.median_dt_s()
+            .filter(|d| *d > 0.0)
+            .ok_or("the log needs at least two samples with increasing times")?;
+        let mut sim = Self::with_history(lab, params, 0, history_rows);
+        let log = std::sync::Arc::new(log);
+        sim.run.truth = Box::new(LogTruth {
+            log: log.clone(),
+            t_s: 0.0,
+            index: 0,
+        });
+        sim.run.sensors = Box::new(LogSensor {
+            log: log.clone(),
+            next: 0,
+        });
+        sim.replay = Some(log);
+        sim.recorder = Recorder::new(series_for(&sim.run), history_rows);
+        sim.record();
+        Ok(sim)
+    }
+
+    /// The log being replayed, if this is a replay.
+    pub fn replay_log(&self) -> Option<&RateLog> {
+        self.replay.as_deref()
     }
 
     /// The lab.
@@ -89,9 +127,12 @@ impl Simulation {
         self.steps
     }
 
-    /// Current step length (s).
+    /// Current step length (s): the lab's, or a replayed log's median sample interval.
     pub fn dt_s(&self) -> f64 {
-        self.lab.dt_s(&self.params)
+        match self.replay.as_ref().and_then(|l| l.median_dt_s()) {
+            Some(dt) => dt,
+            None => self.lab.dt_s(&self.params),
+        }
     }
 
     /// The recorded series.
@@ -145,9 +186,26 @@ impl Simulation {
         Ok(())
     }
 
-    /// Restarts from t = 0 with `seed` (reseeds the RNG, rebuilds truth and estimators).
+    /// Restarts from t = 0 with `seed` (reseeds the RNG, rebuilds truth and estimators); a
+    /// replay restarts from the start of its log.
     pub fn reset(&mut self, seed: u64) {
-        *self = Self::with_history(self.lab, self.params.clone(), seed, self.history_rows);
+        let fresh = match self.replay.take() {
+            Some(log) => Self::replay(
+                self.lab,
+                self.params.clone(),
+                (*log).clone(),
+                self.history_rows,
+            ),
+            None => Ok(Self::with_history(
+                self.lab,
+                self.params.clone(),
+                seed,
+                self.history_rows,
+            )),
+        };
+        if let Ok(fresh) = fresh {
+            *self = fresh;
+        }
     }
 
     /// One fixed step.
@@ -416,4 +474,69 @@ fn series_for(run: &LabRun) -> Vec<SeriesSpec> {
     }
     s.extend(run.truth.extra_series());
     s
+}
+
+/// "Truth" of a replay: time runs, the logged rate stands in for the true rate, the angle is
+/// unknown.
+struct LogTruth {
+    log: std::sync::Arc<RateLog>,
+    t_s: f64,
+    index: usize,
+}
+
+impl crate::labs::TruthModel for LogTruth {
+    fn apply_params(&mut self, _params: &ParamValues) {}
+
+    fn step(&mut self, dt_s: f64) {
+        self.t_s += dt_s;
+        while self.index + 1 < self.log.t_s.len()
+            && self.log.t_s[self.index + 1] - self.log.t_s[0] <= self.t_s + 1e-9
+        {
+            self.index += 1;
+        }
+    }
+
+    fn state(&self) -> TruthState {
+        let rate = self
+            .log
+            .rate_rad_s
+            .get(self.index)
+            .copied()
+            .unwrap_or(f64::NAN);
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: UnitQuaternion::identity(),
+            rate_body_rad_s: Vector3::new(0.0, 0.0, rate),
+            angle_rad: Some(f64::NAN),
+        }
+    }
+}
+
+/// Delivers each logged sample once, at the first step at or after its time.
+struct LogSensor {
+    log: std::sync::Arc<RateLog>,
+    next: usize,
+}
+
+impl crate::labs::SensorModel for LogSensor {
+    fn apply_params(&mut self, _params: &ParamValues) {}
+
+    fn sample(
+        &mut self,
+        truth: &TruthState,
+        _dt_s: f64,
+        _rng: &mut ChaCha8Rng,
+    ) -> crate::estimators::Measurements {
+        let t0 = self.log.t_s.first().copied().unwrap_or(0.0);
+        let mut latest = None;
+        while self.next < self.log.t_s.len() && self.log.t_s[self.next] - t0 <= truth.t_s + 1e-9 {
+            latest = Some(self.log.rate_rad_s[self.next]);
+            self.next += 1;
+        }
+        crate::estimators::Measurements {
+            t_s: truth.t_s,
+            gyro_axis_rad_s: latest,
+            ..Default::default()
+        }
+    }
 }

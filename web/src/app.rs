@@ -6,12 +6,17 @@ use crate::platform;
 use crate::render::{body3d, plots, riemann_sphere};
 use attlab::labs::{self, Lab};
 use attlab::params::ParamValues;
+use attlab::sensors::{RateUnit, TimeUnit, parse_rate_log};
 use attlab::sim::Simulation;
 use attlab::state::UrlState;
+use attlab::sweep::Sweep;
 use web_time::{Duration, Instant};
 
 /// Time the simulation may take per frame before it falls behind real time.
 const STEP_BUDGET: Duration = Duration::from_millis(12);
+
+/// Wall time per frame given to a background sweep.
+const SWEEP_BUDGET: Duration = Duration::from_millis(10);
 
 /// A message for the user (bad URL item, export result, divergence).
 #[derive(Clone, Debug, PartialEq)]
@@ -59,6 +64,13 @@ pub struct AttLabApp {
     pub show_explain: bool,
     /// Status line values.
     pub stats: Stats,
+    /// A parameter sweep running in the background (index into the lab's sweeps, sweep).
+    pub sweep: Option<(usize, Sweep)>,
+    /// Units of a gyro log to load.
+    pub log_units: (RateUnit, TimeUnit),
+    /// Name and sample count of the log being replayed.
+    pub replaying: Option<(String, usize)>,
+    file_slot: platform::FileSlot,
     gpu_ready: bool,
     app_errors: Vec<String>,
     frames: u64,
@@ -103,6 +115,10 @@ impl AttLabApp {
             messages: Vec::new(),
             show_explain: false,
             stats: Stats::default(),
+            sweep: None,
+            log_units: (RateUnit::DegPerS, TimeUnit::Seconds),
+            replaying: None,
+            file_slot: platform::FileSlot::default(),
             gpu_ready: false,
             app_errors: Vec::new(),
             frames: 0,
@@ -117,6 +133,8 @@ impl AttLabApp {
         match command {
             Command::SelectLab(lab) => {
                 self.sim = Simulation::new(lab, ParamValues::defaults(lab.params()), self.seed);
+                self.sweep = None;
+                self.replaying = None;
                 self.plots.tab = default_tab(lab);
                 self.ghost_index = 0;
                 self.step_debt = 0.0;
@@ -139,10 +157,89 @@ impl AttLabApp {
             }
             Command::StepOnce => self.sim.step(),
             Command::ExportCsv => self.export_csv(),
+            Command::RunSweep(i) => {
+                if let Some(spec) = self.sim.lab().sweeps().get(i) {
+                    self.sweep = Some((
+                        i,
+                        Sweep::new(self.sim.lab(), *spec, self.sim.params().clone(), self.seed),
+                    ));
+                }
+            }
+            Command::CancelSweep => self.sweep = None,
+            Command::LoadLog => platform::pick_text_file(&self.file_slot),
+            Command::EndReplay => {
+                self.replaying = None;
+                self.sim = Simulation::new(self.sim.lab(), self.sim.params().clone(), self.seed);
+            }
             Command::Dismiss(i) => {
                 if i < self.messages.len() {
                     self.messages.remove(i);
                 }
+            }
+        }
+    }
+
+    /// Takes a picked gyro log, if one arrived, and starts replaying it (bad lines are
+    /// listed as messages with their line numbers; the good ones are used).
+    fn take_picked_log(&mut self) {
+        let Some(picked) = self.file_slot.borrow_mut().take() else {
+            return;
+        };
+        let (name, text) = match picked {
+            Ok(x) => x,
+            Err(e) => {
+                return self.messages.push(Message {
+                    text: e,
+                    is_error: true,
+                });
+            }
+        };
+        let log = parse_rate_log(&text, self.log_units.0, self.log_units.1);
+        const SHOWN: usize = 12;
+        for e in log.errors.iter().take(SHOWN) {
+            self.messages.push(Message {
+                text: format!("{name}: skipped {e}"),
+                is_error: true,
+            });
+        }
+        if log.errors.len() > SHOWN {
+            self.messages.push(Message {
+                text: format!("{name}: … and {} more bad lines", log.errors.len() - SHOWN),
+                is_error: true,
+            });
+        }
+        let samples = log.t_s.len();
+        match Simulation::replay(
+            self.sim.lab(),
+            self.sim.params().clone(),
+            log,
+            attlab::sim::DEFAULT_HISTORY_ROWS,
+        ) {
+            Ok(sim) => {
+                self.sim = sim;
+                self.sweep = None;
+                self.messages.push(Message {
+                    text: format!("{name}: replaying {samples} samples"),
+                    is_error: false,
+                });
+                self.replaying = Some((name, samples));
+            }
+            Err(e) => self.messages.push(Message {
+                text: format!("{name}: {e}"),
+                is_error: true,
+            }),
+        }
+    }
+
+    /// Runs the background sweep for at most `budget` of wall time.
+    fn advance_sweep(&mut self, budget: Duration) {
+        let Some((_, sweep)) = self.sweep.as_mut() else {
+            return;
+        };
+        let start = Instant::now();
+        while start.elapsed() < budget {
+            if sweep.advance(1000) {
+                break;
             }
         }
     }
@@ -232,6 +329,8 @@ fn default_tab(lab: &'static dyn Lab) -> plots::Tab {
 impl eframe::App for AttLabApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.advance(Instant::now());
+        self.advance_sweep(SWEEP_BUDGET);
+        self.take_picked_log();
         let mut commands = Vec::new();
         panels::status_line(ui, self);
         panels::controls(ui, self, &mut commands);

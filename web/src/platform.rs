@@ -103,3 +103,45 @@ pub fn save_file(name: &str, mime: &str, contents: &[u8]) -> Result<String, Stri
         Ok(format!("saved {}", path.display()))
     }
 }
+
+/// Where a picked file arrives: `(file name, text)` or an error message. The browser's picker
+/// is asynchronous, so the app polls this each frame.
+pub type FileSlot = std::rc::Rc<std::cell::RefCell<Option<Result<(String, String), String>>>>;
+
+/// Asks the user for a text file (CSV) and puts it into `slot` when it arrives.
+pub fn pick_text_file(slot: &FileSlot) {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let slot = slot.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let picked = rfd::AsyncFileDialog::new()
+                .add_filter("gyro log", &["csv", "txt", "log"])
+                .pick_file()
+                .await;
+            if let Some(file) = picked {
+                let bytes = file.read().await;
+                *slot.borrow_mut() = Some(Ok((
+                    file.file_name(),
+                    String::from_utf8_lossy(&bytes).into_owned(),
+                )));
+            }
+        });
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let Some(path) = rfd::FileDialog::new()
+            .add_filter("gyro log", &["csv", "txt", "log"])
+            .pick_file()
+        else {
+            return;
+        };
+        let name = path.file_name().map_or_else(
+            || path.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        let result = std::fs::read(&path)
+            .map(|b| (name, String::from_utf8_lossy(&b).into_owned()))
+            .map_err(|e| format!("cannot read {}: {e}", path.display()));
+        *slot.borrow_mut() = Some(result);
+    }
+}

@@ -53,6 +53,27 @@ enum Command {
         #[arg(long)]
         preset: Option<String>,
     },
+    /// Run a lab's estimators on a recorded gyro log (CSV: time, rate) and write the series.
+    Replay {
+        /// Lab id (a lab with a single-axis gyro, e.g. p1).
+        #[arg(long)]
+        lab: String,
+        /// The log file.
+        #[arg(long)]
+        log: PathBuf,
+        /// Unit of the rate column: deg_s, mdeg_s or rad_s.
+        #[arg(long, default_value = "deg_s")]
+        rate_unit: String,
+        /// Unit of the time column: s or ms.
+        #[arg(long, default_value = "s")]
+        time_unit: String,
+        /// Output CSV file.
+        #[arg(long)]
+        csv: PathBuf,
+        /// Parameter override `key=value` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
     /// Time one simulation step of every lab and one step of every estimator.
     Bench {
         /// Steps to time per item.
@@ -78,6 +99,14 @@ pub fn main() -> ExitCode {
             set,
             preset,
         } => run(&lab, seed, duration, &csv, preset.as_deref(), &set).map(|()| true),
+        Command::Replay {
+            lab,
+            log,
+            rate_unit,
+            time_unit,
+            csv,
+            set,
+        } => replay(&lab, &log, &rate_unit, &time_unit, &csv, &set).map(|()| true),
         Command::Bench { steps } => {
             bench(steps.max(10));
             Ok(true)
@@ -221,6 +250,71 @@ fn run(
         sim.recorder().specs().len(),
         csv_path.display(),
         sidecar.display()
+    );
+    Ok(())
+}
+
+fn replay(
+    lab_id: &str,
+    log_path: &Path,
+    rate_unit: &str,
+    time_unit: &str,
+    csv_path: &Path,
+    set: &[String],
+) -> Result<(), String> {
+    use attlab::sensors::{RateUnit, TimeUnit, parse_rate_log};
+    let lab = find_lab(lab_id)?;
+    let units = || {
+        RateUnit::ALL
+            .iter()
+            .map(|(_, n)| *n)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let rate_unit = RateUnit::from_name(rate_unit)
+        .ok_or_else(|| format!("--rate-unit `{rate_unit}`: use one of {}", units()))?;
+    let time_unit = match time_unit {
+        "s" => TimeUnit::Seconds,
+        "ms" => TimeUnit::Milliseconds,
+        other => return Err(format!("--time-unit `{other}`: use s or ms")),
+    };
+    let text = std::fs::read_to_string(log_path)
+        .map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
+    let log = parse_rate_log(&text, rate_unit, time_unit);
+    for e in &log.errors {
+        eprintln!("attlab: {}: skipped {e}", log_path.display());
+    }
+    let mut params = ParamValues::defaults(lab.params());
+    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
+    if !errors.is_empty() {
+        return Err(errors
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("; "));
+    }
+    let (samples, skipped) = (log.t_s.len(), log.errors.len());
+    let duration = log.t_s.last().copied().unwrap_or(0.0) - log.t_s.first().copied().unwrap_or(0.0);
+    let mut sim = Simulation::replay(lab, params, log, 2)
+        .map_err(|e| format!("{}: {e}", log_path.display()))?;
+    let file = std::fs::File::create(csv_path)
+        .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+    let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
+    let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
+    out.write_record(sim.recorder().specs().iter().map(|s| s.header()))
+        .map_err(io)?;
+    out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
+        .map_err(io)?;
+    while sim.t_s() < duration - 1e-9 {
+        sim.step();
+        out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
+            .map_err(io)?;
+    }
+    out.flush()
+        .map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
+    println!(
+        "replayed {samples} samples ({skipped} lines skipped) over {duration:.2} s into {}",
+        csv_path.display()
     );
     Ok(())
 }

@@ -6,7 +6,7 @@ mod suspended_mockup;
 mod wz_sphere;
 
 pub use free_rotation::FreeRotation;
-pub use suspended_mockup::{P1ErrorStats, SuspendedMockup, p1_run_stats};
+pub use suspended_mockup::{P1ErrorStats, SuspendedMockup, p1_run_stats, p1_true_period_s};
 pub use wz_sphere::{WzSphere, motion_of};
 
 use crate::estimators::{Estimator, Measurements};
@@ -195,6 +195,14 @@ pub trait Lab: Sync {
     /// The paper's figures as plot tabs.
     fn figures(&self) -> &'static [Figure] {
         &[]
+    }
+    /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
+    fn sweeps(&self) -> &'static [crate::sweep::SweepSpec] {
+        &[]
+    }
+    /// True when the lab's estimators can run on a recorded single-axis gyro log.
+    fn accepts_rate_log(&self) -> bool {
+        false
     }
     /// Named parameter sets (instruments, scenarios).
     fn presets(&self) -> &'static [Preset] {

@@ -10,6 +10,7 @@ use crate::estimators::{AngleIntegration, Estimator, Measurements, OneAxisKf, On
 use crate::params::{ParamSpec, ParamValues};
 use crate::record::{SeriesGroup, SeriesSpec};
 use crate::sensors::{Averager, WhiteNoise, quantize};
+use crate::sweep::SweepSpec;
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -17,6 +18,7 @@ use rand_chacha::ChaCha8Rng;
 mod reproduce;
 
 pub use reproduce::{ErrorStats as P1ErrorStats, run_stats as p1_run_stats};
+pub use true_period_s as p1_true_period_s;
 
 /// The paper-1 lab.
 pub struct SuspendedMockup;
@@ -257,6 +259,21 @@ impl Lab for SuspendedMockup {
 
     fn presets(&self) -> &'static [Preset] {
         PRESETS
+    }
+
+    fn sweeps(&self) -> &'static [SweepSpec] {
+        &[SweepSpec {
+            title: "Adaptation window N (angle-error RMS, 200 s each)",
+            key: "kf_window",
+            values: &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],
+            duration_s: 200.0,
+            after_s: 10.0,
+            series: &["kf-rotation.angle_err_deg", "kf-torsion.angle_err_deg"],
+        }]
+    }
+
+    fn accepts_rate_log(&self) -> bool {
+        true
     }
 }
 

@@ -2,6 +2,8 @@
 
 mod gyro;
 mod noise;
+mod rate_log;
 
 pub use gyro::{Gyro3, Gyro3Config};
 pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};
+pub use rate_log::{LogLineError, RateLog, RateUnit, TimeUnit, parse_rate_log};

@@ -21,6 +21,8 @@ pub fn controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
                 ui.separator();
                 parameters(ui, app, commands);
                 ui.separator();
+                super::lab_tools::sweeps(ui, app, commands);
+                super::lab_tools::laboratory_mode(ui, app, commands);
                 outputs(ui, app, commands);
                 messages(ui, app, commands);
                 ui.separator();

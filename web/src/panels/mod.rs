@@ -3,6 +3,7 @@
 
 mod central;
 mod controls;
+mod lab_tools;
 
 pub use central::central;
 pub use controls::controls;
@@ -28,6 +29,14 @@ pub enum Command {
     ExportCsv,
     /// Remove message `i`.
     Dismiss(usize),
+    /// Start the lab's sweep `i`.
+    RunSweep(usize),
+    /// Stop the running sweep.
+    CancelSweep,
+    /// Ask for a gyro log file to replay.
+    LoadLog,
+    /// Leave the replay and simulate again.
+    EndReplay,
 }
 
 /// The status line at the bottom: time, rates, frame time and estimator health.
