@@ -150,6 +150,24 @@ pub struct Figure {
     pub title: &'static str,
     /// Series names (as recorded) drawn in it.
     pub series: &'static [&'static str],
+    /// Draw log10 of the values (covariance elements spanning decades).
+    pub log: bool,
+}
+
+impl Figure {
+    /// A figure on a linear axis.
+    pub const fn new(title: &'static str, series: &'static [&'static str]) -> Self {
+        Self {
+            title,
+            series,
+            log: false,
+        }
+    }
+
+    /// The same on a log10 axis.
+    pub const fn log(self) -> Self {
+        Self { log: true, ..self }
+    }
 }
 
 /// A named set of parameter values (e.g. a real instrument) that the UI offers as a button
@@ -199,6 +217,10 @@ pub trait Lab: Sync {
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
     fn sweeps(&self) -> &'static [crate::sweep::SweepSpec] {
         &[]
+    }
+    /// True when the body hangs on a string (the 3D view draws it).
+    fn suspended(&self) -> bool {
+        false
     }
     /// True when the lab's estimators can run on a recorded single-axis gyro log.
     fn accepts_rate_log(&self) -> bool {

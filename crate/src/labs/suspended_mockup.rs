@@ -83,54 +83,54 @@ const PARAMS: &[ParamSpec] = &[
 ];
 
 const FIGURES: &[Figure] = &[
-    Figure {
-        title: "Angle",
-        series: &[
+    Figure::new(
+        "Angle",
+        &[
             "truth.angle_deg",
             "integration.angle_deg",
             "kf-rotation.angle_deg",
             "kf-torsion.angle_deg",
         ],
-    },
-    Figure {
-        title: "Rate",
-        series: &[
+    ),
+    Figure::new(
+        "Rate",
+        &[
             "integration.rate_z_deg_s",
             "kf-rotation.rate_z_deg_s",
             "kf-torsion.rate_z_deg_s",
             "truth.rate_z_deg_s",
         ],
-    },
-    Figure {
-        title: "Angle error",
-        series: &[
+    ),
+    Figure::new(
+        "Angle error",
+        &[
             "kf-rotation.angle_err_deg",
             "kf-torsion.angle_err_deg",
             "integration.angle_err_deg",
         ],
-    },
-    Figure {
-        title: "Rate error vs truth",
-        series: &["kf-rotation.rate_err_deg_s", "kf-torsion.rate_err_deg_s"],
-    },
-    Figure {
-        title: "Rate error vs sensor",
-        series: &[
+    ),
+    Figure::new(
+        "Rate error vs truth",
+        &["kf-rotation.rate_err_deg_s", "kf-torsion.rate_err_deg_s"],
+    ),
+    Figure::new(
+        "Rate error vs sensor",
+        &[
             "kf-rotation.rate_minus_sensor_deg_s",
             "kf-torsion.rate_minus_sensor_deg_s",
         ],
-    },
-    Figure {
-        title: "P: a, b, c",
-        series: &[
+    ),
+    Figure::new(
+        "P: a, c (log10)",
+        &[
             "kf-rotation.a_rad2",
-            "kf-rotation.b_rad2_s",
             "kf-rotation.c_rad2_s2",
             "kf-torsion.a_rad2",
-            "kf-torsion.b_rad2_s",
             "kf-torsion.c_rad2_s2",
         ],
-    },
+    )
+    .log(),
+    Figure::new("P: b", &["kf-rotation.b_rad2_s", "kf-torsion.b_rad2_s"]),
 ];
 
 /// Input rate (Hz) and averaging count of the selected gyro.
@@ -273,6 +273,10 @@ impl Lab for SuspendedMockup {
     }
 
     fn accepts_rate_log(&self) -> bool {
+        true
+    }
+
+    fn suspended(&self) -> bool {
         true
     }
 }

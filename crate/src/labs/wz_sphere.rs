@@ -33,6 +33,25 @@ const PROFILES: &[&str] = &[
     "free rotation (torque free)",
 ];
 
+const BIAS_AXES: &[&str] = &[
+    "all three axes (+, +, +)",
+    "ξ only",
+    "η only",
+    "ζ only",
+    "alternating (+, −, +)",
+];
+
+/// Which axes carry the bias, and with which sign.
+fn bias_pattern(index: usize) -> Vector3<f64> {
+    match index {
+        1 => Vector3::x(),
+        2 => Vector3::y(),
+        3 => Vector3::z(),
+        4 => Vector3::new(1.0, -1.0, 1.0),
+        _ => Vector3::repeat(1.0),
+    }
+}
+
 const PARAMS: &[ParamSpec] = &[
     ParamSpec::choice("profile", "Motion", PROFILES, 0)
         .on_reset()
@@ -82,6 +101,8 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("gyro_bias_deg_s", "Gyro bias", "°/s", 0.0, 2.0, 0.1)
         .log()
         .help("Zero offset on all three axes (paper: 0.1 °/s); gyro-only integration drifts."),
+    ParamSpec::choice("bias_axes", "Bias on", BIAS_AXES, 0)
+        .help("Which gyro axes carry the bias (the paper: presumably all three)."),
     ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.0)
         .log()
         .help("White noise per sample (the paper has none)."),
@@ -120,17 +141,14 @@ const PARAMS: &[ParamSpec] = &[
 ];
 
 const FIGURES: &[Figure] = &[
-    Figure {
-        title: "Fig. 4: u, v",
-        series: &["truth.u", "truth.v", "uvz-rk4.u", "uvz-rk4.v"],
-    },
-    Figure {
-        title: "Fig. 4: z",
-        series: &["truth.z_deg", "uvz-rk4.z_deg"],
-    },
-    Figure {
-        title: "Fig. 5: yaw, pitch, roll",
-        series: &[
+    Figure::new(
+        "Fig. 4: u, v",
+        &["truth.u", "truth.v", "uvz-rk4.u", "uvz-rk4.v"],
+    ),
+    Figure::new("Fig. 4: z", &["truth.z_deg", "uvz-rk4.z_deg"]),
+    Figure::new(
+        "Fig. 5: yaw, pitch, roll",
+        &[
             "truth.yaw_deg",
             "truth.pitch_deg",
             "truth.roll_deg",
@@ -138,29 +156,23 @@ const FIGURES: &[Figure] = &[
             "uvz-rk4.pitch_deg",
             "uvz-rk4.roll_deg",
         ],
-    },
-    Figure {
-        title: "Fig. 8: v, vᵃ",
-        series: &["uvz-rk4.v", "accel.v", "truth.v"],
-    },
-    Figure {
-        title: "Fig. 10: HPF(v), LPF(vᵃ), vᵏ",
-        series: &["blend.hpf_v", "blend.lpf_va", "blend.v", "truth.v"],
-    },
-    Figure {
-        title: "Tilt errors",
-        series: &[
+    ),
+    Figure::new("Fig. 8: v, vᵃ", &["uvz-rk4.v", "accel.v", "truth.v"]),
+    Figure::new(
+        "Fig. 10: HPF(v), LPF(vᵃ), vᵏ",
+        &["blend.hpf_v", "blend.lpf_va", "blend.v", "truth.v"],
+    ),
+    Figure::new(
+        "Tilt errors",
+        &[
             "uvz-rk4.tilt_err_deg",
             "accel.tilt_err_deg",
             "blend.tilt_err_deg",
             "kf-uv.tilt_err_deg",
             "quat-rk4.tilt_err_deg",
         ],
-    },
-    Figure {
-        title: "KF covariance",
-        series: &["kf-uv.P_uu", "kf-uv.P_vv", "kf-uv.P_uv"],
-    },
+    ),
+    Figure::new("KF variances (log10)", &["kf-uv.P_uu", "kf-uv.P_vv"]).log(),
 ];
 
 impl Lab for WzSphere {
@@ -353,7 +365,7 @@ impl SensorModel for GyroAccel {
     fn apply_params(&mut self, p: &ParamValues) {
         let b = p.get("gyro_bias_deg_s").to_radians();
         self.gyro.config = Gyro3Config {
-            bias_rad_s: Vector3::repeat(b),
+            bias_rad_s: bias_pattern(p.index("bias_axes")) * b,
             noise_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
             ..Gyro3Config::default()
         };

@@ -65,7 +65,11 @@ fn draw_body(ui: &mut Ui, app: &mut AttLabApp, rect: Rect) {
     let ghost = estimates
         .get(app.ghost_index)
         .and_then(|e| e.2.q_ref_from_body.map(|q| (q, e.1)));
-    let scene = body3d::Scene { truth, ghost };
+    let scene = body3d::Scene {
+        truth,
+        ghost,
+        suspended: app.sim.lab().suspended(),
+    };
     let ready = app.gpu_ready();
     body3d::show(ui, rect, &mut app.camera, &scene, ready);
 }

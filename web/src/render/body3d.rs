@@ -1,7 +1,7 @@
 //! The 3D body view: a wgpu paint callback drawing the truth body and the estimate as a
 //! translucent ghost beside it, with a mouse-orbit camera.
 
-use super::mesh::{Triangle, Vertex, body_mesh, place, sorted_vertices};
+use super::mesh::{Triangle, Vertex, body_mesh, place, sorted_vertices, string_mesh};
 use eframe::egui_wgpu::{self, wgpu};
 use egui::{Rect, Sense, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
@@ -239,6 +239,8 @@ pub struct Scene<'a> {
     pub truth: UnitQuaternion<f64>,
     /// Estimated attitude (ghost) and its label, if the lab's estimator has one.
     pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
+    /// The body hangs on a string from above (paper 1).
+    pub suspended: bool,
 }
 
 /// Shows the 3D view filling `rect`.
@@ -277,6 +279,22 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
             &eye,
             &mut tris,
         );
+    }
+    if scene.suspended {
+        let top = Vector3::new(0.0, 0.0, 0.3);
+        let mut bodies = vec![(scene.truth, -spacing, 1.0)];
+        bodies.extend(scene.ghost.map(|(q, _)| (q, spacing, 0.35)));
+        for (q, y, alpha) in bodies {
+            let attach = q * top + Vector3::new(0.0, y, 0.0);
+            place(
+                &string_mesh(attach, 4.0),
+                &UnitQuaternion::identity(),
+                Vector3::zeros(),
+                alpha,
+                &eye,
+                &mut tris,
+            );
+        }
     }
     let vp = camera.view_proj(f64::from(rect.width() / rect.height().max(1.0)));
     let mut view_proj = [[0.0f32; 4]; 4];

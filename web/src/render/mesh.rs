@@ -105,6 +105,19 @@ pub fn body_mesh() -> Vec<Triangle> {
     t
 }
 
+/// A thin vertical string from `bottom` (world) up to height `top_z`.
+pub fn string_mesh(bottom: Vector3<f64>, top_z: f64) -> Vec<Triangle> {
+    let mut t = Vec::new();
+    let half_len = ((top_z - bottom.z) / 2.0).max(0.0);
+    cuboid(
+        Vector3::new(bottom.x, bottom.y, bottom.z + half_len),
+        Vector3::new(0.012, 0.012, half_len),
+        [0.85, 0.85, 0.8],
+        &mut t,
+    );
+    t
+}
+
 /// Places `mesh` at `offset` with attitude `q_ref_from_body`, tinted with `alpha`, into
 /// `out` together with each triangle's view depth (for sorting).
 pub fn place(

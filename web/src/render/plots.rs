@@ -121,7 +121,10 @@ pub fn show(
             .map(|(i, s)| (i, color_of(&s.name)))
             .collect(),
     };
-    let log_cov = state.log_covariance && tab == Tab::Group(SeriesGroup::Covariance);
+    let log_cov = match tab {
+        Tab::Figure(f) => figures[f].log,
+        Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
+    };
     let envelope = state.show_envelope && tab == Tab::Group(SeriesGroup::Error);
     Plot::new(("series_plot", format!("{tab:?}")))
         .legend(Legend::default().text_style(egui::TextStyle::Small))
