@@ -174,57 +174,15 @@ fn run(
     set: &[String],
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
-    let mut params = ParamValues::defaults(lab.params());
-    if let Some(name) = preset {
-        let names = || {
-            lab.presets()
-                .iter()
-                .map(|p| p.name)
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        let p = lab
-            .presets()
-            .iter()
-            .find(|p| p.name == name)
-            .ok_or_else(|| format!("no preset `{name}` in {lab_id} (presets: {})", names()))?;
-        for (k, v) in p.values {
-            params.set(lab.params(), k, *v).map_err(|e| e.to_string())?;
-        }
-    }
-    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
-    if !errors.is_empty() {
-        return Err(errors
-            .iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join("; "));
-    }
+    let params = params_from(lab, preset, set)?;
     let duration_s = duration.unwrap_or(lab.default_duration_s());
     if !(duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1e6) {
         return Err(format!(
             "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
         ));
     }
-    let file = std::fs::File::create(csv_path)
-        .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
-    let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
     let mut sim = Simulation::with_history(lab, params.clone(), seed, 2);
-    let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
-    out.write_record(sim.recorder().specs().iter().map(|s| s.header()))
-        .map_err(io)?;
-    out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
-        .map_err(io)?;
-    let mut rows = 1u64;
-    let end = duration_s - 1e-9 * sim.dt_s();
-    while sim.t_s() < end {
-        sim.step();
-        out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
-            .map_err(io)?;
-        rows += 1;
-    }
-    out.flush()
-        .map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
+    let rows = stream_csv(&mut sim, duration_s, csv_path)?;
     let sidecar = csv_path.with_extension("json");
     let meta = serde_json::json!({
         "attlab_version": env!("CARGO_PKG_VERSION"),
@@ -284,19 +242,59 @@ fn replay(
     for e in &log.errors {
         eprintln!("attlab: {}: skipped {e}", log_path.display());
     }
-    let mut params = ParamValues::defaults(lab.params());
-    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
-    if !errors.is_empty() {
-        return Err(errors
-            .iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join("; "));
-    }
+    let params = params_from(lab, None, set)?;
     let (samples, skipped) = (log.t_s.len(), log.errors.len());
     let duration = log.t_s.last().copied().unwrap_or(0.0) - log.t_s.first().copied().unwrap_or(0.0);
     let mut sim = Simulation::replay(lab, params, log, 2)
         .map_err(|e| format!("{}: {e}", log_path.display()))?;
+    stream_csv(&mut sim, duration, csv_path)?;
+    println!(
+        "replayed {samples} samples ({skipped} lines skipped) over {duration:.2} s into {}",
+        csv_path.display()
+    );
+    Ok(())
+}
+
+/// The lab's defaults, then the named preset, then the `key=value` overrides; every bad
+/// item is reported.
+fn params_from(
+    lab: &'static dyn Lab,
+    preset: Option<&str>,
+    set: &[String],
+) -> Result<ParamValues, String> {
+    let mut params = ParamValues::defaults(lab.params());
+    if let Some(name) = preset {
+        let names = || {
+            lab.presets()
+                .iter()
+                .map(|p| p.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let p = lab
+            .presets()
+            .iter()
+            .find(|p| p.name == name)
+            .ok_or_else(|| format!("no preset `{name}` in {} (presets: {})", lab.id(), names()))?;
+        for (k, v) in p.values {
+            params.set(lab.params(), k, *v).map_err(|e| e.to_string())?;
+        }
+    }
+    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
+    if errors.is_empty() {
+        Ok(params)
+    } else {
+        Err(errors
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("; "))
+    }
+}
+
+/// Writes the header and the current row, then steps until `duration_s`, one row per step.
+/// Returns the number of rows written.
+fn stream_csv(sim: &mut Simulation, duration_s: f64, csv_path: &Path) -> Result<u64, String> {
     let file = std::fs::File::create(csv_path)
         .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
     let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
@@ -305,18 +303,17 @@ fn replay(
         .map_err(io)?;
     out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
         .map_err(io)?;
-    while sim.t_s() < duration - 1e-9 {
+    let mut rows = 1u64;
+    let end = duration_s - 1e-9 * sim.dt_s();
+    while sim.t_s() < end {
         sim.step();
         out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
             .map_err(io)?;
+        rows += 1;
     }
     out.flush()
         .map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
-    println!(
-        "replayed {samples} samples ({skipped} lines skipped) over {duration:.2} s into {}",
-        csv_path.display()
-    );
-    Ok(())
+    Ok(rows)
 }
 
 /// Times the lab's timing items and prints each against the first (the cost comparison).

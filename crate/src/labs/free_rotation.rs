@@ -4,6 +4,7 @@
 //! intermediate axis the body flips over and over (Dzhanibekov effect), which sends w
 //! through ∞ and exercises the chart switch of the (u, v, z) integrator.
 
+use super::scenario::{last_value, max_abs, run_scenario, series_after};
 use super::{AnchorRow, Lab, LabRun, Reproduction, SensorModel, TruthModel, TruthState};
 use crate::dynamics::{RigidBody, RigidBodyState};
 use crate::estimators::{
@@ -219,23 +220,8 @@ impl SensorModel for GyroSensors {
     }
 }
 
-/// Largest value of series `name` over the held history.
-fn max_of(sim: &Simulation, name: &str) -> f64 {
-    let r = sim.recorder();
-    r.index_of(name)
-        .and_then(|i| r.column(i))
-        .map_or(f64::NAN, |c| c.iter().fold(0.0_f64, |m, v| m.max(v.abs())))
-}
-
 fn run(assignments: &[&str], duration_s: f64) -> Simulation {
-    let lab: &'static dyn Lab = &FreeRotation;
-    let mut p = ParamValues::defaults(PARAMS);
-    let errors = p.apply_assignments(PARAMS, assignments.iter().copied());
-    debug_assert!(errors.is_empty(), "{errors:?}");
-    let rows = (duration_s * p.get("rate_hz")) as usize + 2;
-    let mut sim = Simulation::with_history(lab, p, 1, rows);
-    sim.run_for(duration_s);
-    sim
+    run_scenario(&FreeRotation, assignments, 1, duration_s)
 }
 
 fn reproduce() -> Reproduction {
@@ -245,69 +231,79 @@ fn reproduce() -> Reproduction {
         &["gyro_noise_deg_s=0", "gyro_bias_deg_s=0", "rate_hz=200"],
         60.0,
     );
-    let q_err = max_of(&clean, "quat-rk4.err_deg").to_radians();
-    let q_err_fine = max_of(&fine, "quat-rk4.err_deg").to_radians();
+    let q_err = max_abs(&series_after(&clean, "quat-rk4.err_deg", -1.0)).to_radians();
+    let q_err_fine = max_abs(&series_after(&fine, "quat-rk4.err_deg", -1.0)).to_radians();
     // The integrators see the rate only at the samples (linear in between) while the truth
     // integrates the exact rate, so the error-free error is O(dt²): halving dt quarters it.
     let ratio = q_err / q_err_fine;
-    rows.push(AnchorRow {
-        quantity: "error-free: max quaternion error, 100 Hz, 60 s".into(),
-        expected: "small, O(dt²)".into(),
-        measured: q_err,
-        unit: "rad",
-        pass: q_err < 1e-4,
-    });
-    rows.push(AnchorRow {
-        quantity: "error-free: error ratio 100 Hz / 200 Hz".into(),
-        expected: "4 ± 0.5 (O(dt²))".into(),
-        measured: ratio,
-        unit: "",
-        pass: (ratio - 4.0).abs() < 0.5,
-    });
+    rows.push(AnchorRow::new(
+        "error-free: max quaternion error, 100 Hz, 60 s",
+        "small, O(dt²)",
+        q_err,
+        "rad",
+        q_err < 1e-4,
+    ));
+    rows.push(AnchorRow::new(
+        "error-free: error ratio 100 Hz / 200 Hz",
+        "4 ± 0.5 (O(dt²))",
+        ratio,
+        "",
+        (ratio - 4.0).abs() < 0.5,
+    ));
     let mut k_diff = 0.0_f64;
     for axis in ["k_x", "k_y", "k_z"] {
-        let a = column(&clean, &format!("quat-rk4.{axis}"));
-        let b = column(&clean, &format!("uvz-rk4.{axis}"));
+        let a = series_after(&clean, &format!("quat-rk4.{axis}"), -1.0);
+        let b = series_after(&clean, &format!("uvz-rk4.{axis}"), -1.0);
         k_diff = a
             .iter()
             .zip(&b)
             .fold(k_diff, |m, (x, y)| m.max((x - y).abs()));
     }
-    rows.push(AnchorRow {
-        quantity: "quaternion vs (u,v,z) on the same samples: max |Δk|".into(),
-        expected: "≤ 1e-9".into(),
-        measured: k_diff,
-        unit: "",
-        pass: k_diff <= 1e-9,
-    });
-    let (e0, e1) = first_last(&clean, "truth.energy_j");
+    rows.push(AnchorRow::new(
+        "quaternion vs (u,v,z) on the same samples: max |Δk|",
+        "≤ 1e-9",
+        k_diff,
+        "",
+        k_diff <= 1e-9,
+    ));
+    let energy = series_after(&clean, "truth.energy_j", -1.0);
+    let (e0, e1) = (
+        energy.first().copied().unwrap_or(f64::NAN),
+        last_value(&clean, "truth.energy_j"),
+    );
     let drift = ((e1 - e0) / e0).abs();
-    rows.push(AnchorRow {
-        quantity: "truth: relative energy drift, 60 s".into(),
-        expected: "< 1e-9".into(),
-        measured: drift,
-        unit: "",
-        pass: drift < 1e-9,
-    });
-    let max_kz = max_of(&clean, "truth.k_z");
-    let min_kz = min_of(&clean, "truth.k_z");
-    rows.push(AnchorRow {
-        quantity: "intermediate-axis tumble: lowest vertical k_z".into(),
-        expected: "< -0.9 (upside down)".into(),
-        measured: min_kz,
-        unit: "",
-        pass: min_kz < -0.9 && max_kz > 0.9,
-    });
+    rows.push(AnchorRow::new(
+        "truth: relative energy drift, 60 s",
+        "< 1e-9",
+        drift,
+        "",
+        drift < 1e-9,
+    ));
+    let kz = series_after(&clean, "truth.k_z", -1.0);
+    let (min_kz, max_kz) = kz
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(*v), hi.max(*v))
+        });
+    rows.push(AnchorRow::new(
+        "intermediate-axis tumble: lowest vertical k_z",
+        "< -0.9 (upside down)",
+        min_kz,
+        "",
+        min_kz < -0.9 && max_kz > 0.9,
+    ));
     let biased = run(&["gyro_noise_deg_s=0", "gyro_bias_deg_s=0.1"], 60.0);
-    let b_err = last_of(&biased, "quat-rk4.err_deg");
-    let sigma = last_of(&biased, "quat-rk4.P_axis_rad2").sqrt().to_degrees();
-    rows.push(AnchorRow {
-        quantity: "bias 0.1 °/s: quaternion error at 60 s".into(),
-        expected: format!("≤ 3σ·√3 = {:.2} deg", 3.0 * sigma * 3f64.sqrt()),
-        measured: b_err,
-        unit: "deg",
-        pass: b_err > 0.1 && b_err <= 3.0 * sigma * 3f64.sqrt(),
-    });
+    let b_err = last_value(&biased, "quat-rk4.err_deg");
+    let sigma = last_value(&biased, "quat-rk4.P_axis_rad2")
+        .sqrt()
+        .to_degrees();
+    rows.push(AnchorRow::new(
+        "bias 0.1 °/s: quaternion error at 60 s",
+        format!("≤ 3σ·√3 = {:.2} deg", 3.0 * sigma * 3f64.sqrt()),
+        b_err,
+        "deg",
+        b_err > 0.1 && b_err <= 3.0 * sigma * 3f64.sqrt(),
+    ));
     Reproduction {
         lab: "free-rotation".into(),
         rows,
@@ -315,28 +311,4 @@ fn reproduce() -> Reproduction {
             "no paper anchors: this foundation lab checks the perfect model, conservation laws and the chart switch".into(),
         ],
     }
-}
-
-fn column(sim: &Simulation, name: &str) -> Vec<f64> {
-    let r = sim.recorder();
-    r.index_of(name)
-        .and_then(|i| r.column(i))
-        .map(|c| c.iter().copied().collect())
-        .unwrap_or_default()
-}
-
-fn first_last(sim: &Simulation, name: &str) -> (f64, f64) {
-    let c = column(sim, name);
-    (
-        c.first().copied().unwrap_or(f64::NAN),
-        c.last().copied().unwrap_or(f64::NAN),
-    )
-}
-
-fn last_of(sim: &Simulation, name: &str) -> f64 {
-    first_last(sim, name).1
-}
-
-fn min_of(sim: &Simulation, name: &str) -> f64 {
-    column(sim, name).into_iter().fold(f64::INFINITY, f64::min)
 }

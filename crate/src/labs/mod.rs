@@ -2,6 +2,7 @@
 //! [`all`]. The UI's lab picker, the CLI and the conformance tests iterate that one list.
 
 mod free_rotation;
+pub mod scenario;
 mod suspended_mockup;
 mod wz_sphere;
 

@@ -76,22 +76,6 @@ pub fn run_stats(
     })
 }
 
-fn row(
-    quantity: String,
-    expected: &str,
-    measured: f64,
-    unit: &'static str,
-    pass: bool,
-) -> AnchorRow {
-    AnchorRow {
-        quantity,
-        expected: expected.into(),
-        measured,
-        unit,
-        pass,
-    }
-}
-
 /// The reproduction table.
 pub fn reproduce() -> Reproduction {
     let mut rows = Vec::new();
@@ -111,35 +95,35 @@ pub fn reproduce() -> Reproduction {
         } else {
             format!("N = {n}")
         };
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{label}: torsional KF angle error max"),
             paper(n),
             tor.angle_max_deg,
             "deg",
             true,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{label}: torsional KF angle error rms"),
             "—",
             tor.angle_rms_deg,
             "deg",
             true,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{label}: rotation KF angle error max"),
             paper(n),
             rot.angle_max_deg,
             "deg",
             true,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{label}: torsional / rotation KF rate error rms"),
             "—",
             tor.rate_rms_deg_s,
             "deg/s",
             true,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{label}: rotation KF rate error rms"),
             "—",
             rot.rate_rms_deg_s,
@@ -155,15 +139,15 @@ pub fn reproduce() -> Reproduction {
             .map_or((f64::NAN, f64::NAN), |x| (x.1, x.2))
     };
     let ((t0, r0), (t100, r100), (t1000, r1000)) = (get(0), get(100), get(1000));
-    rows.push(row(
-        "finding: rotation KF angle max, N = 100 < N = 1000 < none".into(),
+    rows.push(AnchorRow::new(
+        "finding: rotation KF angle max, N = 100 < N = 1000 < none",
         "yes (Figs. 5.3, 5.5, 5.7)",
         r100,
         "deg",
         r100 < r1000 && r1000 < r0,
     ));
-    rows.push(row(
-        "finding: torsional KF angle max, N = 100 and 1000 ≪ none".into(),
+    rows.push(AnchorRow::new(
+        "finding: torsional KF angle max, N = 100 and 1000 ≪ none",
         "yes",
         t100.max(t1000),
         "deg",
@@ -174,8 +158,8 @@ pub fn reproduce() -> Reproduction {
         .filter(|x| x.0 > 0)
         .map(|x| x.2)
         .fold(f64::INFINITY, f64::min);
-    rows.push(row(
-        "finding: N = 100 within 2× of the best N (rotation KF)".into(),
+    rows.push(AnchorRow::new(
+        "finding: N = 100 within 2× of the best N (rotation KF)",
         "N ≈ 100 optimal",
         r100 / best,
         "×best",
@@ -190,14 +174,14 @@ pub fn reproduce() -> Reproduction {
             true
         };
         let finding = if n == 1000 { "finding: " } else { "" };
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("{finding}N = {n}: torsional KF rate inside the 1σ noise band"),
             "fully (Fig. 5.8)",
             tor.rate_inside_noise_band,
             "fraction",
             pass,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("N = {n}: rotation KF rate inside the 1σ noise band"),
             "partly (Fig. 5.8)",
             rot.rate_inside_noise_band,
@@ -238,14 +222,14 @@ pub fn reproduce() -> Reproduction {
         a.push("kf_window=100");
         let [rot, tor] = run_stats(&a, 1, 600.0, 60.0);
         let pass = check(tor.angle_max_deg, rot.angle_max_deg);
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("robustness, {name}: torsional KF angle max t>60 s"),
             expected,
             tor.angle_max_deg,
             "deg",
             pass,
         ));
-        rows.push(row(
+        rows.push(AnchorRow::new(
             format!("robustness, {name}: rotation KF angle max t>60 s"),
             "see above",
             rot.angle_max_deg,
@@ -256,9 +240,11 @@ pub fn reproduce() -> Reproduction {
     Reproduction {
         lab: "p1".into(),
         rows,
-        notes: vec![
-            "unstated in the paper and chosen here: period T ≈ 578 s (steel 0.35 mm, L = 2 m, I = 0.5 kg·m²), damping ζ = 0.01, VG-910D at 300 Hz averaged ×3 to 100 Hz, R = σ²/3, P₀ = 1e-4 deg² (a, b), 2e-4 (c)".into(),
-            "rows without a finding are this simulator's measurements; the paper gives its numbers only as plot ranges".into(),
-        ],
+        notes: [
+            "unstated in the paper and chosen here: period T ≈ 578 s (steel 0.35 mm, L = 2 m, I = 0.5 kg·m²), damping ζ = 0.01, VG-910D at 300 Hz averaged ×3 to 100 Hz, R = σ²/3, P₀ = 1e-4 deg² (a, b), 2e-4 (c)",
+            "rows without a finding are this simulator's measurements; the paper gives its numbers only as plot ranges",
+        ]
+        .map(String::from)
+        .to_vec(),
     }
 }

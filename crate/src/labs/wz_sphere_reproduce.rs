@@ -1,57 +1,22 @@
 //! `attlab reproduce p3`: the paper's scenario measured, and the lab's cost comparison.
 
-use super::super::{AnchorRow, Lab, Reproduction, TimingItem};
+use super::super::scenario::{last_value, max_abs, rms, run_scenario, series_after};
+use super::super::{AnchorRow, Reproduction, TimingItem};
 use super::WzSphere;
 use crate::dynamics::EulerMotion;
 use crate::math::{
     EulerYpr, WzAttitude, rk4_step, step_quaternion_rk4, step_uvz_rk4, uv_derivative,
 };
-use crate::params::ParamValues;
 use crate::sim::Simulation;
 use nalgebra::{Vector2, Vector3};
 use std::hint::black_box;
 
-/// Runs the lab for `duration_s` with the assignments on top of the defaults.
-pub fn run(assignments: &[&str], seed: u64, duration_s: f64) -> Simulation {
-    let lab: &'static dyn Lab = &WzSphere;
-    let mut p = ParamValues::defaults(lab.params());
-    let errors = p.apply_assignments(lab.params(), assignments.iter().copied());
-    debug_assert!(errors.is_empty(), "{errors:?}");
-    let rows = (duration_s * p.get("rate_hz")) as usize + 2;
-    let mut sim = Simulation::with_history(lab, p, seed, rows);
-    sim.run_for(duration_s);
-    sim
-}
-
-/// Values of series `name` for t > `after_s`.
-pub fn values_after(sim: &Simulation, name: &str, after_s: f64) -> Vec<f64> {
-    let r = sim.recorder();
-    let (Some(t), Some(y)) = (
-        r.index_of("t_s").and_then(|i| r.column(i)),
-        r.index_of(name).and_then(|i| r.column(i)),
-    ) else {
-        return Vec::new();
-    };
-    t.iter()
-        .zip(y)
-        .filter(|(t, _)| **t > after_s)
-        .map(|(_, y)| *y)
-        .collect()
-}
-
-fn rms(v: &[f64]) -> f64 {
-    (v.iter().map(|x| x * x).sum::<f64>() / v.len().max(1) as f64).sqrt()
-}
-
-fn max_abs(v: &[f64]) -> f64 {
-    v.iter().fold(0.0_f64, |m, x| m.max(x.abs()))
+fn run(assignments: &[&str], seed: u64, duration_s: f64) -> Simulation {
+    run_scenario(&WzSphere, assignments, seed, duration_s)
 }
 
 fn last(sim: &Simulation, name: &str) -> f64 {
-    values_after(sim, name, -1.0)
-        .last()
-        .copied()
-        .unwrap_or(f64::NAN)
+    last_value(sim, name)
 }
 
 /// Largest Euler-angle difference (rad) between (w, z) integrated by RK4 from the exact
@@ -77,27 +42,11 @@ pub fn error_free_euler_error(dt_s: f64) -> f64 {
     worst
 }
 
-fn row(
-    quantity: &str,
-    expected: impl Into<String>,
-    measured: f64,
-    unit: &'static str,
-    pass: bool,
-) -> AnchorRow {
-    AnchorRow {
-        quantity: quantity.into(),
-        expected: expected.into(),
-        measured,
-        unit,
-        pass,
-    }
-}
-
 /// The reproduction table.
 pub fn reproduce() -> Reproduction {
     let mut rows = Vec::new();
     let e = error_free_euler_error(0.01);
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "error-free (w,z) → Euler vs true angles, max, 100 s",
         "≤ 1e-9",
         e,
@@ -107,21 +56,21 @@ pub fn reproduce() -> Reproduction {
     let sim = run(&[], 1, 100.0);
     let d = |q: &str| last(&sim, &format!("uvz-rk4.{q}")) - last(&sim, &format!("truth.{q}"));
     let (du, dv, dz) = (d("u"), d("v"), d("z_deg"));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "gyro-only drift of u at 100 s (bias 0.1 °/s)",
         "drifts (Fig. 4, 7)",
         du,
         "",
         du.abs() > 1e-3,
     ));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "gyro-only drift of v at 100 s",
         "drifts (Fig. 4, 7, 8)",
         dv,
         "",
         dv.abs() > 1e-3,
     ));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "gyro-only drift of z at 100 s",
         "drifts (Fig. 4)",
         dz,
@@ -129,40 +78,40 @@ pub fn reproduce() -> Reproduction {
         dz.abs() > 0.1,
     ));
     let resid = |q: &str| -> Vec<f64> {
-        values_after(&sim, &format!("accel.{q}"), 0.0)
+        series_after(&sim, &format!("accel.{q}"), 0.0)
             .iter()
-            .zip(values_after(&sim, &format!("truth.{q}"), 0.0))
+            .zip(series_after(&sim, &format!("truth.{q}"), 0.0))
             .map(|(a, t)| a - t)
             .collect()
     };
     // (uᵃ, vᵃ) = (n_ξ, n_η)/(1 + n_ζ): noise across k enters scaled by about 1/(1 + c′).
-    let kz = values_after(&sim, "truth.k_z", 0.0);
+    let kz = series_after(&sim, "truth.k_z", 0.0);
     let predicted = 0.01 * rms(&kz.iter().map(|c| 1.0 / (1.0 + c)).collect::<Vec<_>>());
     let (nu, nv) = (rms(&resid("u")), rms(&resid("v")));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "accelerometer-only noise of uᵃ (rms)",
         format!("≈ σ/(1+c′) = {predicted:.4}"),
         nu,
         "",
         (nu / predicted - 1.0).abs() < 0.1,
     ));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "accelerometer-only noise of vᵃ (rms)",
         format!("≈ σ/(1+c′) = {predicted:.4}"),
         nv,
         "",
         (nv / predicted - 1.0).abs() < 0.1,
     ));
-    let tilt = |id: &str| values_after(&sim, &format!("{id}.tilt_err_deg"), 5.0);
+    let tilt = |id: &str| series_after(&sim, &format!("{id}.tilt_err_deg"), 5.0);
     let (gyro_end, accel_rms) = (last(&sim, "uvz-rk4.tilt_err_deg"), rms(&tilt("accel")));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "gyro-only tilt error at 100 s",
         "grows with t",
         gyro_end,
         "deg",
         gyro_end > 0.5,
     ));
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "accelerometer-only tilt error, rms t>5 s",
         "noisy (Fig. 7)",
         accel_rms,
@@ -176,22 +125,22 @@ pub fn reproduce() -> Reproduction {
             max_abs(&t),
             last(&sim, &format!("{id}.tilt_err_deg")),
         );
-        rows.push(row(
-            &format!("{name}: tilt error rms t>5 s"),
+        rows.push(AnchorRow::new(
+            format!("{name}: tilt error rms t>5 s"),
             format!("< accel rms/2 = {:.3}", accel_rms / 2.0),
             r,
             "deg",
             r < accel_rms / 2.0,
         ));
-        rows.push(row(
-            &format!("{name}: tilt error max t>5 s"),
+        rows.push(AnchorRow::new(
+            format!("{name}: tilt error max t>5 s"),
             "bounded, no drift",
             m,
             "deg",
             m < gyro_end,
         ));
-        rows.push(row(
-            &format!("{name}: tilt error at 100 s"),
+        rows.push(AnchorRow::new(
+            format!("{name}: tilt error at 100 s"),
             format!("< gyro-only/5 = {:.3}", gyro_end / 5.0),
             end,
             "deg",
@@ -199,22 +148,22 @@ pub fn reproduce() -> Reproduction {
         ));
     }
     let tumble = run(&["profile=2"], 1, 100.0);
-    let min_kz = values_after(&tumble, "truth.k_z", 0.0)
+    let min_kz = series_after(&tumble, "truth.k_z", 0.0)
         .into_iter()
         .fold(1.0_f64, f64::min);
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "tumble: lowest vertical k_z (upside down)",
         "< -0.95",
         min_kz,
         "",
         min_kz < -0.95,
     ));
-    let diff: Vec<f64> = values_after(&tumble, "uvz-rk4.err_deg", 0.0)
+    let diff: Vec<f64> = series_after(&tumble, "uvz-rk4.err_deg", 0.0)
         .iter()
-        .zip(values_after(&tumble, "quat-rk4.err_deg", 0.0))
+        .zip(series_after(&tumble, "quat-rk4.err_deg", 0.0))
         .map(|(a, b)| a - b)
         .collect();
-    rows.push(row(
+    rows.push(AnchorRow::new(
         "tumble: |err (u,v,z) − err quaternion| max",
         "≤ 1e-6 (chart switch exact)",
         max_abs(&diff),
@@ -222,9 +171,9 @@ pub fn reproduce() -> Reproduction {
         max_abs(&diff) <= 1e-6,
     ));
     for id in ["blend", "kf-uv"] {
-        let m = max_abs(&values_after(&tumble, &format!("{id}.tilt_err_deg"), 5.0));
-        rows.push(row(
-            &format!("tumble: {id} tilt error max t>5 s"),
+        let m = max_abs(&series_after(&tumble, &format!("{id}.tilt_err_deg"), 5.0));
+        rows.push(AnchorRow::new(
+            format!("tumble: {id} tilt error max t>5 s"),
             "< 2 (bounded through w = ∞)",
             m,
             "deg",
