@@ -55,28 +55,22 @@ pub fn reproduce() -> Reproduction {
     ));
     let sim = run(&[], 1, 100.0);
     let d = |q: &str| last(&sim, &format!("uvz-rk4.{q}")) - last(&sim, &format!("truth.{q}"));
-    let (du, dv, dz) = (d("u"), d("v"), d("z_deg"));
-    rows.push(AnchorRow::new(
-        "gyro-only drift of u at 100 s (bias 0.1 °/s)",
-        "drifts (Fig. 4, 7)",
-        du,
-        "",
-        du.abs() > 1e-3,
-    ));
-    rows.push(AnchorRow::new(
-        "gyro-only drift of v at 100 s",
-        "drifts (Fig. 4, 7, 8)",
-        dv,
-        "",
-        dv.abs() > 1e-3,
-    ));
-    rows.push(AnchorRow::new(
-        "gyro-only drift of z at 100 s",
-        "drifts (Fig. 4)",
-        dz,
-        "deg",
-        dz.abs() > 0.1,
-    ));
+    // (series, unit, paper figures, threshold for "drifts")
+    for (q, unit, figs, threshold) in [
+        ("u", "", "Fig. 4, 7", 1e-3),
+        ("v", "", "Fig. 4, 7, 8", 1e-3),
+        ("z_deg", "deg", "Fig. 4", 0.1),
+    ] {
+        let drift = d(q);
+        let name = q.trim_end_matches("_deg");
+        rows.push(AnchorRow::new(
+            format!("gyro-only drift of {name} at 100 s (bias 0.1 °/s)"),
+            format!("drifts ({figs})"),
+            drift,
+            unit,
+            drift.abs() > threshold,
+        ));
+    }
     let resid = |q: &str| -> Vec<f64> {
         series_after(&sim, &format!("accel.{q}"), 0.0)
             .iter()
