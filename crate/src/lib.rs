@@ -1,18 +1,30 @@
 //! # Attitude Lab core
 //!
-//! Pure simulation code for the Attitude Lab teaching simulator: rotations and attitude
-//! parameterisations ([`math`]), truth dynamics ([`dynamics`]), sensor models
-//! ([`sensors`]), estimators ([`estimators`]), the paper labs ([`labs`]), the fixed-step
-//! loop ([`sim`]) and the recorder ([`record`]). No UI, no clock, no global RNG: randomness
-//! comes in as a seeded ChaCha RNG, so one `(lab, parameters, seed)` gives one run.
+//! Pure simulation code for the Attitude Lab teaching simulator. No UI, no clock, no global
+//! RNG: randomness comes in as a seeded ChaCha RNG, so one `(lab, parameters, seed)` gives
+//! one run. Dependencies point one way:
+//!
+//! ```text
+//! math → model → dynamics, sensors, estimators → record, sim → analysis → labs → state
+//! ```
+//!
+//! * [`math`]: rotations, attitude parameterisations, integrators, covariance helpers.
+//! * [`model`]: the contracts (lab, truth, sensors, estimator, estimate, parameters,
+//!   reports): a leaf.
+//! * [`dynamics`], [`sensors`], [`estimators`]: the parts labs are built from.
+//! * [`record`]: series over the whole run in a fixed memory budget.
+//! * [`sim`]: the fixed-step loop, the row layout, replays of recorded logs, CSV.
+//! * [`analysis`]: NaN-aware statistics, scenarios, sweeps, the registry fuzzer.
+//! * [`labs`]: the registry `labs::all()`, one folder per paper.
+//! * [`state`]: the shareable URL state.
 
+pub mod analysis;
 pub mod dynamics;
 pub mod estimators;
 pub mod labs;
 pub mod math;
-pub mod params;
+pub mod model;
 pub mod record;
 pub mod sensors;
 pub mod sim;
 pub mod state;
-pub mod sweep;

@@ -1,97 +1,131 @@
-//! Named series in bounded ring buffers: what plots, exports and tests read.
+//! The recorder: named series over the whole run in a fixed memory budget.
+//!
+//! Two resolutions. The most recent rows are kept at full rate in a ring buffer; every row
+//! that falls out of the ring is folded into a min/max bucket of the older history, and when
+//! the buckets run out, neighbouring buckets merge pairwise (each then covers twice as many
+//! rows). So any run length fits the same memory, a plot of the whole run keeps every spike
+//! (the minimum and maximum of each bucket, in the order they happened) and every gap (a
+//! bucket that saw a missing value breaks the line), and the recent past is exact. Exports
+//! that need every sample stream rows as they are made (`attlab run --csv`) or re-run the
+//! simulation (the page), instead of keeping them here.
+//!
+//! Series 0 is the time axis `t_s`.
 
-use std::collections::VecDeque;
+use crate::model::SeriesSpec;
 
-/// Which plot a series belongs to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
-pub enum SeriesGroup {
-    /// The time axis.
-    Time,
-    /// Attitude angles.
-    Attitude,
-    /// Rates.
-    Rate,
-    /// Estimation errors.
-    Error,
-    /// Covariance elements.
-    Covariance,
-    /// Innovations.
-    Innovation,
-    /// Vertical in body axes and (u, v): what the Riemann-sphere view draws.
-    Sphere,
-    /// Anything lab specific.
-    Lab,
+/// Memory the page's recorder may use (bytes): the budget of the largest lab.
+pub const DEFAULT_BUDGET_BYTES: usize = 16 << 20;
+
+/// Buckets of older history kept per series (pairs merge when they run out).
+const MAX_BUCKETS: usize = 1024;
+
+/// Fewest full-rate rows kept, whatever the budget.
+const MIN_RECENT_ROWS: usize = 256;
+
+/// Rows per block of the ring. Within a block each series' values are contiguous, so a
+/// push writes one compact block (cache and TLB friendly) and a plot reads runs of
+/// [`BLOCK`] values.
+const BLOCK: usize = 64;
+
+const FLAG_MIN_FIRST: u8 = 1;
+const FLAG_GAP: u8 = 2;
+
+/// The flags of a bucket whose minimum came first (or not), keeping the gap bit of `old`.
+fn flags(min_first: bool, old: u8) -> u8 {
+    (old & FLAG_GAP) | if min_first { FLAG_MIN_FIRST } else { 0 }
 }
 
-impl SeriesGroup {
-    /// Plot tab title.
-    pub fn title(self) -> &'static str {
-        match self {
-            Self::Time => "Time",
-            Self::Attitude => "Attitude",
-            Self::Rate => "Rates",
-            Self::Error => "Errors",
-            Self::Covariance => "Covariance",
-            Self::Innovation => "Innovation",
-            Self::Sphere => "(u, v) and vertical",
-            Self::Lab => "Lab",
+/// One bucket of one series: its extremes, the order in which they happened, and whether a
+/// value was missing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Bucket {
+    min: f64,
+    max: f64,
+    flags: u8,
+}
+
+impl Bucket {
+    const EMPTY: Bucket = Bucket {
+        min: f64::INFINITY,
+        max: f64::NEG_INFINITY,
+        flags: FLAG_MIN_FIRST,
+    };
+
+    /// `a` followed by `b`.
+    fn merge(a: Bucket, b: Bucket) -> Bucket {
+        let (min_from_b, max_from_b) = (b.min < a.min, b.max > a.max);
+        let min_first = match (min_from_b, max_from_b) {
+            (false, false) => a.flags & FLAG_MIN_FIRST != 0,
+            (true, true) => b.flags & FLAG_MIN_FIRST != 0,
+            (false, true) => a.min.is_finite() || b.flags & FLAG_MIN_FIRST != 0,
+            (true, false) => !a.max.is_finite() && b.flags & FLAG_MIN_FIRST != 0,
+        };
+        Bucket {
+            min: a.min.min(b.min),
+            max: a.max.max(b.max),
+            flags: flags(min_first, a.flags | b.flags),
         }
+    }
+
+    fn has_values(&self) -> bool {
+        self.min <= self.max
     }
 }
 
-/// Name, unit and plot of one recorded series.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct SeriesSpec {
-    /// `source.quantity`, e.g. `quat-rk4.err_deg`.
-    pub name: String,
-    /// Unit ("" when dimensionless).
-    pub unit: &'static str,
-    /// Plot it belongs to.
-    pub group: SeriesGroup,
-}
-
-impl SeriesSpec {
-    /// A series spec.
-    pub fn new(name: impl Into<String>, unit: &'static str, group: SeriesGroup) -> Self {
-        Self {
-            name: name.into(),
-            unit,
-            group,
-        }
-    }
-
-    /// CSV header cell: `name [unit]`.
-    pub fn header(&self) -> String {
-        if self.unit.is_empty() {
-            self.name.clone()
-        } else {
-            format!("{} [{}]", self.name, self.unit)
-        }
-    }
-}
-
-/// Rows of all series, keeping at most `capacity` rows (oldest dropped): memory stays
-/// flat however long the simulation runs.
+/// Named series over the whole run, in a fixed memory budget.
 #[derive(Clone, Debug)]
 pub struct Recorder {
     specs: Vec<SeriesSpec>,
-    columns: Vec<VecDeque<f64>>,
-    capacity: usize,
+    /// Full-rate rows in the ring (per series), a multiple of [`BLOCK`].
+    window: usize,
+    /// Ring in blocks of [`BLOCK`] rows, series-major inside a block:
+    /// `recent[(slot / BLOCK) * n * BLOCK + s * BLOCK + slot % BLOCK]`.
+    recent: Vec<f64>,
+    /// Next slot to write.
+    head: usize,
+    /// Rows in the ring.
+    held: usize,
+    /// Older history: `buckets[s * MAX_BUCKETS + b]`.
+    buckets: Vec<Bucket>,
+    /// Completed buckets.
+    bucket_count: usize,
+    /// Rows per completed bucket.
+    bucket_rows: u64,
+    /// The bucket being filled, per series, and how many rows it has.
+    filling: Vec<Bucket>,
+    filling_rows: u64,
+    /// Where in the filling bucket the min and max were seen (row index within the bucket).
+    filling_at: Vec<(u64, u64)>,
     total_rows: u64,
 }
 
 impl Recorder {
-    /// A recorder for `specs` holding at most `capacity` (≥ 2) rows.
-    pub fn new(specs: Vec<SeriesSpec>, capacity: usize) -> Self {
-        let capacity = capacity.max(2);
-        let columns = specs
-            .iter()
-            .map(|_| VecDeque::with_capacity(capacity))
-            .collect();
+    /// A recorder for `specs` (series 0 = time) using about `budget_bytes` of memory.
+    pub fn with_budget(specs: Vec<SeriesSpec>, budget_bytes: usize) -> Self {
+        let n = specs.len().max(1);
+        let history_bytes = (MAX_BUCKETS + 1) * std::mem::size_of::<Bucket>() + 16;
+        let per_series = budget_bytes / n;
+        let window =
+            (per_series.saturating_sub(history_bytes) / 8 / BLOCK * BLOCK).max(MIN_RECENT_ROWS);
+        Self::with_window(specs, window)
+    }
+
+    /// A recorder keeping `window` rows at full rate (and the min/max history before them).
+    pub fn with_window(specs: Vec<SeriesSpec>, window: usize) -> Self {
+        let n = specs.len();
+        let window = window.max(2).div_ceil(BLOCK) * BLOCK;
         Self {
+            recent: vec![f64::NAN; n * window],
+            buckets: vec![Bucket::EMPTY; n * MAX_BUCKETS],
+            filling: vec![Bucket::EMPTY; n],
+            filling_at: vec![(0, 0); n],
             specs,
-            columns,
-            capacity,
+            window,
+            head: 0,
+            held: 0,
+            bucket_count: 0,
+            bucket_rows: 1,
+            filling_rows: 0,
             total_rows: 0,
         }
     }
@@ -106,96 +140,212 @@ impl Recorder {
         self.specs.iter().position(|s| s.name == name)
     }
 
-    /// Appends a row (one value per series; missing values become NaN, extra are ignored).
+    /// Appends a row (one value per series, in spec order; missing values are NaN).
     pub fn push(&mut self, row: &[f64]) {
-        for (i, col) in self.columns.iter_mut().enumerate() {
-            if col.len() == self.capacity {
-                col.pop_front();
-            }
-            col.push_back(row.get(i).copied().unwrap_or(f64::NAN));
+        debug_assert_eq!(row.len(), self.specs.len());
+        if self.held == self.window {
+            // The ring is full and `head` starts its oldest block: fold the whole block into
+            // the history at once (series by series, contiguous), then reuse it.
+            self.fold_block(self.head);
         }
+        let h = self.head;
+        let base = self.slot(0, h);
+        for (dst, v) in self.recent[base..].iter_mut().step_by(BLOCK).zip(row) {
+            *dst = *v;
+        }
+        self.head = (h + 1) % self.window;
+        self.held += 1;
         self.total_rows += 1;
     }
 
-    /// Rows held now.
+    /// Index of series `s` at ring slot `slot`.
+    fn slot(&self, s: usize, slot: usize) -> usize {
+        (slot / BLOCK) * self.specs.len() * BLOCK + s * BLOCK + slot % BLOCK
+    }
+
+    /// Folds the [`BLOCK`] oldest rows, which start at ring slot `start`, into the history.
+    fn fold_block(&mut self, start: usize) {
+        // Where buckets close within the block (and whether the history halves first) is
+        // the same for every series: work it out once.
+        let mut events: Vec<(usize, bool, usize)> = Vec::new(); // (row, halve first, bucket)
+        let (mut rows, mut count, mut per) =
+            (self.filling_rows, self.bucket_count, self.bucket_rows);
+        for k in 0..BLOCK {
+            rows += 1;
+            if rows == per {
+                let halve = count == MAX_BUCKETS;
+                if halve {
+                    count = MAX_BUCKETS / 2;
+                    per *= 2;
+                }
+                events.push((k, halve, count));
+                count += 1;
+                rows = 0;
+            }
+        }
+        let first_row = self.filling_rows;
+        for s in 0..self.specs.len() {
+            let base = self.slot(s, start);
+            let (mut b, mut at) = (self.filling[s], self.filling_at[s]);
+            let mut n = first_row;
+            let mut next_event = events.iter().peekable();
+            for k in 0..BLOCK {
+                let v = self.recent[base + k];
+                if v.is_finite() {
+                    if v < b.min {
+                        b.min = v;
+                        at.0 = n;
+                    }
+                    if v > b.max {
+                        b.max = v;
+                        at.1 = n;
+                    }
+                } else {
+                    b.flags |= FLAG_GAP;
+                }
+                n += 1;
+                if let Some(&(_, halve, j)) = next_event.next_if(|e| e.0 == k) {
+                    if halve {
+                        self.halve_series(s);
+                    }
+                    b.flags = flags(at.0 <= at.1, b.flags);
+                    self.buckets[s * MAX_BUCKETS + j] = b;
+                    b = Bucket::EMPTY;
+                    at = (0, 0);
+                    n = 0;
+                }
+            }
+            self.filling[s] = b;
+            self.filling_at[s] = at;
+        }
+        self.filling_rows = rows;
+        self.bucket_count = count;
+        self.bucket_rows = per;
+        self.held -= BLOCK;
+    }
+
+    /// Merges series `s`'s neighbouring buckets pairwise: half as many, each twice as long.
+    fn halve_series(&mut self, s: usize) {
+        let base = s * MAX_BUCKETS;
+        for j in 0..MAX_BUCKETS / 2 {
+            let merged = Bucket::merge(self.buckets[base + 2 * j], self.buckets[base + 2 * j + 1]);
+            self.buckets[base + j] = merged;
+        }
+        for j in MAX_BUCKETS / 2..MAX_BUCKETS {
+            self.buckets[base + j] = Bucket::EMPTY;
+        }
+    }
+
+    /// Rows held at full rate now (between the window less one block and the window, once
+    /// the run is longer than the window).
     pub fn len(&self) -> usize {
-        self.columns.first().map_or(0, VecDeque::len)
+        self.held
     }
 
-    /// No rows held.
+    /// No rows at all.
     pub fn is_empty(&self) -> bool {
-        self.len() == 0
+        self.total_rows == 0
     }
 
-    /// Rows ever pushed (including dropped ones).
+    /// Rows ever pushed.
     pub fn total_rows(&self) -> u64 {
         self.total_rows
     }
 
-    /// Most rows kept.
-    pub fn capacity(&self) -> usize {
-        self.capacity
+    /// Rows kept at full rate at most.
+    pub fn window(&self) -> usize {
+        self.window
     }
 
-    /// Drops all rows.
-    pub fn clear(&mut self) {
-        self.columns.iter_mut().for_each(VecDeque::clear);
-        self.total_rows = 0;
+    /// Rows each bucket of the older history covers now.
+    pub fn bucket_rows(&self) -> u64 {
+        self.bucket_rows
     }
 
-    /// The values of series `index`, oldest first.
-    pub fn column(&self, index: usize) -> Option<&VecDeque<f64>> {
-        self.columns.get(index)
+    /// Bytes the recorder holds (fixed at creation: it does not grow with the run).
+    pub fn memory_bytes(&self) -> usize {
+        self.recent.len() * 8
+            + (self.buckets.len() + self.filling.len()) * std::mem::size_of::<Bucket>()
+            + self.filling_at.len() * 16
     }
 
     /// The latest value of series `index`.
     pub fn last(&self, index: usize) -> Option<f64> {
-        self.columns.get(index).and_then(|c| c.back().copied())
+        (index < self.specs.len() && self.held > 0)
+            .then(|| self.recent[self.slot(index, (self.head + self.window - 1) % self.window)])
     }
 
-    /// (x, y) points of two series for drawing, at most about `max_points`: rows are grouped
-    /// into buckets and each bucket keeps its minimum and maximum y, so spikes survive
-    /// decimation. A bucket with missing (non-finite) y values adds a `[x, NaN]` gap marker,
-    /// so lines can be broken there instead of bridging the gap.
-    pub fn decimated(&self, x: usize, y: usize, max_points: usize) -> Vec<[f64; 2]> {
-        let (Some(xs), Some(ys)) = (self.columns.get(x), self.columns.get(y)) else {
+    /// The full-rate values of series `index` held now, oldest first (empty for a series
+    /// that does not exist).
+    pub fn recent_vec(&self, index: usize) -> Vec<f64> {
+        if index >= self.specs.len() {
             return Vec::new();
-        };
-        let n = xs.len();
-        let buckets = (max_points / 2).max(1);
-        let per = n.div_ceil(buckets).max(1);
-        let mut out = Vec::with_capacity(2 * buckets + 2);
-        let mut start = 0;
-        while start < n {
-            let end = (start + per).min(n);
-            let (mut lo, mut hi, mut gap): (Option<usize>, Option<usize>, Option<usize>) =
-                (None, None, None);
-            for i in start..end {
-                let v = ys[i];
-                if !v.is_finite() {
-                    gap = gap.or(Some(i));
-                    continue;
-                }
-                if lo.is_none_or(|j| v < ys[j]) {
-                    lo = Some(i);
-                }
-                if hi.is_none_or(|j| v > ys[j]) {
-                    hi = Some(i);
-                }
-            }
-            let mut pick: Vec<usize> = lo.into_iter().chain(hi).chain(gap).collect();
-            pick.sort_unstable();
-            pick.dedup();
-            out.extend(
-                pick.into_iter()
-                    .map(|i| [xs[i], if ys[i].is_finite() { ys[i] } else { f64::NAN }]),
-            );
-            start = end;
         }
+        let first = (self.head + self.window - self.held) % self.window;
+        (0..self.held)
+            .map(|k| self.recent[self.slot(index, (first + k) % self.window)])
+            .collect()
+    }
+
+    /// (t, y) points of series `y` over the whole run, about `max_points` of them: the older
+    /// history as bucket extremes (in the order they happened), the recent rows decimated the
+    /// same way. A bucket that saw a missing value adds a `[t, NaN]` gap marker, so lines can
+    /// be broken there ([`Recorder::split_at_gaps`]).
+    pub fn plot_points(&self, y: usize, max_points: usize) -> Vec<[f64; 2]> {
+        if y >= self.specs.len() {
+            return Vec::new();
+        }
+        let mut old: Vec<(Bucket, Bucket)> = (0..self.bucket_count)
+            .map(|j| (self.buckets[j], self.buckets[y * MAX_BUCKETS + j]))
+            .collect();
+        if self.filling_rows > 0 {
+            let mut b = self.filling[y];
+            let (at_min, at_max) = self.filling_at[y];
+            b.flags = flags(at_min <= at_max, b.flags);
+            old.push((self.filling[0], b));
+        }
+        let t = self.recent_vec(0);
+        let v = self.recent_vec(y);
+        // Share the points between the history and the recent rows by the rows they cover.
+        let old_rows = self.total_rows - self.held as u64;
+        let old_share = if self.total_rows == 0 {
+            0.0
+        } else {
+            old_rows as f64 / self.total_rows as f64
+        };
+        let old_points =
+            ((max_points as f64 * old_share) as usize).max(usize::from(!old.is_empty()) * 2);
+        let mut out = Vec::with_capacity(max_points + 8);
+        let group = old.len().div_ceil((old_points / 2).max(1)).max(1);
+        for chunk in old.chunks(group) {
+            let (t0, t1) = (chunk[0].0.min, chunk[chunk.len() - 1].0.max);
+            let b = chunk
+                .iter()
+                .skip(1)
+                .fold(chunk[0].1, |acc, c| Bucket::merge(acc, c.1));
+            if b.has_values() {
+                let (first, second) = if b.flags & FLAG_MIN_FIRST != 0 {
+                    (b.min, b.max)
+                } else {
+                    (b.max, b.min)
+                };
+                out.push([t0, first]);
+                out.push([t1, second]);
+            }
+            if b.flags & FLAG_GAP != 0 {
+                out.push([t1, f64::NAN]);
+            }
+        }
+        decimate_into(
+            &t,
+            &v,
+            max_points.saturating_sub(out.len()).max(2),
+            &mut out,
+        );
         out
     }
 
-    /// Splits decimated points at their gap markers into drawable pieces.
+    /// Splits plot points at their gap markers into drawable pieces.
     pub fn split_at_gaps(points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
         points
             .split(|p| !p[1].is_finite())
@@ -203,90 +353,140 @@ impl Recorder {
             .map(<[_]>::to_vec)
             .collect()
     }
-
-    /// Writes all held rows as CSV with a `name [unit]` header.
-    pub fn write_csv<W: std::io::Write>(&self, writer: W) -> Result<(), csv::Error> {
-        let mut w = csv::Writer::from_writer(writer);
-        w.write_record(self.specs.iter().map(SeriesSpec::header))?;
-        for r in 0..self.len() {
-            w.write_record(self.columns.iter().map(|c| format_value(c[r])))?;
-        }
-        w.flush()?;
-        Ok(())
-    }
 }
 
-/// A CSV cell: shortest round-trip representation, `NaN` for missing.
-pub fn format_value(v: f64) -> String {
-    if v.is_finite() {
-        format!("{v}")
-    } else {
-        "NaN".to_string()
+/// Appends (t, y) of full-rate rows to `out`, at most about `max_points`: rows are grouped
+/// into buckets and each keeps its minimum and maximum y, so spikes survive; a bucket with a
+/// missing y adds a gap marker.
+fn decimate_into(t: &[f64], y: &[f64], max_points: usize, out: &mut Vec<[f64; 2]>) {
+    let n = t.len().min(y.len());
+    let per = n.div_ceil((max_points / 2).max(1)).max(1);
+    let mut start = 0;
+    while start < n {
+        let end = (start + per).min(n);
+        let (mut lo, mut hi, mut gap): (Option<usize>, Option<usize>, Option<usize>) =
+            (None, None, None);
+        for i in start..end {
+            let v = y[i];
+            if !v.is_finite() {
+                gap = gap.or(Some(i));
+                continue;
+            }
+            if lo.is_none_or(|j| v < y[j]) {
+                lo = Some(i);
+            }
+            if hi.is_none_or(|j| v > y[j]) {
+                hi = Some(i);
+            }
+        }
+        let mut pick: Vec<usize> = lo.into_iter().chain(hi).chain(gap).collect();
+        pick.sort_unstable();
+        pick.dedup();
+        out.extend(
+            pick.into_iter()
+                .map(|i| [t[i], if y[i].is_finite() { y[i] } else { f64::NAN }]),
+        );
+        start = end;
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::SeriesGroup;
 
-    fn rec(cap: usize) -> Recorder {
-        Recorder::new(
+    fn rec(window: usize) -> Recorder {
+        Recorder::with_window(
             vec![
                 SeriesSpec::new("t_s", "s", SeriesGroup::Time),
                 SeriesSpec::new("y", "", SeriesGroup::Lab),
             ],
-            cap,
+            window,
         )
     }
 
     #[test]
-    fn memory_stays_bounded() {
+    fn memory_is_fixed_and_the_whole_run_stays_visible() {
         let mut r = rec(100);
-        for i in 0..10_000 {
-            r.push(&[i as f64, (i as f64).sin()]);
-        }
-        assert_eq!(r.len(), 100);
-        assert_eq!(r.total_rows(), 10_000);
-        assert_eq!(r.column(0).unwrap().front().copied(), Some(9900.0));
-    }
-
-    #[test]
-    fn decimation_keeps_extremes() {
-        let mut r = rec(10_000);
-        for i in 0..10_000 {
+        let bytes = r.memory_bytes();
+        let n = 1_000_000;
+        let window = r.window();
+        for i in 0..n {
             let y = if i == 4321 {
                 50.0
             } else {
-                (i as f64 * 0.01).sin()
+                (i as f64 * 1e-3).sin()
             };
             r.push(&[i as f64, y]);
         }
-        let pts = r.decimated(0, 1, 200);
-        assert!(pts.len() <= 202, "{}", pts.len());
-        assert!(pts.iter().all(|p| p[1].is_finite()));
-        assert!(pts.iter().any(|p| p == &[4321.0, 50.0]));
-        assert!(pts.windows(2).all(|w| w[0][0] < w[1][0]));
+        assert_eq!(r.memory_bytes(), bytes);
+        assert!(r.len() > window - BLOCK && r.len() <= window, "{}", r.len());
+        assert_eq!(r.total_rows(), n as u64);
+        let pts = r.plot_points(1, 1000);
+        assert!(pts.len() <= 1100, "{}", pts.len());
+        assert_eq!(pts.first().unwrap()[0], 0.0, "starts at the first row");
+        assert_eq!(pts.last().unwrap()[0], (n - 1) as f64);
+        assert!(pts.iter().any(|p| p[1] == 50.0), "the spike survives");
+        let lo = pts.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+        assert!((lo + 1.0).abs() < 1e-6, "the minimum survives: {lo}");
+        assert!(pts.windows(2).all(|w| w[0][0] <= w[1][0]), "time order");
     }
 
     #[test]
-    fn gaps_break_the_line() {
-        let mut r = rec(100);
-        for i in 0..100 {
-            let y = if (40..45).contains(&i) { f64::NAN } else { 1.0 };
+    fn bucket_order_follows_the_data() {
+        // A rising ramp: every bucket's min comes before its max.
+        let mut r = rec(10);
+        for i in 0..100_000 {
+            r.push(&[i as f64, i as f64]);
+        }
+        let pts = r.plot_points(1, 400);
+        assert!(
+            pts.windows(2).all(|w| w[0][1] <= w[1][1]),
+            "ramp stays monotone"
+        );
+    }
+
+    #[test]
+    fn gaps_break_the_line_in_history_and_recent_rows() {
+        let mut r = rec(50);
+        for i in 0..10_000 {
+            let y = if (400..405).contains(&i) || (9_980..9_985).contains(&i) {
+                f64::NAN
+            } else {
+                1.0
+            };
             r.push(&[i as f64, y]);
         }
-        let pieces = Recorder::split_at_gaps(&r.decimated(0, 1, 1000));
-        assert_eq!(pieces.len(), 2);
-        assert_eq!(pieces[0].last().unwrap()[0], 39.0);
-        assert_eq!(pieces[1].first().unwrap()[0], 45.0);
+        let pieces = Recorder::split_at_gaps(&r.plot_points(1, 4000));
+        assert_eq!(pieces.len(), 3, "{pieces:?}");
     }
 
     #[test]
-    fn csv_has_units_in_header() {
-        let mut r = rec(10);
-        r.push(&[0.5, f64::NAN]);
-        let mut buf = Vec::new();
-        r.write_csv(&mut buf).unwrap();
-        assert_eq!(String::from_utf8(buf).unwrap(), "t_s [s],y\n0.5,NaN\n");
+    fn recent_rows_are_exact_and_in_order() {
+        let mut r = rec(200);
+        let window = r.window();
+        assert_eq!(window, 256, "rounded up to whole blocks");
+        for i in 0..(window + 7) {
+            r.push(&[i as f64, 2.0 * i as f64]);
+        }
+        // The oldest block went to the history; the rows after it are held exactly.
+        let held = r.len();
+        assert_eq!(held, window - BLOCK + 7);
+        let expected: Vec<f64> = (window + 7 - held..window + 7)
+            .map(|i| 2.0 * i as f64)
+            .collect();
+        assert_eq!(r.recent_vec(1), expected);
+        assert_eq!(r.last(0), Some((window + 6) as f64));
+        assert_eq!(r.last(7), None);
+    }
+
+    #[test]
+    fn the_budget_sets_the_window() {
+        let specs: Vec<SeriesSpec> = (0..100)
+            .map(|i| SeriesSpec::new(format!("s{i}"), "", SeriesGroup::Lab))
+            .collect();
+        let r = Recorder::with_budget(specs, 16 << 20);
+        assert!(r.memory_bytes() <= 16 << 20, "{}", r.memory_bytes());
+        assert!(r.window() > 10_000, "{}", r.window());
     }
 }

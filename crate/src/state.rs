@@ -4,8 +4,8 @@
 //! Parsing never fails as a whole: every bad item is reported with its position and text,
 //! and everything good is kept.
 
-use crate::labs::{self, Lab};
-use crate::params::ParamValues;
+use crate::labs;
+use crate::model::{Lab, ParamValues};
 use thiserror::Error;
 
 /// What a URL fragment asks for.
@@ -47,32 +47,42 @@ impl UrlState {
         }
     }
 
-    /// Encodes as a fragment (without `#`); parameters at their default are left out.
+    /// Encodes as a fragment (without `#`), percent-encoded; parameters at their default are
+    /// left out.
     pub fn encode(&self) -> String {
-        let mut s = format!(
-            "lab={}&seed={}&speed={}",
-            self.lab_id, self.seed, self.speed
-        );
+        let mut out = form_urlencoded::Serializer::new(String::new());
+        out.append_pair("lab", self.lab_id)
+            .append_pair("seed", &self.seed.to_string())
+            .append_pair("speed", &self.speed.to_string());
         if let Some(lab) = labs::find(self.lab_id) {
             for spec in lab.params() {
-                let v = self.params.get(spec.key);
-                if v != spec.default {
-                    s += &format!("&{}={}", spec.key, v);
+                if let Ok(v) = self.params.try_get(spec.key)
+                    && v != spec.default
+                {
+                    out.append_pair(spec.key, &v.to_string());
                 }
             }
         }
-        s
+        out.finish()
     }
 
-    /// Parses a fragment (with or without `#`). Unknown or invalid items are returned as
-    /// errors; the rest is applied on top of the defaults of the named (or first) lab.
+    /// Parses a fragment (with or without `#`; percent-decoded by `form_urlencoded`). Unknown
+    /// or invalid items are returned as errors with their position; the rest is applied on
+    /// top of the defaults of the named (or first) lab.
     pub fn parse(fragment: &str) -> (Self, Vec<UrlStateError>) {
         let fragment = fragment.trim_start_matches('#');
-        let items: Vec<(usize, &str)> = fragment
-            .split('&')
-            .filter(|s| !s.is_empty())
+        let raw: Vec<&str> = fragment.split('&').filter(|s| !s.is_empty()).collect();
+        let items: Vec<(usize, String, Option<String>, &str)> = raw
+            .iter()
             .enumerate()
-            .map(|(i, s)| (i + 1, s))
+            .map(|(i, item)| {
+                let (k, v) = form_urlencoded::parse(item.as_bytes())
+                    .next()
+                    .map(|(k, v)| (k.into_owned(), v.into_owned()))
+                    .unwrap_or_default();
+                let value = item.contains('=').then_some(v);
+                (i + 1, k, value, *item)
+            })
             .collect();
         let mut errors = Vec::new();
         let err = |position: usize, text: &str, reason: String| UrlStateError {
@@ -80,14 +90,13 @@ impl UrlState {
             text: text.to_string(),
             reason,
         };
-        let default_lab = labs::all()[0];
-        let mut lab = default_lab;
-        for &(pos, item) in &items {
-            if let Some(id) = item.strip_prefix("lab=") {
+        let mut lab = labs::all()[0];
+        for (pos, key, value, item) in &items {
+            if let ("lab", Some(id)) = (key.as_str(), value) {
                 match labs::find(id) {
                     Some(l) => lab = l,
                     None => errors.push(err(
-                        pos,
+                        *pos,
                         item,
                         format!("no such lab (labs: {})", labs::ids()),
                     )),
@@ -95,21 +104,23 @@ impl UrlState {
             }
         }
         let mut state = Self::defaults(lab);
-        for &(pos, item) in &items {
-            let Some((key, value)) = item.split_once('=') else {
-                errors.push(err(pos, item, "expected key=value".into()));
+        for (pos, key, value, item) in &items {
+            let Some(value) = value else {
+                errors.push(err(*pos, item, "expected key=value".into()));
                 continue;
             };
-            match key {
+            match key.as_str() {
                 "lab" => {}
                 "seed" => match value.parse::<u64>() {
                     Ok(s) => state.seed = s,
-                    Err(_) => errors.push(err(pos, item, "seed must be a whole number ≥ 0".into())),
+                    Err(_) => {
+                        errors.push(err(*pos, item, "seed must be a whole number ≥ 0".into()))
+                    }
                 },
                 "speed" => match value.parse::<f64>() {
                     Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => state.speed = s,
                     _ => errors.push(err(
-                        pos,
+                        *pos,
                         item,
                         format!(
                             "speed must be between {} and {}",
@@ -119,7 +130,7 @@ impl UrlState {
                 },
                 _ => {
                     if let Err(e) = state.params.set_text(lab.params(), key, value) {
-                        errors.push(err(pos, item, e.to_string()));
+                        errors.push(err(*pos, item, e.to_string()));
                     }
                 }
             }
@@ -155,6 +166,21 @@ mod tests {
         let positions: Vec<usize> = errors.iter().map(|e| e.position).collect();
         assert_eq!(positions, vec![2, 4, 5, 6, 7]);
         assert!(errors[3].to_string().contains("unknown parameter `nope`"));
+    }
+
+    #[test]
+    fn percent_encoding_round_trips_and_bad_escapes_are_reported_not_fatal() {
+        let (s, errors) =
+            UrlState::parse("lab=free%2Drotation&seed=4&gyro_bias_deg_s=0%2E5&%%%&%zz=1");
+        assert_eq!(s.lab_id, "free-rotation");
+        assert_eq!(s.params.get("gyro_bias_deg_s"), 0.5);
+        assert_eq!(
+            errors.iter().map(|e| e.position).collect::<Vec<_>>(),
+            vec![4, 5]
+        );
+        let (back, errors) = UrlState::parse(&s.encode());
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(back, s);
     }
 
     #[test]

@@ -1,9 +1,10 @@
-//! Shared helpers for the Attitude Lab test suites: random attitudes, angle comparisons and
-//! the golden scenario that native and browser runs must agree on.
+//! Shared helpers for the Attitude Lab test suites: angle comparisons, scenario traces, and
+//! the golden traces that native and browser runs must agree on.
 
+use attlab::analysis::scenario::{Trace, run_trace};
 use attlab::labs;
-use attlab::params::ParamValues;
-use attlab::sim::Simulation;
+use attlab::model::{Lab, ParamValues};
+use attlab::sim::{Selection, SimOptions, Simulation};
 use std::f64::consts::{PI, TAU};
 
 /// Difference of two angles wrapped to (−π, π].
@@ -12,66 +13,168 @@ pub fn angle_diff(a: f64, b: f64) -> f64 {
     if d > PI { d - TAU } else { d }
 }
 
-/// The golden scenario: free rotation, seed 7, noise and bias on, 10 s at 100 Hz.
-pub fn golden_run() -> Simulation {
-    let lab = labs::find("free-rotation").expect("registered");
-    let mut p = ParamValues::defaults(lab.params());
-    let errors = p.apply_assignments(
-        lab.params(),
-        [
+/// A lab by id (panics with the registry's ids if there is none: a test's own typo).
+pub fn lab(id: &str) -> &'static dyn Lab {
+    labs::find(id).unwrap_or_else(|| panic!("no lab `{id}` (labs: {})", labs::ids()))
+}
+
+/// Runs lab `id` with `assignments` and keeps every row of `series`; any unknown name fails
+/// the test with the reason.
+pub fn trace(id: &str, assignments: &[&str], seed: u64, duration_s: f64, series: &[&str]) -> Trace {
+    run_trace(lab(id), assignments, seed, duration_s, series)
+        .unwrap_or_else(|e| panic!("{id} {assignments:?}: {e}"))
+}
+
+/// Steps of each lab's golden trace.
+pub const GOLDEN_STEPS: usize = 200;
+/// A golden checkpoint every so many steps.
+pub const GOLDEN_EVERY: usize = 25;
+
+/// Each lab's golden scenario: its defaults with the sensor errors switched on where the
+/// defaults have none, so the noise generators are exercised too.
+pub fn golden_assignments(id: &str) -> &'static [&'static str] {
+    match id {
+        "free-rotation" => &[
             "gyro_noise_deg_s=0.05",
             "gyro_bias_deg_s=0.2",
             "gyro_walk_deg_s_sqrt_s=0.01",
         ],
-    );
-    assert!(errors.is_empty(), "{errors:?}");
-    let mut sim = Simulation::with_history(lab, p, 7, 4);
-    sim.run_for(10.0);
-    sim
+        "p3" => &["gyro_noise_deg_s=0.05"],
+        _ => &[],
+    }
 }
 
-/// Values of the golden run's last row that are compared across platforms, by series name.
-pub const GOLDEN_SERIES: &[&str] = &[
-    "truth.yaw_deg",
-    "truth.pitch_deg",
-    "truth.roll_deg",
-    "quat-rk4.yaw_deg",
-    "quat-rk4.err_deg",
-    "uvz-rk4.pitch_deg",
-    "uvz-rk4.err_deg",
-    "uvz-rk4.P_axis_rad2",
-];
-
-/// The golden values, computed natively (see `golden.rs`, which checks and can print them).
-pub const GOLDEN_VALUES: &[f64] = &[
-    10.94222678100655,
-    -18.61883488801251,
-    61.85298985972472,
-    10.359708488303822,
-    1.931445912798706,
-    -18.815604350450197,
-    1.9314459126690424,
-    0.0012185458335017398,
-];
-
-/// The golden run's values of [`GOLDEN_SERIES`].
-pub fn golden_values(sim: &Simulation) -> Vec<f64> {
-    let rec = sim.recorder();
-    GOLDEN_SERIES
-        .iter()
-        .map(|name| {
-            rec.index_of(name)
-                .and_then(|i| rec.last(i))
-                .unwrap_or(f64::NAN)
-        })
-        .collect()
+/// Every series of lab `lab` at every [`GOLDEN_EVERY`]-th step of [`GOLDEN_STEPS`], seed 7:
+/// (series names, checkpoint rows).
+pub fn golden_trace(lab: &'static dyn Lab) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut p = ParamValues::defaults(lab.params());
+    let errors = p.apply_assignments(lab.params(), golden_assignments(lab.id()).iter().copied());
+    assert!(errors.is_empty(), "{}: {errors:?}", lab.id());
+    let options = SimOptions {
+        selection: Selection::All,
+        budget_bytes: 1 << 16,
+    };
+    let mut sim = Simulation::with_options(lab, p, 7, options).expect("every series exists");
+    let names = sim.specs().iter().map(|s| s.name.clone()).collect();
+    let mut rows = vec![sim.last_row().to_vec()];
+    for k in 1..=GOLDEN_STEPS {
+        sim.step();
+        if k % GOLDEN_EVERY == 0 {
+            rows.push(sim.last_row().to_vec());
+        }
+    }
+    (names, rows)
 }
 
-/// Largest relative difference between two equally long slices (absolute below 1e-12).
-pub fn max_relative_diff(a: &[f64], b: &[f64]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1e-12))
-        .fold(0.0, f64::max)
+/// The committed golden traces (JSON: lab id → {series, rows}, NaN as null).
+pub const GOLDEN_JSON: &str = include_str!("../golden/traces.json");
+
+/// One lab's golden trace as committed.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Golden {
+    /// Series names.
+    pub series: Vec<String>,
+    /// Checkpoint rows (None where the value is missing).
+    pub rows: Vec<Vec<Option<f64>>>,
+}
+
+/// The committed golden traces by lab id.
+pub fn committed_golden() -> std::collections::BTreeMap<String, Golden> {
+    serde_json::from_str(GOLDEN_JSON).expect("tests/golden/traces.json parses")
+}
+
+/// A trace in the committed form.
+pub fn to_golden(names: Vec<String>, rows: Vec<Vec<f64>>) -> Golden {
+    Golden {
+        series: names,
+        rows: rows
+            .into_iter()
+            .map(|r| r.into_iter().map(|v| (!v.is_nan()).then_some(v)).collect())
+            .collect(),
+    }
+}
+
+/// Compares a fresh trace with the committed one: same series, missing exactly where missing,
+/// and every value within `rel` of the committed one relative to the largest |value| of its
+/// series over the trace — for a covariance `src.cov_a_b`, relative to √(var_a·var_b), the
+/// scale a correlation is judged on (a cross term that should be zero is rounding noise).
+/// Returns the largest relative difference, or the first one over `rel`.
+pub fn compare_golden(fresh: &Golden, committed: &Golden, rel: f64) -> Result<f64, String> {
+    if fresh.series != committed.series {
+        return Err(format!(
+            "series differ: now {} series, committed {}",
+            fresh.series.len(),
+            committed.series.len()
+        ));
+    }
+    if fresh.rows.len() != committed.rows.len() {
+        return Err("checkpoint count differs".into());
+    }
+    let mut worst = 0.0_f64;
+    let largest = |s: usize| {
+        committed
+            .rows
+            .iter()
+            .filter_map(|r| r[s])
+            .fold(0.0_f64, |m, v| m.max(v.abs()))
+    };
+    let index = |n: &str| committed.series.iter().position(|x| x == n);
+    for (s, name) in fresh.series.iter().enumerate() {
+        let mut scale = largest(s);
+        if let Some((src, pair)) = name.split_once(".cov_")
+            && let Some((a, b)) = pair.split_once('_')
+            && let (Some(ia), Some(ib)) = (
+                index(&format!("{src}.var_{a}")),
+                index(&format!("{src}.var_{b}")),
+            )
+        {
+            scale = scale.max((largest(ia) * largest(ib)).sqrt());
+        }
+        let scale = scale.max(1e-300);
+        for (k, (a, b)) in fresh.rows.iter().zip(&committed.rows).enumerate() {
+            match (a[s], b[s]) {
+                (None, None) => {}
+                (Some(x), Some(y)) => {
+                    let d = (x - y).abs() / scale;
+                    if d.is_nan() || d > rel {
+                        return Err(format!(
+                            "{name} at checkpoint {k}: {x} vs committed {y} (relative {d:e})"
+                        ));
+                    }
+                    worst = worst.max(d);
+                }
+                (x, y) => {
+                    return Err(format!(
+                        "{name} at checkpoint {k}: {x:?} vs committed {y:?}"
+                    ));
+                }
+            }
+        }
+    }
+    Ok(worst)
+}
+
+/// `a.max(b)` that keeps a NaN instead of dropping it (as `f64::max` does), so a worst case
+/// taken over values that include a NaN fails the comparison it feeds.
+///
+/// ```
+/// # use attlab_tests::max_keep_nan;
+/// assert!(max_keep_nan(1.0, f64::NAN).is_nan());
+/// assert_eq!(max_keep_nan(1.0, 2.0), 2.0);
+/// ```
+pub fn max_keep_nan(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// `a.min(b)` that keeps a NaN.
+pub fn min_keep_nan(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.min(b)
+    }
 }

@@ -6,7 +6,7 @@
 use attlab::math::{
     EulerYpr, KrylovAngles, WzAttitude, WzChart, dcm_from_quaternion, quaternion_from_dcm,
 };
-use attlab_tests::angle_diff;
+use attlab_tests::{angle_diff, max_keep_nan};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion};
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -69,27 +69,26 @@ fn q_dist(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>) -> f64 {
 fn m_dist(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
     (a - b).amax()
 }
+/// The largest of three differences, NaN if any is (so a NaN fails the test's bound).
+fn worst3(a: f64, b: f64, c: f64) -> f64 {
+    max_keep_nan(max_keep_nan(a.abs(), b.abs()), c.abs())
+}
 fn e_dist(a: &EulerYpr, b: &EulerYpr) -> f64 {
-    angle_diff(a.yaw_rad, b.yaw_rad)
-        .abs()
-        .max((a.pitch_rad - b.pitch_rad).abs())
-        .max(angle_diff(a.roll_rad, b.roll_rad).abs())
+    worst3(
+        angle_diff(a.yaw_rad, b.yaw_rad),
+        a.pitch_rad - b.pitch_rad,
+        angle_diff(a.roll_rad, b.roll_rad),
+    )
 }
 fn k_dist(a: &KrylovAngles, b: &KrylovAngles) -> f64 {
     let (x, y) = (a.to_array(), b.to_array());
-    angle_diff(x[0], y[0])
-        .abs()
-        .max((x[1] - y[1]).abs())
-        .max(angle_diff(x[2], y[2]).abs())
+    worst3(angle_diff(x[0], y[0]), x[1] - y[1], angle_diff(x[2], y[2]))
 }
 fn w_dist(a: &WzAttitude, b: &WzAttitude) -> f64 {
     if a.chart != b.chart {
         return f64::INFINITY;
     }
-    (a.u - b.u)
-        .abs()
-        .max((a.v - b.v).abs())
-        .max(angle_diff(a.z_rad, b.z_rad).abs())
+    worst3(a.u - b.u, a.v - b.v, angle_diff(a.z_rad, b.z_rad))
 }
 
 proptest! {

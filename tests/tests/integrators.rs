@@ -4,6 +4,7 @@
 
 use attlab::dynamics::{AngleProfile, EulerMotion};
 use attlab::math::{WzAttitude, WzChart, step_quaternion_rk4, step_uvz_rk4};
+use attlab_tests::{max_keep_nan, min_keep_nan};
 
 struct Outcome {
     quat_vs_uvz_rad: f64,
@@ -28,10 +29,10 @@ fn integrate(motion: &EulerMotion, duration_s: f64, dt_s: f64) -> Outcome {
         wz = next;
         let truth = motion.attitude(t0 + dt_s);
         let q_w = wz.to_quaternion();
-        worst_pair = worst_pair.max(q.angle_to(&q_w));
-        worst_q = worst_q.max(q.angle_to(&truth));
-        worst_w = worst_w.max(q_w.angle_to(&truth));
-        min_kz = min_kz.min(wz.vertical_in_body().z);
+        worst_pair = max_keep_nan(worst_pair, q.angle_to(&q_w));
+        worst_q = max_keep_nan(worst_q, q.angle_to(&truth));
+        worst_w = max_keep_nan(worst_w, q_w.angle_to(&truth));
+        min_kz = min_keep_nan(min_kz, wz.vertical_in_body().z);
     }
     Outcome {
         quat_vs_uvz_rad: worst_pair,
@@ -131,7 +132,10 @@ fn without_the_chart_switch_the_north_chart_blows_up() {
             chart: WzChart::North,
         };
         if x.iter().all(|c| c.is_finite()) {
-            worst = worst.max(wz.to_quaternion().angle_to(&motion.attitude(t0 + dt)));
+            worst = max_keep_nan(
+                worst,
+                wz.to_quaternion().angle_to(&motion.attitude(t0 + dt)),
+            );
         } else {
             worst = f64::INFINITY;
             break;

@@ -2,11 +2,16 @@
 //!
 //! The eframe front end (wgpu renderer) of Attitude Lab. The same code runs in the browser
 //! (see [`start`]) and as a desktop window (`cargo run -p attlab-web --release`).
+//!
+//! Dependencies point one way: `app` (the frame loop) → `panels` (read the state, emit
+//! commands) → `state` (the state and the one place that applies commands) → `render`
+//! (drawing) and `platform` (browser/desktop differences).
 
 pub mod app;
 pub mod panels;
 pub mod platform;
 pub mod render;
+pub mod state;
 
 pub use app::AttLabApp;
 

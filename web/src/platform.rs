@@ -67,35 +67,40 @@ pub fn publish_status(status: &Status<'_>) {
     let _ = status;
 }
 
-/// Offers `contents` to the user as a file named `name`: a download in the browser, a save
-/// dialog on the desktop. Returns a message for the status line.
-pub fn save_file(name: &str, mime: &str, contents: &[u8]) -> Result<String, String> {
+/// Offers `contents` to the user as a file named `name`, through `rfd`: in the browser a
+/// download link (rfd's overlay: click it to save), on the desktop a save dialog. Returns a
+/// message for the user.
+/// On the desktop, `dir` saves there without asking (scripted and headless use).
+pub fn save_file(
+    name: &str,
+    mime: &str,
+    contents: Vec<u8>,
+    dir: Option<&std::path::Path>,
+) -> Result<String, String> {
+    let _ = (mime, dir);
     #[cfg(target_arch = "wasm32")]
     {
-        use wasm_bindgen::JsCast;
-        let window = web_sys::window().ok_or("no window")?;
-        let document = window.document().ok_or("no document")?;
-        let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(contents).into());
-        let options = web_sys::BlobPropertyBag::new();
-        options.set_type(mime);
-        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
-            .map_err(|e| format!("{e:?}"))?;
-        let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| format!("{e:?}"))?;
-        let a: web_sys::HtmlAnchorElement = document
-            .create_element("a")
-            .map_err(|e| format!("{e:?}"))?
-            .dyn_into()
-            .map_err(|_| "not an anchor")?;
-        a.set_href(&url);
-        a.set_download(name);
-        a.click();
-        let _ = web_sys::Url::revoke_object_url(&url);
-        Ok(format!("downloaded {name}"))
+        let owned = name.to_string();
+        wasm_bindgen_futures::spawn_local(async move {
+            let name = owned;
+            if let Some(handle) = rfd::AsyncFileDialog::new()
+                .set_file_name(&name)
+                .save_file()
+                .await
+                && let Err(e) = handle.write(&contents).await
+            {
+                log::error!("saving {name}: {e}");
+            }
+        });
+        Ok(format!("{name} ready: click the download link"))
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
-        let _ = mime;
-        let Some(path) = rfd::FileDialog::new().set_file_name(name).save_file() else {
+        let chosen = match dir {
+            Some(dir) => Some(dir.join(name)),
+            None => rfd::FileDialog::new().set_file_name(name).save_file(),
+        };
+        let Some(path) = chosen else {
             return Ok("save cancelled".into());
         };
         std::fs::write(&path, contents)

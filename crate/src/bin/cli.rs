@@ -1,9 +1,10 @@
 //! The CLI proper (native only).
 
-use attlab::labs::{self, Lab};
-use attlab::params::ParamValues;
-use attlab::record::format_value;
-use attlab::sim::Simulation;
+use attlab::analysis::fuzz::{self, FuzzConfig};
+use attlab::analysis::readme;
+use attlab::labs;
+use attlab::model::{Lab, ParamKind, ParamValues, Reproduction};
+use attlab::sim::{CsvSink, Selection, SimOptions, Simulation};
 use clap::{Parser, Subcommand};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -24,13 +25,33 @@ struct Cli {
 enum Command {
     /// List the labs and their parameters.
     Labs,
-    /// Run a lab's paper scenarios and print measured numbers beside the paper's.
+    /// Run a lab's paper scenarios and print measured numbers beside the paper's: each row
+    /// is a measurement, or a check that matches or (declared, with the reason) differs.
     Reproduce {
         /// Lab id, or `all`.
         lab: String,
         /// Also write the tables as JSON to this file.
         #[arg(long)]
         json: Option<PathBuf>,
+        /// Print the tables as Markdown instead of plain text.
+        #[arg(long)]
+        markdown: bool,
+        /// Rewrite the tables between the `<!-- reproduce:ID -->` markers of this README.
+        #[arg(long)]
+        readme: Option<PathBuf>,
+    },
+    /// Run random parameter sets of every lab and check what must always hold (no panic,
+    /// finite estimates or a diverged status, symmetric PSD covariances, fixed memory).
+    Fuzz {
+        /// Parameter sets, spread over the labs.
+        #[arg(long, default_value_t = 1000)]
+        sets: usize,
+        /// Steps per set.
+        #[arg(long, default_value_t = 2000)]
+        steps: usize,
+        /// Seed of the parameter draws.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
     },
     /// Run a lab and write every recorded series to CSV (plus a JSON sidecar).
     Run {
@@ -79,6 +100,9 @@ enum Command {
         /// Steps to time per item.
         #[arg(long, default_value_t = 20_000)]
         steps: usize,
+        /// Only this lab.
+        #[arg(long)]
+        lab: Option<String>,
     },
 }
 
@@ -90,7 +114,13 @@ pub fn main() -> ExitCode {
             list_labs();
             Ok(true)
         }
-        Command::Reproduce { lab, json } => reproduce(&lab, json.as_deref()),
+        Command::Reproduce {
+            lab,
+            json,
+            markdown,
+            readme,
+        } => reproduce(&lab, json.as_deref(), markdown, readme.as_deref()),
+        Command::Fuzz { sets, steps, seed } => Ok(run_fuzz(sets, steps, seed)),
         Command::Run {
             lab,
             seed,
@@ -107,10 +137,13 @@ pub fn main() -> ExitCode {
             csv,
             set,
         } => replay(&lab, &log, &rate_unit, &time_unit, &csv, &set).map(|()| true),
-        Command::Bench { steps } => {
-            bench(steps.max(10));
-            Ok(true)
-        }
+        Command::Bench { steps, lab } => match lab.as_deref().map(find_lab).transpose() {
+            Ok(only) => {
+                bench(steps.max(10), only);
+                Ok(true)
+            }
+            Err(e) => Err(e),
+        },
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -130,39 +163,93 @@ fn list_labs() {
     for lab in labs::all() {
         println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
         for p in lab.presets() {
-            println!("  --preset {} ({})", p.name, p.help);
+            println!("  --preset {:?} ({})", p.name, p.help);
         }
         for p in lab.params() {
+            let range = match p.kind {
+                ParamKind::Choice(options) => options
+                    .iter()
+                    .enumerate()
+                    .map(|(i, o)| format!("{i} = {o}"))
+                    .collect::<Vec<_>>()
+                    .join(" | "),
+                ParamKind::Toggle => "0 | 1".to_string(),
+                _ => format!("{} … {} {}", p.min, p.max, p.unit),
+            };
             println!(
-                "  --set {}=<{} … {}> {} (default {}) {}",
-                p.key, p.min, p.max, p.unit, p.default, p.label
+                "  --set {}=<{range}> (default {}) {}",
+                p.key, p.default, p.label
             );
         }
     }
 }
 
-fn reproduce(which: &str, json: Option<&Path>) -> Result<bool, String> {
+fn reproduce(
+    which: &str,
+    json: Option<&Path>,
+    markdown: bool,
+    readme_path: Option<&Path>,
+) -> Result<bool, String> {
     let selected: Vec<&'static dyn Lab> = if which == "all" {
         labs::all().to_vec()
     } else {
         vec![find_lab(which)?]
     };
-    let mut reports = Vec::new();
+    let mut reports: Vec<Reproduction> = Vec::new();
     for lab in selected {
-        let rep = lab.reproduce();
-        println!("{}", rep.to_table());
+        let rep = lab
+            .reproduce()
+            .map_err(|e| format!("{}: the reproduction could not be computed: {e}", lab.id()))?;
+        if markdown {
+            println!("### {}\n\n{}", rep.lab, rep.to_markdown());
+        } else {
+            println!("{}", rep.to_table());
+            print_timings(lab, 200_000);
+        }
         reports.push(rep);
-        print_timings(lab, 200_000);
     }
     if let Some(path) = json {
         let text = serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?;
         std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
-    let ok = reports.iter().all(|r| r.all_pass());
-    if !ok {
-        println!("some rows do not match (marked NO)");
+    if let Some(path) = readme_path {
+        let mut text = std::fs::read_to_string(path)
+            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        for rep in &reports {
+            text =
+                readme::with_table(&text, rep).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("updated {} tables in {}", reports.len(), path.display());
     }
-    Ok(ok)
+    let failures: Vec<String> = reports.iter().flat_map(Reproduction::failures).collect();
+    for f in &failures {
+        println!("FAILS: {f}");
+    }
+    Ok(failures.is_empty())
+}
+
+fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
+    let config = FuzzConfig { sets, steps, seed };
+    let report = fuzz::run(labs::all(), config, |i, lab| {
+        if i % 100 == 0 {
+            eprintln!("fuzz: set {i} of {sets} ({lab})");
+        }
+    });
+    for (lab, n) in &report.sets_per_lab {
+        println!("{lab:<16} {n} sets");
+    }
+    println!(
+        "{} sets, {} with an estimator flagging itself (diverged/unobservable), largest recorder {:.1} MiB, {} failures",
+        sets,
+        report.flagged,
+        report.max_memory_bytes as f64 / (1 << 20) as f64,
+        report.failures.len()
+    );
+    for f in &report.failures {
+        println!("FAIL {f}");
+    }
+    report.failures.is_empty()
 }
 
 fn run(
@@ -181,7 +268,8 @@ fn run(
             "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
         ));
     }
-    let mut sim = Simulation::with_history(lab, params.clone(), seed, 2);
+    let mut sim = Simulation::with_options(lab, params.clone(), seed, all_series())
+        .map_err(|e| e.to_string())?;
     let rows = stream_csv(&mut sim, duration_s, csv_path)?;
     let sidecar = csv_path.with_extension("json");
     let meta = serde_json::json!({
@@ -197,7 +285,8 @@ fn run(
             "key": p.key, "value": params.get(p.key), "unit": p.unit, "label": p.label,
             "default": p.default, "min": p.min, "max": p.max,
         })).collect::<Vec<_>>(),
-        "series": sim.recorder().specs(),
+        "series": sim.specs(),
+        "missing_values": "empty cells",
         "csv": csv_path.file_name().map(|n| n.to_string_lossy().to_string()),
     });
     let text = serde_json::to_string_pretty(&meta).map_err(|e| e.to_string())?;
@@ -205,7 +294,7 @@ fn run(
         .map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
     println!(
         "wrote {rows} rows × {} series to {} and parameters to {}",
-        sim.recorder().specs().len(),
+        sim.specs().len(),
         csv_path.display(),
         sidecar.display()
     );
@@ -245,7 +334,7 @@ fn replay(
     let params = params_from(lab, None, set)?;
     let (samples, skipped) = (log.t_s.len(), log.errors.len());
     let duration = log.t_s.last().copied().unwrap_or(0.0) - log.t_s.first().copied().unwrap_or(0.0);
-    let mut sim = Simulation::replay(lab, params, log, 2)
+    let mut sim = Simulation::replay(lab, params, log, all_series())
         .map_err(|e| format!("{}: {e}", log_path.display()))?;
     stream_csv(&mut sim, duration, csv_path)?;
     println!(
@@ -292,28 +381,28 @@ fn params_from(
     }
 }
 
+/// Every series, in a small recorder: the CSV gets every sample as it is made.
+fn all_series() -> SimOptions {
+    SimOptions {
+        selection: Selection::All,
+        budget_bytes: 1 << 20,
+    }
+}
+
 /// Writes the header and the current row, then steps until `duration_s`, one row per step.
 /// Returns the number of rows written.
 fn stream_csv(sim: &mut Simulation, duration_s: f64, csv_path: &Path) -> Result<u64, String> {
     let file = std::fs::File::create(csv_path)
         .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
-    let mut out = csv::Writer::from_writer(std::io::BufWriter::new(file));
     let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
-    out.write_record(sim.recorder().specs().iter().map(|s| s.header()))
-        .map_err(io)?;
-    out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
-        .map_err(io)?;
-    let mut rows = 1u64;
+    let mut out = CsvSink::new(std::io::BufWriter::new(file), sim.specs()).map_err(io)?;
+    out.row(sim.last_row()).map_err(io)?;
     let end = duration_s - 1e-9 * sim.dt_s();
     while sim.t_s() < end {
         sim.step();
-        out.write_record(sim.last_row().iter().map(|v| format_value(*v)))
-            .map_err(io)?;
-        rows += 1;
+        out.row(sim.last_row()).map_err(io)?;
     }
-    out.flush()
-        .map_err(|e| format!("writing {}: {e}", csv_path.display()))?;
-    Ok(rows)
+    out.finish().map_err(io)
 }
 
 /// Times the lab's timing items and prints each against the first (the cost comparison).
@@ -344,40 +433,115 @@ fn print_timings(lab: &'static dyn Lab, reps: usize) {
     println!();
 }
 
-fn bench(steps: usize) {
-    println!("{:<22} {:<34} {:>12}", "lab", "item", "ns/step");
-    for lab in labs::all() {
+/// Nanoseconds per call of `f`: the best of five batches of `n / 5` calls after a
+/// warm-up (the least disturbed measurement on a shared machine).
+fn time_ns(n: usize, mut f: impl FnMut()) -> f64 {
+    for _ in 0..n / 10 {
+        f();
+    }
+    let batch = (n / 5).max(1);
+    (0..5)
+        .map(|_| {
+            let t0 = Instant::now();
+            for _ in 0..batch {
+                f();
+            }
+            t0.elapsed().as_nanos() as f64 / batch as f64
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn bench(steps: usize, only: Option<&'static dyn Lab>) {
+    println!(
+        "{:<14} {:<38} {:>10} {:>10}",
+        "lab", "item", "ns/step", "note"
+    );
+    let selected: Vec<&'static dyn Lab> = only.map_or_else(|| labs::all().to_vec(), |l| vec![l]);
+    for lab in &selected {
         let params = ParamValues::defaults(lab.params());
-        let mut sim = Simulation::with_history(*lab, params.clone(), 1, 1024);
-        let t0 = Instant::now();
-        for _ in 0..steps {
-            sim.step();
-        }
-        let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
-        println!(
-            "{:<22} {:<34} {:>12.0}",
-            lab.id(),
-            "simulation step (all)",
-            ns
-        );
+        let mut sim = Simulation::new(*lab, params.clone(), 1);
+        let step_ns = time_ns(steps, || sim.step());
+        let memory = sim.recorder().memory_bytes();
+        let series = sim.specs().len();
+        let mut all = Simulation::with_options(*lab, params.clone(), 1, all_series())
+            .map_err(|e| e.to_string());
+        let all_ns = match &mut all {
+            Ok(sim) => time_ns(steps, || sim.step()),
+            Err(_) => f64::NAN,
+        };
+        let mut bare = Simulation::with_options(*lab, params.clone(), 1, SimOptions::named(&[]))
+            .map_err(|e| e.to_string());
+        let bare_ns = match &mut bare {
+            Ok(sim) => time_ns(steps, || sim.step()),
+            Err(_) => f64::NAN,
+        };
+
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         let mut run = lab.build(&params, &mut rng);
         let dt = lab.dt_s(&params);
         let trace = run.measurement_trace(dt, steps, &mut rng);
+        let mut sum = 0.0;
+        let mut lines = Vec::new();
         for est in &mut run.estimators {
-            let t0 = Instant::now();
-            for m in &trace {
-                est.step(m, dt);
-            }
-            let ns = t0.elapsed().as_nanos() as f64 / steps as f64;
+            // Best of five chunks of the trace, like the simulation step.
+            let ns = trace
+                .chunks(trace.len().div_ceil(5).max(1))
+                .map(|chunk| {
+                    let t0 = Instant::now();
+                    for m in chunk {
+                        est.step(m, dt);
+                    }
+                    t0.elapsed().as_nanos() as f64 / chunk.len() as f64
+                })
+                .fold(f64::INFINITY, f64::min);
             std::hint::black_box(est.estimate());
-            println!(
-                "{:<22} {:<34} {:>12.0}",
-                lab.id(),
-                format!("estimator {}", est.id()),
-                ns
-            );
+            sum += ns;
+            lines.push((format!("estimator {}", est.id()), ns));
         }
+        let aim = 2.0 * sum + 500.0;
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            lab.id(),
+            format!("simulation step (page: {series} series)"),
+            step_ns,
+            if step_ns <= aim {
+                "within aim"
+            } else {
+                "OVER AIM"
+            }
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0}",
+            "", "simulation step (every series)", all_ns
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0}",
+            "", "simulation step (time only)", bare_ns
+        );
+        for (name, ns) in lines {
+            println!("{:<14} {:<38} {:>10.0}", "", name, ns);
+        }
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            "",
+            "sum of estimator steps",
+            sum,
+            format!("×{:.2}", step_ns / sum.max(1.0))
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            "",
+            "aim: 2 × sum + 500 ns",
+            aim,
+            format!("{:.2} of aim", step_ns / aim)
+        );
+        println!(
+            "{:<14} {:<38} {:>10.1} {:>10}",
+            "",
+            "recorder memory (MiB, fixed)",
+            memory as f64 / (1 << 20) as f64,
+            format!("{} rows full rate", sim.recorder().window())
+        );
         print_timings(*lab, steps * 10);
     }
     let _ = std::io::stdout().flush();

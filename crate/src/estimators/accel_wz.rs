@@ -3,9 +3,8 @@
 //! linear acceleration goes straight into the estimate. Gives the vertical only (pitch and
 //! roll), not z. Uses the flipped chart when the body is upside down.
 
-use super::{Estimate, Estimator, Measurements};
 use crate::math::{WzAttitude, better_chart, chart_coords_of_vertical};
-use crate::params::ParamValues;
+use crate::model::{Attitude, Estimate, Estimator, Measurements, Outputs, ParamValues};
 
 /// Tilt from the accelerometer alone.
 #[derive(Clone, Debug, Default)]
@@ -44,8 +43,15 @@ impl Estimator for AccelWz {
 
     fn estimate(&self) -> Estimate {
         Estimate {
-            wz: self.wz,
+            attitude: self.wz.map_or(Attitude::None, Attitude::Tilt),
             ..Estimate::default()
+        }
+    }
+
+    fn outputs(&self) -> Outputs {
+        Outputs {
+            tilt: true,
+            ..Outputs::default()
         }
     }
 }

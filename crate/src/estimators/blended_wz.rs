@@ -10,9 +10,8 @@
 //! is carried into the new chart, so the blend works on the whole sphere. The separate
 //! channels HPF(u), HPF(v), LPF(uᵃ), LPF(vᵃ) are published for the paper's Fig. 10.
 
-use super::{Estimate, Estimator, Measurements};
 use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk4};
-use crate::params::ParamValues;
+use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues};
 use nalgebra::Vector3;
 
 /// Parameter key of the blend time constant T (s).
@@ -91,8 +90,7 @@ impl Estimator for BlendedWz {
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
-        let t = params.get(BLEND_TIME_CONSTANT_KEY);
-        if t.is_finite() {
+        if let Ok(t) = params.try_get(BLEND_TIME_CONSTANT_KEY) {
             self.time_constant_s = t;
         }
     }
@@ -130,13 +128,15 @@ impl Estimator for BlendedWz {
 
     fn estimate(&self) -> Estimate {
         let wz = self.blended();
-        let [lu, lv, lua, lva] = self.channels;
         Estimate {
-            q_ref_from_body: Some(wz.to_quaternion()),
-            wz: Some(wz),
+            attitude: Attitude::Wz(wz),
             rate_body_rad_s: self.last_rate_rad_s,
-            extras: vec![self.gyro.u - lu, self.gyro.v - lv, lua, lva],
             ..Estimate::default()
         }
+    }
+
+    fn extras(&self, out: &mut [f64]) {
+        let [lu, lv, lua, lva] = self.channels;
+        out.copy_from_slice(&[self.gyro.u - lu, self.gyro.v - lv, lua, lva]);
     }
 }

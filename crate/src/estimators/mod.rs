@@ -1,13 +1,16 @@
 //! Estimators: one file each, each citing its paper and equations.
 //!
-//! Every estimator publishes the same [`Estimate`] shape, so plots, exports and consistency
-//! checks work for all of them without knowing which one they look at.
+//! Every estimator implements [`crate::model::Estimator`] and publishes the same
+//! [`crate::model::Estimate`] shape plus a self-describing covariance, so plots, exports and
+//! consistency checks work for all of them without knowing which one they look at. Kalman
+//! filters share the vocabulary and update of [`kf`].
 
 mod accel_wz;
 mod blended_wz;
+pub mod covariance_matching;
+pub mod kf;
 mod one_axis_kf;
 mod quaternion_integration;
-pub mod scalar_kf;
 mod wz_integration;
 mod wz_kalman;
 
@@ -18,93 +21,15 @@ pub use quaternion_integration::QuaternionIntegration;
 pub use wz_integration::WzIntegration;
 pub use wz_kalman::{ACCEL_NOISE_KEY, KF_Q_SCALE_KEY, WzKalman};
 
-use crate::math::WzAttitude;
-use crate::params::ParamValues;
-use nalgebra::{UnitQuaternion, Vector3};
+use crate::model::{ParamValues, StateInfo, StateKind};
 
-/// What the sensors delivered at one step. Fields a lab's sensors don't have stay `None`.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Measurements {
-    /// Time of the sample (s).
-    pub t_s: f64,
-    /// Three-axis gyro reading in body axes (rad/s).
-    pub gyro_body_rad_s: Option<Vector3<f64>>,
-    /// Accelerometer specific force in body axes, in units of g.
-    pub accel_body_g: Option<Vector3<f64>>,
-    /// Single-axis gyro reading (rad/s).
-    pub gyro_axis_rad_s: Option<f64>,
-}
-
-/// Health of an estimator, shown in the UI and recorded.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub enum EstimatorStatus {
-    /// Running normally.
-    #[default]
-    Ok,
-    /// The state or covariance became non-finite or lost positive definiteness.
-    Diverged(String),
-    /// The measurements cannot determine the state right now.
-    Unobservable(String),
-}
-
-impl EstimatorStatus {
-    /// 0 = ok, 1 = diverged, 2 = unobservable (the recorded value).
-    pub fn code(&self) -> f64 {
-        match self {
-            Self::Ok => 0.0,
-            Self::Diverged(_) => 1.0,
-            Self::Unobservable(_) => 2.0,
-        }
-    }
-}
-
-/// The uniform record every estimator publishes each step.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Estimate {
-    /// Estimated attitude, if the estimator has a full attitude.
-    pub q_ref_from_body: Option<UnitQuaternion<f64>>,
-    /// The same attitude as (w, z), for estimators that work in paper 3's parameters.
-    pub wz: Option<WzAttitude>,
-    /// Estimated angle of a single-axis estimator (rad).
-    pub angle_rad: Option<f64>,
-    /// Estimated body rate (rad/s).
-    pub rate_body_rad_s: Option<Vector3<f64>>,
-    /// Named covariance elements, in the order of [`Estimator::covariance_names`].
-    pub covariance: Vec<f64>,
-    /// Innovation components, in the order of [`Estimator::innovation_names`].
-    pub innovation: Vec<f64>,
-    /// Estimator-specific internals worth plotting, in the order of
-    /// [`Estimator::extra_names`] (e.g. the filter channels of a complementary filter).
-    pub extras: Vec<f64>,
-    /// Health.
-    pub status: EstimatorStatus,
-}
-
-/// An attitude estimator in the simulation loop.
-pub trait Estimator: Send {
-    /// Short stable id used in series names, e.g. `quat-rk4`.
-    fn id(&self) -> &'static str;
-    /// Human label for legends.
-    fn label(&self) -> &'static str;
-    /// Names (with units) of the covariance elements it publishes.
-    fn covariance_names(&self) -> &'static [&'static str] {
-        &[]
-    }
-    /// Names (with units) of the innovation components it publishes.
-    fn innovation_names(&self) -> &'static [&'static str] {
-        &[]
-    }
-    /// Names (with units) of the internals it publishes in [`Estimate::extras`].
-    fn extra_names(&self) -> &'static [&'static str] {
-        &[]
-    }
-    /// Takes new parameter values (a slider moved); effective from the next step.
-    fn apply_params(&mut self, params: &ParamValues);
-    /// Processes the measurements of one step of length `dt_s`.
-    fn step(&mut self, measurements: &Measurements, dt_s: f64);
-    /// The current estimate.
-    fn estimate(&self) -> Estimate;
-}
+/// The states of an attitude error about the three body axes (rad): the covariance the
+/// integrators publish.
+pub const ATTITUDE_AXES: &[StateInfo] = &[
+    StateInfo::new("att_x", "rad", StateKind::AttitudeAxis(0)),
+    StateInfo::new("att_y", "rad", StateKind::AttitudeAxis(1)),
+    StateInfo::new("att_z", "rad", StateKind::AttitudeAxis(2)),
+];
 
 /// The error model of pure gyro integration, shared by the integrators: white gyro noise
 /// (σ per sample) accumulates as an angle random walk, an unknown constant bias of 1σ
@@ -150,13 +75,12 @@ pub const GYRO_NOISE_KEY: &str = "gyro_noise_deg_s";
 /// See [`GYRO_NOISE_KEY`].
 pub const GYRO_BIAS_KEY: &str = "gyro_bias_deg_s";
 
+/// Takes the gyro's noise and bias from the lab's parameters, where the lab has them.
 fn update_error_model(model: &mut IntegrationErrorModel, params: &ParamValues) {
-    let noise = params.get(GYRO_NOISE_KEY);
-    let bias = params.get(GYRO_BIAS_KEY);
-    if noise.is_finite() {
+    if let Ok(noise) = params.try_get(GYRO_NOISE_KEY) {
         model.noise_sigma_rad_s = noise.to_radians();
     }
-    if bias.is_finite() {
+    if let Ok(bias) = params.try_get(GYRO_BIAS_KEY) {
         model.bias_sigma_rad_s = bias.to_radians();
     }
 }

@@ -9,10 +9,14 @@
 //! and time invariant, so many small steps equal one long one) and update when an averaged
 //! gyro sample arrives. Adaptation is the paper's covariance matching, in [`ScalarKf`].
 
-use super::scalar_kf::{Adaptation, QUse, ScalarKf, rotation_transition, torsion_transition};
-use super::{Estimate, Estimator, EstimatorStatus, Measurements};
-use crate::params::ParamValues;
-use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
+use super::covariance_matching::{
+    AdaptMode, Adaptation, AdaptiveKf, rotation_transition, torsion_transition,
+};
+use crate::model::{
+    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, StateInfo,
+    StateKind,
+};
+use nalgebra::{Matrix2, Vector2, Vector3};
 
 /// Which dynamic model the filter assumes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,20 +36,35 @@ pub mod keys {
     pub const WINDOW: &str = "kf_window";
     /// Adapt R as well (toggle).
     pub const ADAPT_R: &str = "kf_adapt_r";
-    /// How Q_N is used: 0 = process noise, 1 = reset P (choice).
-    pub const Q_USE: &str = "kf_q_use";
+    /// Adaptation mode (choice, in the order of `AdaptMode::ALL`).
+    pub const MODE: &str = "kf_adaptation";
     /// Gyro noise σ per input sample (°/s).
     pub const NOISE: &str = "gyro_noise_deg_s";
 }
+
+/// How far (rad) the estimate may leave the integrated angle φ_int before the filter is
+/// declared diverged: ten turns. No working filter on this pendulum gets near it (without
+/// adaptation the torsional filter's model error reaches ~100°); an unstable adaptation runs
+/// past it within seconds.
+pub const RUNAWAY_RAD: f64 = 10.0 * std::f64::consts::TAU;
+
+/// The states of both filters.
+const STATES: &[StateInfo] = &[
+    StateInfo::new("phi", "rad", StateKind::Angle),
+    StateInfo::new("phidot", "rad/s", StateKind::Rate),
+];
 
 /// One of paper 1's Kalman filters.
 #[derive(Clone, Debug)]
 pub struct OneAxisKf {
     model: OneAxisModel,
-    kf: ScalarKf,
+    kf: AdaptiveKf,
     averaging: usize,
     model_from: Option<fn(&ParamValues) -> OneAxisModel>,
+    last_z: Option<f64>,
+    phi_int_rad: f64,
     rate_minus_sensor_rad_s: f64,
+    innovation: [f64; 1],
     status: EstimatorStatus,
 }
 
@@ -53,14 +72,14 @@ impl OneAxisKf {
     /// Starts at (φ₀, φ̇₀) with covariance `p0`; `averaging` is the number of gyro samples
     /// per measurement (it sets R = σ²/m).
     pub fn new(model: OneAxisModel, x0: Vector2<f64>, p0: Matrix2<f64>, averaging: usize) -> Self {
-        let kf = ScalarKf::new(
+        let kf = AdaptiveKf::new(
             x0,
             p0,
             1e-8,
             Adaptation {
                 window: 0,
                 adapt_r: false,
-                q_use: QUse::ProcessNoise,
+                mode: AdaptMode::SawTooth,
             },
         );
         Self {
@@ -68,7 +87,10 @@ impl OneAxisKf {
             kf,
             averaging: averaging.max(1),
             model_from: None,
+            last_z: None,
+            phi_int_rad: x0[0],
             rate_minus_sensor_rad_s: 0.0,
+            innovation: [0.0],
             status: EstimatorStatus::Ok,
         }
     }
@@ -81,13 +103,8 @@ impl OneAxisKf {
     }
 
     /// The filter state.
-    pub fn filter(&self) -> &ScalarKf {
+    pub fn filter(&self) -> &AdaptiveKf {
         &self.kf
-    }
-
-    /// Changes the model (e.g. the torsion period slider).
-    pub fn set_model(&mut self, model: OneAxisModel) {
-        self.model = model;
     }
 
     fn transition(&self, dt_s: f64) -> Matrix2<f64> {
@@ -113,16 +130,36 @@ impl Estimator for OneAxisKf {
         }
     }
 
-    fn covariance_names(&self) -> &'static [&'static str] {
-        &["a_rad2", "b_rad2_s", "c_rad2_s2"]
+    fn covariance_states(&self) -> &'static [StateInfo] {
+        STATES
+    }
+
+    fn covariance(&self) -> Option<Covariance<'_>> {
+        Some(Covariance {
+            states: STATES,
+            matrix: self.kf.p().as_slice(),
+        })
     }
 
     fn innovation_names(&self) -> &'static [&'static str] {
         &["innov_rad_s"]
     }
 
+    fn innovation(&self) -> &[f64] {
+        &self.innovation
+    }
+
     fn extra_names(&self) -> &'static [&'static str] {
-        &["rate_minus_sensor_deg_s"]
+        &["rate_minus_sensor_deg_s", "angle_minus_int_deg"]
+    }
+
+    fn extras(&self, out: &mut [f64]) {
+        out[0] = self.rate_minus_sensor_rad_s.to_degrees();
+        out[1] = (self.kf.x()[0] - self.phi_int_rad).to_degrees();
+    }
+
+    fn status(&self) -> &EstimatorStatus {
+        &self.status
     }
 
     fn apply_params(&mut self, p: &ParamValues) {
@@ -130,11 +167,6 @@ impl Estimator for OneAxisKf {
             self.model = f(p);
         }
         let window = p.get(keys::WINDOW);
-        let q_use = if p.index(keys::Q_USE) == 1 {
-            QUse::ResetP
-        } else {
-            QUse::ProcessNoise
-        };
         self.kf.adaptation = Adaptation {
             window: if window.is_finite() {
                 window.max(0.0) as usize
@@ -142,7 +174,10 @@ impl Estimator for OneAxisKf {
                 0
             },
             adapt_r: p.flag(keys::ADAPT_R),
-            q_use,
+            mode: AdaptMode::ALL
+                .get(p.index(keys::MODE))
+                .copied()
+                .unwrap_or(AdaptMode::SawTooth),
         };
         let sigma = p.get(keys::NOISE).to_radians();
         if sigma.is_finite() && !(self.kf.adaptation.adapt_r && self.kf.resets > 0) {
@@ -154,42 +189,51 @@ impl Estimator for OneAxisKf {
         if self.status != EstimatorStatus::Ok {
             return;
         }
+        // The kinematically integrated angle, exactly as the direct integration computes it
+        // (zero-order hold of the latest averaged rate): the saw-tooth's reference.
+        if let Some(z) = m.gyro_axis_rad_s {
+            self.last_z = Some(z);
+        }
+        self.phi_int_rad += self.last_z.unwrap_or(0.0) * dt_s;
         let phi = self.transition(dt_s);
         self.kf.predict(&phi);
         if let Some(z) = m.gyro_axis_rad_s {
-            self.kf.update(z);
-            self.rate_minus_sensor_rad_s = self.kf.x[1] - z;
+            match self.kf.update(z, self.phi_int_rad) {
+                Ok(()) => {
+                    self.innovation[0] = self.kf.innovation;
+                    self.rate_minus_sensor_rad_s = self.kf.x()[1] - z;
+                }
+                Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
+            }
         }
         if !(self
             .kf
-            .x
+            .x()
             .iter()
-            .chain(self.kf.p.iter())
+            .chain(self.kf.p().iter())
             .all(|v| v.is_finite()))
         {
             self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+        } else if (self.kf.x()[0] - self.phi_int_rad).abs() > RUNAWAY_RAD {
+            self.status = EstimatorStatus::Diverged(format!(
+                "the angle ran {:.0}° away from the integrated gyro angle (the adaptation is unstable here)",
+                (self.kf.x()[0] - self.phi_int_rad).to_degrees()
+            ));
         }
     }
 
     fn estimate(&self) -> Estimate {
-        let [a, b, c] = self.kf.abc();
+        let x = self.kf.x();
         Estimate {
-            q_ref_from_body: Some(UnitQuaternion::from_axis_angle(
-                &Vector3::z_axis(),
-                self.kf.x[0],
-            )),
-            angle_rad: Some(self.kf.x[0]),
-            rate_body_rad_s: Some(Vector3::new(0.0, 0.0, self.kf.x[1])),
-            covariance: vec![a, b, c],
-            innovation: vec![self.kf.innovation],
-            extras: vec![self.rate_minus_sensor_rad_s.to_degrees()],
-            status: self.status.clone(),
+            angle_rad: Some(x[0]),
+            rate_body_rad_s: Some(Vector3::new(0.0, 0.0, x[1])),
             ..Estimate::default()
         }
     }
 }
 
-/// Paper 1's third estimator: the angle from direct integration of the averaged gyro rate.
+/// Paper 1's third estimator: the angle from direct integration of the averaged gyro rate
+/// (φ_int, the reference the paper's error panels compare the filters with).
 #[derive(Clone, Debug)]
 pub struct AngleIntegration {
     angle_rad: f64,
@@ -212,7 +256,7 @@ impl Estimator for AngleIntegration {
     }
 
     fn label(&self) -> &'static str {
-        "Direct integration of the gyro"
+        "Direct integration of the gyro (φ_int)"
     }
 
     fn apply_params(&mut self, _params: &ParamValues) {}
@@ -227,12 +271,8 @@ impl Estimator for AngleIntegration {
 
     fn estimate(&self) -> Estimate {
         Estimate {
-            q_ref_from_body: Some(UnitQuaternion::from_axis_angle(
-                &Vector3::z_axis(),
-                self.angle_rad,
-            )),
             angle_rad: Some(self.angle_rad),
-            rate_body_rad_s: self.last_rate_rad_s.map(|r| Vector3::new(0.0, 0.0, r)),
+            rate_body_rad_s: Some(Vector3::new(0.0, 0.0, self.last_rate_rad_s.unwrap_or(0.0))),
             ..Estimate::default()
         }
     }

@@ -2,10 +2,12 @@
 //! Poisson equation in quaternion form, cited by paper 3 §2), by RK4 with the rate linear
 //! between samples. The reference every other attitude estimator is compared with.
 
-use super::{Estimate, Estimator, IntegrationErrorModel, Measurements};
+use super::{ATTITUDE_AXES, IntegrationErrorModel};
 use crate::math::{RateSegment, step_quaternion_rk4};
-use crate::params::ParamValues;
-use nalgebra::{UnitQuaternion, Vector3};
+use crate::model::{
+    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo,
+};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 /// Gyro-only quaternion integrator.
 #[derive(Clone, Debug)]
@@ -13,6 +15,7 @@ pub struct QuaternionIntegration {
     q_ref_from_body: UnitQuaternion<f64>,
     last_rate_rad_s: Option<Vector3<f64>>,
     error_model: IntegrationErrorModel,
+    cov: Matrix3<f64>,
 }
 
 impl QuaternionIntegration {
@@ -22,6 +25,7 @@ impl QuaternionIntegration {
             q_ref_from_body: q0_ref_from_body,
             last_rate_rad_s: None,
             error_model,
+            cov: Matrix3::zeros(),
         }
     }
 }
@@ -35,8 +39,15 @@ impl Estimator for QuaternionIntegration {
         "Quaternion RK4 integration"
     }
 
-    fn covariance_names(&self) -> &'static [&'static str] {
-        &["P_axis_rad2"]
+    fn covariance_states(&self) -> &'static [StateInfo] {
+        ATTITUDE_AXES
+    }
+
+    fn covariance(&self) -> Option<Covariance<'_>> {
+        Some(Covariance {
+            states: ATTITUDE_AXES,
+            matrix: self.cov.as_slice(),
+        })
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
@@ -55,13 +66,13 @@ impl Estimator for QuaternionIntegration {
         self.q_ref_from_body = step_quaternion_rk4(&self.q_ref_from_body, |f| seg.at(f), dt_s);
         self.last_rate_rad_s = Some(rate);
         self.error_model.step(dt_s);
+        self.cov = Matrix3::identity() * self.error_model.variance_rad2();
     }
 
     fn estimate(&self) -> Estimate {
         Estimate {
-            q_ref_from_body: Some(self.q_ref_from_body),
+            attitude: Attitude::Quaternion(self.q_ref_from_body),
             rate_body_rad_s: self.last_rate_rad_s,
-            covariance: vec![self.error_model.variance_rad2()],
             ..Estimate::default()
         }
     }

@@ -3,10 +3,12 @@
 //! down) it switches to the flipped chart s = 1/w (digest §3) with hysteresis, so it runs
 //! through any attitude.
 
-use super::{Estimate, Estimator, IntegrationErrorModel, Measurements};
+use super::{ATTITUDE_AXES, IntegrationErrorModel};
 use crate::math::{RateSegment, WzAttitude, step_uvz_rk4};
-use crate::params::ParamValues;
-use nalgebra::Vector3;
+use crate::model::{
+    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo,
+};
+use nalgebra::{Matrix3, Vector3};
 
 /// Gyro-only (u, v, z) integrator with chart switching.
 #[derive(Clone, Debug)]
@@ -14,6 +16,7 @@ pub struct WzIntegration {
     wz: WzAttitude,
     last_rate_rad_s: Option<Vector3<f64>>,
     error_model: IntegrationErrorModel,
+    cov: Matrix3<f64>,
     chart_switches: u32,
 }
 
@@ -24,6 +27,7 @@ impl WzIntegration {
             wz: wz0,
             last_rate_rad_s: None,
             error_model,
+            cov: Matrix3::zeros(),
             chart_switches: 0,
         }
     }
@@ -43,8 +47,15 @@ impl Estimator for WzIntegration {
         "(u, v, z) RK4 integration"
     }
 
-    fn covariance_names(&self) -> &'static [&'static str] {
-        &["P_axis_rad2"]
+    fn covariance_states(&self) -> &'static [StateInfo] {
+        ATTITUDE_AXES
+    }
+
+    fn covariance(&self) -> Option<Covariance<'_>> {
+        Some(Covariance {
+            states: ATTITUDE_AXES,
+            matrix: self.cov.as_slice(),
+        })
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
@@ -67,14 +78,13 @@ impl Estimator for WzIntegration {
         self.wz = next;
         self.last_rate_rad_s = Some(rate);
         self.error_model.step(dt_s);
+        self.cov = Matrix3::identity() * self.error_model.variance_rad2();
     }
 
     fn estimate(&self) -> Estimate {
         Estimate {
-            q_ref_from_body: Some(self.wz.to_quaternion()),
-            wz: Some(self.wz),
+            attitude: Attitude::Wz(self.wz),
             rate_body_rad_s: self.last_rate_rad_s,
-            covariance: vec![self.error_model.variance_rad2()],
             ..Estimate::default()
         }
     }

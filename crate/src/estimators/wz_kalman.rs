@@ -12,12 +12,15 @@
 //! accelerometer; its covariance is then only approximately consistent. With b = 0 the model
 //! is exact (the NEES test). `kf_q_scale` scales the process noise.
 
-use super::{Estimate, EstimatorStatus, GYRO_BIAS_KEY, GYRO_NOISE_KEY, Measurements};
+use super::kf::KalmanState;
+use super::{GYRO_BIAS_KEY, GYRO_NOISE_KEY};
 use crate::math::{
-    RateSegment, WzAttitude, WzChart, chart_coords_of_vertical, joseph_update, step_uvz_rk4,
-    symmetrize,
+    RateSegment, WzAttitude, WzChart, chart_coords_of_vertical, step_uvz_rk4, symmetrize,
 };
-use crate::params::ParamValues;
+use crate::model::{
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues,
+    StateInfo, StateKind,
+};
 use nalgebra::{Matrix2, Matrix2x3, Vector2, Vector3};
 
 /// Parameter key of the accelerometer noise σ (g).
@@ -33,15 +36,22 @@ pub const BIAS_CORRELATION_S: f64 = 1.0;
 #[derive(Clone, Debug)]
 pub struct WzKalman {
     wz: WzAttitude,
-    p: Matrix2<f64>,
+    /// (u, v) and their covariance, in the current chart.
+    kf: KalmanState<2>,
     last_rate_rad_s: Option<Vector3<f64>>,
     gyro_sigma_rad_s: f64,
     bias_sigma_rad_s: f64,
     accel_sigma_g: f64,
     q_scale: f64,
-    innovation: Vector2<f64>,
+    innovation: [f64; 2],
     status: EstimatorStatus,
 }
+
+/// The filter's states.
+const STATES: &[StateInfo] = &[
+    StateInfo::new("u", "", StateKind::WzU),
+    StateInfo::new("v", "", StateKind::WzV),
+];
 
 /// `F = ∂(u̇, v̇)/∂(u, v)` of eqs. (18–19).
 fn jacobian_state(u: f64, v: f64, w: &Vector3<f64>) -> Matrix2<f64> {
@@ -77,13 +87,13 @@ impl WzKalman {
     pub fn new(wz0: WzAttitude, p0: Matrix2<f64>) -> Self {
         Self {
             wz: wz0,
-            p: p0,
+            kf: KalmanState::new(Vector2::new(wz0.u, wz0.v), p0),
             last_rate_rad_s: None,
             gyro_sigma_rad_s: 0.0,
             bias_sigma_rad_s: 0.0,
             accel_sigma_g: 0.01,
             q_scale: 1.0,
-            innovation: Vector2::zeros(),
+            innovation: [0.0; 2],
             status: EstimatorStatus::Ok,
         }
     }
@@ -112,9 +122,10 @@ impl WzKalman {
         let q = g * g.transpose() * (angle_var * self.q_scale);
         let before = self.wz;
         self.wz = step_uvz_rk4(&self.wz, |f| seg.at(f), dt_s);
-        self.p = symmetrize(&(phi * self.p * phi.transpose() + q));
+        self.kf
+            .predict_with(Vector2::new(self.wz.u, self.wz.v), &phi, &q);
         if self.wz.chart != before.chart {
-            self.p = chart_change(&self.p, &self.wz);
+            self.kf.p = chart_change(&self.kf.p, &self.wz);
         }
         self.last_rate_rad_s = Some(rate);
     }
@@ -135,26 +146,19 @@ impl WzKalman {
             * (nalgebra::Matrix3::identity() - k_chart * k_chart.transpose());
         let r = symmetrize(&(j * j.transpose() * self.accel_sigma_g.powi(2)));
         let y = Vector2::new(ua - self.wz.u, va - self.wz.v);
-        let s = self.p + r;
-        let Some(s_inv) = s.try_inverse() else {
-            self.status = EstimatorStatus::Diverged("innovation covariance is singular".into());
-            return;
-        };
-        let k = self.p * s_inv;
-        let dx = k * y;
-        self.wz.u += dx.x;
-        self.wz.v += dx.y;
-        self.p = joseph_update(&self.p, &k, &Matrix2::identity(), &r);
-        self.innovation = y;
-        if !(self.p.iter().all(|x| x.is_finite()) && self.wz.u.is_finite() && self.wz.v.is_finite())
-        {
-            self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+        match self.kf.update_with(y, &Matrix2::identity(), &r) {
+            Ok(_) => {
+                self.wz.u = self.kf.x[0];
+                self.wz.v = self.kf.x[1];
+                self.innovation = [y.x, y.y];
+            }
+            Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
         }
     }
 
     /// The current (u, v) covariance, in the current chart.
-    pub fn covariance(&self) -> Matrix2<f64> {
-        self.p
+    pub fn uv_covariance(&self) -> Matrix2<f64> {
+        self.kf.p
     }
 }
 
@@ -167,7 +171,7 @@ fn chart_change(p: &Matrix2<f64>, new: &WzAttitude) -> Matrix2<f64> {
     symmetrize(&(m * p * m.transpose()))
 }
 
-impl super::Estimator for WzKalman {
+impl Estimator for WzKalman {
     fn id(&self) -> &'static str {
         "kf-uv"
     }
@@ -176,18 +180,32 @@ impl super::Estimator for WzKalman {
         "Kalman filter in (u, v)"
     }
 
-    fn covariance_names(&self) -> &'static [&'static str] {
-        &["P_uu", "P_uv", "P_vv"]
+    fn covariance_states(&self) -> &'static [StateInfo] {
+        STATES
+    }
+
+    fn covariance(&self) -> Option<Covariance<'_>> {
+        Some(Covariance {
+            states: STATES,
+            matrix: self.kf.p.as_slice(),
+        })
     }
 
     fn innovation_names(&self) -> &'static [&'static str] {
         &["innov_u", "innov_v"]
     }
 
+    fn innovation(&self) -> &[f64] {
+        &self.innovation
+    }
+
+    fn status(&self) -> &EstimatorStatus {
+        &self.status
+    }
+
     fn apply_params(&mut self, params: &ParamValues) {
         let read = |key: &str, into: &mut f64, f: fn(f64) -> f64| {
-            let v = params.get(key);
-            if v.is_finite() {
+            if let Ok(v) = params.try_get(key) {
                 *into = f(v);
             }
         };
@@ -211,12 +229,8 @@ impl super::Estimator for WzKalman {
 
     fn estimate(&self) -> Estimate {
         Estimate {
-            q_ref_from_body: Some(self.wz.to_quaternion()),
-            wz: Some(self.wz),
+            attitude: Attitude::Wz(self.wz),
             rate_body_rad_s: self.last_rate_rad_s,
-            covariance: vec![self.p[(0, 0)], self.p[(0, 1)], self.p[(1, 1)]],
-            innovation: vec![self.innovation.x, self.innovation.y],
-            status: self.status.clone(),
             ..Estimate::default()
         }
     }

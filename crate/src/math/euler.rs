@@ -1,8 +1,8 @@
 //! Yaw–pitch–roll Euler angles of paper 3, eq. (22): `A = Γ(γ)·Θ(ϑ)·Ψ(ψ)` — yaw ψ about ζ,
 //! then pitch ϑ about ξ, then roll γ about η.
 
-use super::rotation::{dcm_from_quaternion, quaternion_from_dcm, rot_x, rot_y, rot_z};
-use nalgebra::{Matrix3, UnitQuaternion};
+use super::rotation::{dcm_from_quaternion, rot_x, rot_y, rot_z};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// Paper 3's Euler angles (rad). Pitch ϑ ∈ [−π/2, π/2], yaw ψ and roll γ ∈ (−π, π].
@@ -63,7 +63,40 @@ impl EulerYpr {
 
     /// `q_ref_from_body` for these angles.
     pub fn to_quaternion(&self) -> UnitQuaternion<f64> {
-        quaternion_from_dcm(&self.to_dcm())
+        // A = Γ(γ)·Θ(ϑ)·Ψ(ψ) of passive rotations, so q_ref_from_body = R_ζ(ψ)·R_ξ(ϑ)·R_η(γ)
+        // of active ones: three half-angle sin/cos and two products, no matrix.
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.yaw_rad)
+            * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), self.pitch_rad)
+            * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), self.roll_rad)
+    }
+
+    /// The yaw ψ alone of `q_ref_from_body` (one atan2, no matrix): what a yaw plot needs.
+    ///
+    /// ```
+    /// # use attlab::math::EulerYpr;
+    /// let e = EulerYpr::new(0.7, -0.3, 1.1);
+    /// assert!((EulerYpr::yaw_of(&e.to_quaternion()) - 0.7).abs() < 1e-12);
+    /// ```
+    pub fn yaw_of(q_ref_from_body: &UnitQuaternion<f64>) -> f64 {
+        // a = A = R(q)ᵀ, so a[(1, 0)] = R[(0, 1)] and a[(1, 1)] = R[(1, 1)].
+        let (w, x, y, z) = (
+            q_ref_from_body.w,
+            q_ref_from_body.i,
+            q_ref_from_body.j,
+            q_ref_from_body.k,
+        );
+        let r01 = 2.0 * (x * y - w * z);
+        let r11 = 1.0 - 2.0 * (x * x + z * z);
+        let cos_pitch_sq = {
+            let r20 = 2.0 * (x * z - w * y);
+            let r22 = 1.0 - 2.0 * (x * x + y * y);
+            r20 * r20 + r22 * r22
+        };
+        if cos_pitch_sq > 1e-20 {
+            (-r01).atan2(r11)
+        } else {
+            Self::from_quaternion(q_ref_from_body).yaw_rad
+        }
     }
 
     /// Angles of `q_ref_from_body`.

@@ -30,8 +30,8 @@ pub use integrate::{
 };
 pub use krylov::KrylovAngles;
 pub use rotation::{
-    dcm_from_quaternion, quaternion_from_dcm, rot_x, rot_y, rot_z, rotation_angle_between,
-    small_angle_error_body, vertical_in_body,
+    dcm_from_quaternion, pitch_roll_of_vertical, quaternion_from_dcm, rot_x, rot_y, rot_z,
+    rotation_angle_between, small_angle_error_body, vertical_in_body, wrap_pi,
 };
 pub use wz::{
     CHART_SWITCH_MODULUS, WzAttitude, WzChart, a_of_w, better_chart, chart_coords_of_vertical,

@@ -53,8 +53,10 @@ pub fn dcm_from_quaternion(q_ref_from_body: &UnitQuaternion<f64>) -> Matrix3<f64
     q_ref_from_body.to_rotation_matrix().matrix().transpose()
 }
 
-/// `q_ref_from_body` from paper 3's matrix *A*. The input is re-orthonormalised first, so a
-/// slightly non-orthogonal DCM (e.g. from integration) is accepted.
+/// `q_ref_from_body` from paper 3's matrix *A*, in closed form (Shepperd's method) and
+/// renormalised, so a slightly non-orthogonal DCM (e.g. from integration) is accepted and a
+/// matrix with a non-finite element gives a quaternion of NaNs (which the loop reports as a
+/// diverged estimate) — never an open-ended iteration.
 ///
 /// ```
 /// # use attlab::math::{dcm_from_quaternion, quaternion_from_dcm};
@@ -63,10 +65,22 @@ pub fn dcm_from_quaternion(q_ref_from_body: &UnitQuaternion<f64>) -> Matrix3<f64
 /// let q = UnitQuaternion::from_euler_angles(0.4, -0.2, 2.0);
 /// let back = quaternion_from_dcm(&dcm_from_quaternion(&q));
 /// assert_relative_eq!(back.angle_to(&q), 0.0, epsilon = 1e-12);
+/// let nan = nalgebra::Matrix3::repeat(f64::NAN);
+/// assert!(quaternion_from_dcm(&nan).coords.iter().all(|c| c.is_nan()));
 /// ```
 pub fn quaternion_from_dcm(a_body_from_ref: &Matrix3<f64>) -> UnitQuaternion<f64> {
-    let r_ref_from_body = Rotation3::from_matrix(&a_body_from_ref.transpose());
-    UnitQuaternion::from_rotation_matrix(&r_ref_from_body)
+    if !a_body_from_ref.iter().all(|v| v.is_finite()) {
+        return UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(
+            f64::NAN,
+            f64::NAN,
+            f64::NAN,
+            f64::NAN,
+        ));
+    }
+    let r_ref_from_body = Rotation3::from_matrix_unchecked(a_body_from_ref.transpose());
+    UnitQuaternion::new_normalize(
+        UnitQuaternion::from_rotation_matrix(&r_ref_from_body).into_inner(),
+    )
 }
 
 /// The reference vertical ζ expressed in body axes: the third column (a′, b′, c′) of *A*.
@@ -112,4 +126,35 @@ pub fn small_angle_error_body(
     q_est_ref_from_body: &UnitQuaternion<f64>,
 ) -> Vector3<f64> {
     (q_true_ref_from_body.inverse() * q_est_ref_from_body).scaled_axis()
+}
+
+/// Pitch ϑ and roll γ of paper 3 from the vertical in body axes (eqs. 24–25 solved).
+///
+/// ```
+/// # use attlab::math::pitch_roll_of_vertical;
+/// # use nalgebra::Vector3;
+/// let (pitch, roll) = pitch_roll_of_vertical(&Vector3::z());
+/// assert_eq!((pitch, roll), (0.0, 0.0));
+/// ```
+pub fn pitch_roll_of_vertical(k_body: &Vector3<f64>) -> (f64, f64) {
+    (
+        k_body.y.clamp(-1.0, 1.0).asin(),
+        (-k_body.x).atan2(k_body.z),
+    )
+}
+
+/// `a` wrapped to (−π, π].
+///
+/// ```
+/// # use attlab::math::wrap_pi;
+/// assert!((wrap_pi(3.0 * std::f64::consts::PI) - std::f64::consts::PI).abs() < 1e-12);
+/// assert!((wrap_pi(-0.5) + 0.5).abs() < 1e-15);
+/// ```
+pub fn wrap_pi(a: f64) -> f64 {
+    let t = a.rem_euclid(std::f64::consts::TAU);
+    if t > std::f64::consts::PI {
+        t - std::f64::consts::TAU
+    } else {
+        t
+    }
 }

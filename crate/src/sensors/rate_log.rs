@@ -86,13 +86,53 @@ impl RateLog {
     }
 }
 
-fn field(s: &str) -> Option<f64> {
+fn number(s: &str) -> Option<f64> {
     s.trim().parse::<f64>().ok().filter(|v| v.is_finite())
 }
 
-/// Parses `text`: one sample per line, `time, rate` separated by a comma, semicolon, tab or
-/// spaces; blank lines and lines starting with `#` are ignored; a first line that is not
-/// numeric is taken as a header. Anything else that is wrong is reported, not fatal.
+/// Delimiters a log may use, in order of preference when several fit equally well.
+const DELIMITERS: [u8; 4] = [b',', b';', b'\t', b' '];
+
+/// The trimmed fields of one line split at `delimiter` (whitespace runs count as one
+/// delimiter).
+fn fields(line: &str, delimiter: u8) -> Vec<&str> {
+    let parts = line.split(char::from(delimiter)).map(str::trim);
+    if delimiter.is_ascii_whitespace() {
+        parts.filter(|f| !f.is_empty()).collect()
+    } else {
+        parts.collect()
+    }
+}
+
+/// The delimiter under which most of the first lines read as samples (two numbers).
+fn sniff_delimiter(text: &str) -> u8 {
+    let sample: Vec<&str> = text.lines().take(200).collect();
+    let score = |d: u8| {
+        sample
+            .iter()
+            .filter(|l| {
+                let f = fields(l, d);
+                f.len() >= 2 && number(f[0]).is_some() && number(f[1]).is_some()
+            })
+            .count()
+    };
+    DELIMITERS
+        .iter()
+        .copied()
+        .max_by_key(|d| {
+            (
+                score(*d),
+                std::cmp::Reverse(DELIMITERS.iter().position(|x| x == d)),
+            )
+        })
+        .unwrap_or(b',')
+}
+
+/// Parses `text` with the `csv` crate: one sample per line, `time, rate` separated by a
+/// comma, semicolon, tab or spaces (whichever makes most lines samples); blank lines and
+/// lines starting with `#` are ignored; the first line before the data whose fields are all
+/// words is the header. Every other line that is not a sample is reported with its line
+/// number and reason, and every sample is kept.
 ///
 /// ```
 /// # use attlab::sensors::{parse_rate_log, RateUnit, TimeUnit};
@@ -106,30 +146,52 @@ pub fn parse_rate_log(text: &str, rate_unit: RateUnit, time_unit: TimeUnit) -> R
         TimeUnit::Seconds => 1.0,
         TimeUnit::Milliseconds => 1e-3,
     };
-    for (i, raw) in text.lines().enumerate() {
-        let line = raw.trim();
-        if line.is_empty() || line.starts_with('#') {
+    let delimiter = sniff_delimiter(text);
+    // One record per line: no quoting (a stray quote must not swallow the lines after it),
+    // only '\n' ends a record (so the line numbers are the editor's).
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .quoting(false)
+        .delimiter(delimiter)
+        .terminator(csv::Terminator::Any(b'\n'))
+        .from_reader(text.as_bytes());
+    let mut header_seen = false;
+    for record in reader.byte_records().filter_map(Result::ok) {
+        let line = record.position().map_or(0, |p| p.line() as usize);
+        let cells: Vec<String> = record
+            .iter()
+            .map(|f| {
+                String::from_utf8_lossy(f)
+                    .trim_matches(|c: char| c.is_whitespace())
+                    .to_string()
+            })
+            .collect();
+        let blank = cells.iter().all(String::is_empty)
+            && (cells.len() == 1 || delimiter.is_ascii_whitespace());
+        if blank || cells.first().is_some_and(|c| c.starts_with('#')) {
             continue;
         }
-        let parts: Vec<&str> = line
-            .split([',', ';', '\t', ' '])
-            .filter(|s| !s.is_empty())
+        let parts: Vec<&str> = cells
+            .iter()
+            .map(String::as_str)
+            .filter(|c| !(delimiter.is_ascii_whitespace() && c.is_empty()))
             .collect();
+        let trimmed = cells.join(&char::from(delimiter).to_string());
         let err = |reason: &str| LogLineError {
-            line: i + 1,
-            text: line.chars().take(80).collect(),
+            line,
+            text: trimmed.chars().take(80).collect(),
             reason: reason.to_string(),
         };
         let (Some(t), Some(r)) = (
-            parts.first().and_then(|s| field(s)),
-            parts.get(1).and_then(|s| field(s)),
+            parts.first().and_then(|s| number(s)),
+            parts.get(1).and_then(|s| number(s)),
         ) else {
-            if i == 0
-                || (log.t_s.is_empty()
-                    && log.errors.is_empty()
-                    && parts.iter().all(|p| field(p).is_none()))
-            {
-                continue; // a header
+            let words =
+                parts.len() >= 2 && parts.iter().all(|p| !p.is_empty() && number(p).is_none());
+            if log.t_s.is_empty() && !header_seen && words {
+                header_seen = true; // the header
+                continue;
             }
             log.errors.push(err(if parts.len() < 2 {
                 "expected two columns: time, rate"
@@ -152,6 +214,15 @@ pub fn parse_rate_log(text: &str, rate_unit: RateUnit, time_unit: TimeUnit) -> R
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_banner_before_the_header_is_reported_and_a_stray_quote_swallows_nothing() {
+        let text = "MPU connection successful\ntime,rate\n0,1\n\"oops\n0.01,2\n";
+        let log = parse_rate_log(text, RateUnit::DegPerS, TimeUnit::Seconds);
+        assert_eq!(log.t_s, vec![0.0, 0.01]);
+        let lines: Vec<usize> = log.errors.iter().map(|e| e.line).collect();
+        assert_eq!(lines, vec![1, 4], "{:?}", log.errors);
+    }
 
     #[test]
     fn junk_lines_are_reported_with_line_numbers_and_good_ones_kept() {

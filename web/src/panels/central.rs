@@ -1,19 +1,22 @@
-//! The central view: 3D body, Riemann sphere and complex plane on top, plots below.
+//! The central view: 3D body, Riemann sphere and complex plane on top, the plot tabs and
+//! plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
-use crate::app::AttLabApp;
 use crate::render::{body3d, plots, riemann_sphere};
+use crate::state::{AppState, Command, View};
 use attlab::math::{WzAttitude, WzChart};
+use attlab::model::{SeriesGroup, StateKind};
 use attlab::record::Recorder;
 use egui::{Rect, Ui, Vec2};
 use nalgebra::Vector3;
 
-/// Rows of history drawn as trails on the sphere and the plane.
-const TRAIL_ROWS: usize = 3000;
-/// Points per trail after thinning.
-const TRAIL_POINTS: usize = 600;
-
 /// Draws the central panel.
-pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
+pub fn central(
+    ui: &mut Ui,
+    app: &AppState,
+    view: &mut View,
+    gpu_ready: bool,
+    commands: &mut Vec<Command>,
+) {
     egui::CentralPanel::default().show(ui, |ui| {
         let full = ui.available_rect_before_wrap();
         let top_h = (full.height() * 0.55).max(220.0);
@@ -26,108 +29,135 @@ pub fn central(ui: &mut Ui, app: &mut AttLabApp) {
             Vec2::new(wsphere - 4.0, top_h),
         );
         let rplane = Rect::from_min_max(top.min + Vec2::new(w3d + wsphere, 0.0), top.max);
-        let sources = sources(app);
-        let source_refs: Vec<&str> = sources.iter().map(String::as_str).collect();
-        let mut tracks = tracks(
-            app.sim.recorder(),
-            &source_refs,
-            app.sim.estimates().iter().map(|e| e.1).collect(),
-        );
+        let mut tracks = tracks(app);
         attach_ellipses(app, &mut tracks);
-        draw_body(ui, app, r3d);
+        draw_body(ui, app, &mut view.camera, r3d, gpu_ready);
         let caption = chart_caption(app);
-        riemann_sphere::show_sphere(ui, rsphere, &mut app.sphere, &tracks, &caption);
+        riemann_sphere::show_sphere(ui, rsphere, &mut view.sphere, &tracks, &caption);
         ui.scope_builder(egui::UiBuilder::new().max_rect(rplane), |ui| {
             riemann_sphere::show_plane(ui, &tracks)
         });
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
-            plots::show(
-                ui,
-                app.sim.recorder(),
-                &source_refs,
-                app.sim.lab().figures(),
-                &mut app.plots,
-            );
+            plot_tabs(ui, app, commands);
+            plots::show(ui, app.sim.recorder(), app.sim.lab().figures(), &app.plots);
         });
     });
 }
 
-fn sources(app: &AttLabApp) -> Vec<String> {
-    std::iter::once("truth".to_string())
-        .chain(app.sim.estimates().iter().map(|e| e.0.to_string()))
-        .collect()
+/// The tab row and the options of the selected tab.
+fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let figures = app.sim.lab().figures();
+    let current = app.plots.tab;
+    ui.horizontal_wrapped(|ui| {
+        for (i, f) in figures.iter().enumerate() {
+            if ui
+                .selectable_label(current == plots::Tab::Figure(i), f.title)
+                .clicked()
+            {
+                commands.push(Command::SelectTab(plots::Tab::Figure(i)));
+            }
+        }
+        if !figures.is_empty() {
+            ui.separator();
+        }
+        for g in plots::groups(app.sim.available_specs()) {
+            if ui
+                .selectable_label(current == plots::Tab::Group(g), g.title())
+                .clicked()
+            {
+                commands.push(Command::SelectTab(plots::Tab::Group(g)));
+            }
+        }
+        ui.separator();
+        match current {
+            plots::Tab::Group(SeriesGroup::Covariance) => {
+                let mut on = app.plots.log_covariance;
+                if ui.checkbox(&mut on, "log10").changed() {
+                    commands.push(Command::SetLogCovariance(on));
+                }
+            }
+            _ => {
+                let mut on = app.plots.show_bands;
+                if ui.checkbox(&mut on, "±3σ bands").changed() {
+                    commands.push(Command::SetShowBands(on));
+                }
+            }
+        }
+    });
 }
 
-fn draw_body(ui: &mut Ui, app: &mut AttLabApp, rect: Rect) {
+fn draw_body(
+    ui: &mut Ui,
+    app: &AppState,
+    camera: &mut body3d::OrbitCamera,
+    rect: Rect,
+    gpu_ready: bool,
+) {
     let truth = app.sim.truth().q_ref_from_body;
-    let estimates = app.sim.estimates();
-    let ghost = estimates
+    let ghost = app
+        .sim
+        .estimates()
         .get(app.ghost_index)
-        .and_then(|e| e.2.q_ref_from_body.map(|q| (q, e.1)));
+        .and_then(|e| e.quaternion())
+        .zip(app.sim.estimators().get(app.ghost_index).map(|e| e.label()));
     let scene = body3d::Scene {
         truth,
         ghost,
         suspended: app.sim.lab().suspended(),
     };
-    let ready = app.gpu_ready();
-    body3d::show(ui, rect, &mut app.camera, &scene, ready);
+    body3d::show(ui, rect, camera, &scene, gpu_ready);
 }
 
-fn chart_caption(app: &AttLabApp) -> String {
-    let charts: Vec<String> = app
-        .sim
-        .estimates()
+fn chart_caption(app: &AppState) -> String {
+    app.sim
+        .estimators()
         .iter()
-        .filter_map(|(id, _, e)| {
-            e.wz.map(|wz| match wz.chart {
-                WzChart::North => format!("{id}: chart w (projection from S)"),
-                WzChart::Flipped => format!("{id}: chart s = 1/w (body upside down)"),
+        .zip(app.sim.estimates())
+        .filter_map(|(e, est)| {
+            est.attitude.wz().map(|wz| match wz.chart {
+                WzChart::North => format!("{}: chart w (projection from S)", e.id()),
+                WzChart::Flipped => format!("{}: chart s = 1/w (body upside down)", e.id()),
             })
         })
-        .collect();
-    charts.join("\n")
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
-fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sphere::SphereTrack> {
+/// The recent trail of every source with a vertical: truth, then each estimator.
+fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
+    let rec = app.sim.recorder();
+    let mut names = vec![("truth".to_string(), "truth".to_string())];
+    names.extend(
+        app.sim
+            .estimators()
+            .iter()
+            .map(|e| (e.id().to_string(), e.label().to_string())),
+    );
     let mut out = Vec::new();
-    for (i, src) in sources.iter().enumerate() {
+    for (i, (src, label)) in names.iter().enumerate() {
         let col = |q: &str| {
             rec.index_of(&format!("{src}.{q}"))
-                .and_then(|j| rec.column(j))
+                .map(|j| recent_tail(rec, j))
         };
         let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) =
             (col("k_x"), col("k_y"), col("k_z"), col("u"), col("v"))
         else {
             continue;
         };
-        let n = kx.len();
-        let start = n.saturating_sub(TRAIL_ROWS);
-        let stride = ((n - start) / TRAIL_POINTS).max(1);
         let mut k_body = Vec::new();
         let mut w = Vec::new();
-        let mut j = start;
-        while j < n {
+        for j in 0..kx.len() {
             if kx[j].is_finite() {
                 k_body.push(Vector3::new(kx[j], ky[j], kz[j]));
                 w.push([u[j], v[j]]);
             }
-            j = if j + stride >= n && j != n - 1 {
-                n - 1
-            } else {
-                j + stride
-            };
         }
         if k_body.is_empty() {
             continue;
         }
-        let name = if i == 0 {
-            "truth".to_string()
-        } else {
-            labels.get(i - 1).copied().unwrap_or(src).to_string()
-        };
         out.push(riemann_sphere::SphereTrack {
-            name,
+            name: label.clone(),
             color: plots::source_color(i),
             k_body,
             w,
@@ -137,24 +167,46 @@ fn tracks(rec: &Recorder, sources: &[&str], labels: Vec<&str>) -> Vec<riemann_sp
     out
 }
 
-/// Covariance names of an estimator that publishes a (u, v) covariance.
-const UV_COVARIANCE: [&str; 3] = ["P_uu", "P_uv", "P_vv"];
+/// Rows of history drawn as trails on the sphere and the plane.
+const TRAIL_ROWS: usize = 3000;
+/// Points per trail after thinning.
+const TRAIL_POINTS: usize = 600;
 
-/// 3σ ellipses of every estimator publishing a (u, v) covariance, in its own chart, mapped
+/// The last [`TRAIL_ROWS`] full-rate values of series `j`, thinned to [`TRAIL_POINTS`]
+/// (always keeping the newest).
+fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
+    let all = rec.recent_vec(j);
+    let start = all.len().saturating_sub(TRAIL_ROWS);
+    let tail = &all[start..];
+    let stride = (tail.len() / TRAIL_POINTS).max(1);
+    let mut out: Vec<f64> = tail.iter().step_by(stride).copied().collect();
+    if let Some(last) = tail.last()
+        && !(tail.len() - 1).is_multiple_of(stride)
+    {
+        out.push(*last);
+    }
+    out
+}
+
+/// 3σ ellipses of every estimator whose covariance holds (u, v), in its own chart, mapped
 /// point by point to the w plane and to the sphere (so it stays right in the flipped chart).
-fn attach_ellipses(app: &AttLabApp, tracks: &mut [riemann_sphere::SphereTrack]) {
-    for (i, e) in app.sim.estimates().into_iter().enumerate() {
-        let names_match = app
-            .sim
-            .covariance_names(i)
-            .is_some_and(|n| n == UV_COVARIANCE);
-        let (Some(wz), true) = (e.2.wz, names_match) else {
+/// The states are found by what the covariance says they are, not by names.
+fn attach_ellipses(app: &AppState, tracks: &mut [riemann_sphere::SphereTrack]) {
+    for (e, est) in app.sim.estimators().iter().zip(app.sim.estimates()) {
+        let (Some(wz), Some(cov)) = (est.attitude.wz(), e.covariance()) else {
             continue;
         };
-        let [puu, puv, pvv] = [e.2.covariance[0], e.2.covariance[1], e.2.covariance[2]];
-        let Some(chol) = nalgebra::Matrix2::new(puu, puv, puv, pvv).cholesky() else {
+        let (Some(iu), Some(iv)) = (cov.index_of(StateKind::WzU), cov.index_of(StateKind::WzV))
+        else {
             continue;
         };
+        let p = nalgebra::Matrix2::new(
+            cov.get(iu, iu),
+            cov.get(iu, iv),
+            cov.get(iv, iu),
+            cov.get(iv, iv),
+        );
+        let Some(chol) = p.cholesky() else { continue };
         let l = chol.l();
         let ring: Vec<WzAttitude> = (0..64)
             .map(|j| {
@@ -172,7 +224,7 @@ fn attach_ellipses(app: &AttLabApp, tracks: &mut [riemann_sphere::SphereTrack]) 
             .map(|p| p.w().map_or([f64::NAN, f64::NAN], |(u, v)| [u, v]))
             .collect();
         let sphere = ring.iter().map(WzAttitude::vertical_in_body).collect();
-        if let Some(t) = tracks.iter_mut().find(|t| t.name == e.1) {
+        if let Some(t) = tracks.iter_mut().find(|t| t.name == e.label()) {
             t.ellipse = Some((plane, sphere));
         }
     }

@@ -1,14 +1,13 @@
 //! The left panel: lab picker, run controls, parameter sliders generated from the lab's
 //! parameter specs, export and the explanation.
 
-use super::Command;
-use crate::app::AttLabApp;
+use crate::state::{AppState, Command};
 use attlab::labs;
-use attlab::params::{ParamKind, ParamSpec, Scale};
+use attlab::model::{ParamKind, ParamSpec, Scale};
 use egui::{Color32, RichText, Ui};
 
 /// Draws the left panel and collects commands.
-pub fn controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
+pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     egui::Panel::left("controls")
         .resizable(true)
         .default_size(300.0)
@@ -31,7 +30,7 @@ pub fn controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
         });
 }
 
-fn lab_picker(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
+fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let current = app.sim.lab();
     egui::ComboBox::from_label("Lab")
         .selected_text(current.title())
@@ -50,11 +49,11 @@ fn lab_picker(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
     ui.label(RichText::new(current.paper()).small().italics());
 }
 
-fn run_controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
+fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
         let label = if app.playing { "Pause" } else { "▶ Play" };
         if ui.button(label).clicked() {
-            app.playing = !app.playing;
+            commands.push(Command::SetPlaying(!app.playing));
         }
         if ui
             .add_enabled(!app.playing, egui::Button::new("Step"))
@@ -71,27 +70,39 @@ fn run_controls(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
         }
     });
     ui.horizontal(|ui| {
-        ui.label("Seed");
-        ui.add(egui::DragValue::new(&mut app.seed).range(0..=u64::MAX));
-        if ui.button("New seed").clicked() {
-            app.seed = app
-                .seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407)
-                >> 16;
-            commands.push(Command::Reset);
+        let label = ui.label("Seed");
+        let mut seed = app.seed;
+        if ui
+            .add(egui::DragValue::new(&mut seed).range(0..=u64::MAX))
+            .labelled_by(label.id)
+            .changed()
+        {
+            commands.push(Command::SetSeed(seed));
+        }
+        if ui
+            .button("New seed")
+            .on_hover_text("A random seed, then Reset")
+            .clicked()
+        {
+            commands.push(Command::NewSeed);
         }
     });
     let (lo, hi) = attlab::state::SPEED_RANGE;
-    ui.add(
-        egui::Slider::new(&mut app.speed, lo..=hi)
-            .logarithmic(true)
-            .text("speed ×")
-            .max_decimals(1),
-    );
+    let mut speed = app.speed;
+    if ui
+        .add(
+            egui::Slider::new(&mut speed, lo..=hi)
+                .logarithmic(true)
+                .text("speed ×")
+                .max_decimals(1),
+        )
+        .changed()
+    {
+        commands.push(Command::SetSpeed(speed));
+    }
 }
 
-fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
+fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
         ui.strong("Parameters");
         if ui.small_button("defaults").clicked() {
@@ -102,7 +113,7 @@ fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
     if !presets.is_empty() {
         ui.horizontal_wrapped(|ui| {
             ui.label("Presets:");
-            for preset in presets {
+            for (i, preset) in presets.iter().enumerate() {
                 if ui
                     .button(preset.name)
                     .on_hover_text(format!(
@@ -111,7 +122,7 @@ fn parameters(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
                     ))
                     .clicked()
                 {
-                    commands.extend(preset.values.iter().map(|(k, v)| Command::SetParam(k, *v)));
+                    commands.push(Command::ApplyPreset(i));
                 }
             }
         });
@@ -176,13 +187,15 @@ fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
     (response.changed() && v != value).then_some(v)
 }
 
-fn outputs(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
-    let estimates = app.sim.estimates();
-    let with_attitude: Vec<(usize, &str)> = estimates
+fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let with_attitude: Vec<(usize, &str)> = app
+        .sim
+        .estimators()
         .iter()
+        .zip(app.sim.estimates())
         .enumerate()
-        .filter(|(_, e)| e.2.q_ref_from_body.is_some())
-        .map(|(i, e)| (i, e.1))
+        .filter(|(_, (_, est))| est.quaternion().is_some())
+        .map(|(i, (e, _))| (i, e.label()))
         .collect();
     if !with_attitude.is_empty() {
         let current = with_attitude
@@ -193,29 +206,27 @@ fn outputs(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
             .selected_text(current)
             .show_ui(ui, |ui| {
                 for (i, label) in &with_attitude {
-                    ui.selectable_value(&mut app.ghost_index, *i, *label);
+                    if ui.selectable_label(*i == app.ghost_index, *label).clicked() {
+                        commands.push(Command::SetGhost(*i));
+                    }
                 }
             });
     }
     ui.horizontal(|ui| {
         if ui
             .button("Export CSV")
-            .on_hover_text("All recorded series (the last rows kept in memory)")
+            .on_hover_text("Every series at every step since t = 0 (the run is re-simulated exactly; empty cells are missing samples)")
             .clicked()
         {
             commands.push(Command::ExportCsv);
         }
-        if ui
-            .button("Copy link")
-            .on_hover_text("A link that restores lab, seed, speed and parameters")
-            .clicked()
-        {
-            ui.ctx().copy_text(format!("#{}", app.fragment()));
+        if ui.button("Copy link").on_hover_text("A link that restores lab, seed, speed and parameters").clicked() {
+            commands.push(Command::CopyLink);
         }
     });
 }
 
-fn messages(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
+fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     for (i, m) in app.messages.iter().enumerate() {
         ui.horizontal_wrapped(|ui| {
             let color = if m.is_error {
@@ -231,7 +242,7 @@ fn messages(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
     }
 }
 
-fn explanation(ui: &mut Ui, app: &mut AttLabApp) {
+fn explanation(ui: &mut Ui, app: &AppState) {
     egui::CollapsingHeader::new("What am I looking at?")
         .default_open(false)
         .show(ui, |ui| {

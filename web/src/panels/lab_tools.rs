@@ -1,15 +1,14 @@
 //! Lab tools shown only for labs that offer them: parameter sweeps (with a progress bar,
 //! computed a slice per frame) and the laboratory mode that replays a recorded gyro log.
 
-use super::Command;
-use crate::app::AttLabApp;
 use crate::render::plots::source_color;
+use crate::state::{AppState, Command};
 use attlab::sensors::{RateUnit, TimeUnit};
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, Points};
 
 /// The lab's sweeps: run/cancel, progress, and RMS against the swept value (log axis).
-pub fn sweeps(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
+pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     for (i, spec) in app.sim.lab().sweeps().iter().enumerate() {
         egui::CollapsingHeader::new(format!("Sweep: {}", spec.title)).default_open(true).show(ui, |ui| {
             let running = app.sweep.as_ref().filter(|(j, _)| *j == i).map(|(_, s)| s);
@@ -32,37 +31,56 @@ pub fn sweeps(ui: &mut Ui, app: &AttLabApp, commands: &mut Vec<Command>) {
                     ui.label(format!("best for {series}: {} = {value} ({rms:.4} rms)", spec.key));
                 }
             }
-            Plot::new(("sweep", i)).height(170.0).legend(Legend::default().text_style(egui::TextStyle::Small)).x_axis_label(format!("log10 {}", spec.key)).show(ui, |plot| {
-                for (k, series) in spec.series.iter().enumerate() {
-                    let pts: Vec<[f64; 2]> = s.points.iter().filter(|p| p.value > 0.0).map(|p| [p.value.log10(), p.rms[k]]).collect();
-                    let color = source_color(k + 1);
-                    plot.line(Line::new(*series, pts.clone()).color(color));
-                    plot.points(Points::new(*series, pts).radius(3.0).color(color));
-                    if let Some((value, rms)) = s.best(k).filter(|(v, _)| *v > 0.0) {
-                        plot.points(Points::new(format!("best {series}"), vec![[value.log10(), rms]]).radius(7.0).color(color).filled(false));
+            for p in s.points.iter().filter(|p| p.missing.iter().any(|m| *m > 0)) {
+                ui.colored_label(egui::Color32::LIGHT_RED, format!("{} = {}: a filter diverged (missing samples)", spec.key, p.value));
+            }
+            for reason in &s.skipped {
+                ui.colored_label(egui::Color32::LIGHT_RED, format!("skipped {reason}"));
+            }
+            Plot::new(("sweep", i))
+                .height(170.0)
+                .legend(Legend::default().text_style(egui::TextStyle::Small))
+                .x_axis_label(format!("log10 {}", spec.key))
+                .y_axis_label("log10 max |value|")
+                .show(ui, |plot| {
+                    for (k, series) in spec.series.iter().enumerate() {
+                        let pts: Vec<[f64; 2]> = s
+                            .points
+                            .iter()
+                            .filter(|p| p.value > 0.0 && p.max_abs[k] > 0.0)
+                            .map(|p| [p.value.log10(), p.max_abs[k].log10()])
+                            .collect();
+                        let color = source_color(k + 1);
+                        plot.line(Line::new(*series, pts.clone()).color(color));
+                        plot.points(Points::new(*series, pts).radius(3.0).color(color));
                     }
-                }
-            });
+                });
         });
     }
 }
 
 /// Loading a recorded gyro log (CSV: time, rate) for labs that accept one.
-pub fn laboratory_mode(ui: &mut Ui, app: &mut AttLabApp, commands: &mut Vec<Command>) {
+pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if !app.sim.lab().accepts_rate_log() {
         return;
     }
     egui::CollapsingHeader::new("Laboratory mode: recorded gyro log").default_open(false).show(ui, |ui| {
         ui.label("CSV lines `time, rate` (comma, semicolon, tab or space separated). Bad lines are listed with their numbers and skipped.");
         ui.horizontal(|ui| {
-            egui::ComboBox::from_label("rate").selected_text(unit_name(app.log_units.0)).show_ui(ui, |ui| {
+            let (rate, time) = app.log_units;
+            egui::ComboBox::from_label("rate").selected_text(unit_name(rate)).show_ui(ui, |ui| {
                 for (u, name) in RateUnit::ALL {
-                    ui.selectable_value(&mut app.log_units.0, u, name);
+                    if ui.selectable_label(u == rate, name).clicked() {
+                        commands.push(Command::SetLogUnits(u, time));
+                    }
                 }
             });
-            egui::ComboBox::from_label("time").selected_text(if app.log_units.1 == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
-                ui.selectable_value(&mut app.log_units.1, TimeUnit::Seconds, "s");
-                ui.selectable_value(&mut app.log_units.1, TimeUnit::Milliseconds, "ms");
+            egui::ComboBox::from_label("time").selected_text(if time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
+                for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
+                    if ui.selectable_label(t == time, name).clicked() {
+                        commands.push(Command::SetLogUnits(rate, t));
+                    }
+                }
             });
         });
         ui.horizontal(|ui| {

@@ -1,4 +1,5 @@
-//! Panels. The generic lab panel serves every lab from its parameter specs and recorded
+//! Panels: they read [`AppState`] and emit [`Command`]s, never changing the state
+//! themselves. The generic lab panel serves every lab from its parameter specs and recorded
 //! series; a lab that needs its own controls gets its own file here.
 
 mod central;
@@ -8,62 +9,38 @@ mod lab_tools;
 pub use central::central;
 pub use controls::controls;
 
-use crate::app::AttLabApp;
-use attlab::estimators::EstimatorStatus;
-use attlab::labs::Lab;
+use crate::state::AppState;
+use attlab::model::EstimatorStatus;
 
-/// What a panel asks the app to do (applied after drawing).
-#[derive(Clone, Copy)]
-pub enum Command {
-    /// Switch lab (parameters to its defaults).
-    SelectLab(&'static dyn Lab),
-    /// Change one parameter.
-    SetParam(&'static str, f64),
-    /// All parameters back to their defaults.
-    RestoreDefaults,
-    /// Restart with the current seed.
-    Reset,
-    /// One step while paused.
-    StepOnce,
-    /// Save the recorded series as CSV.
-    ExportCsv,
-    /// Remove message `i`.
-    Dismiss(usize),
-    /// Start the lab's sweep `i`.
-    RunSweep(usize),
-    /// Stop the running sweep.
-    CancelSweep,
-    /// Ask for a gyro log file to replay.
-    LoadLog,
-    /// Leave the replay and simulate again.
-    EndReplay,
-}
-
-/// The status line at the bottom: time, rates, frame time and estimator health.
-pub fn status_line(ui: &mut egui::Ui, app: &AttLabApp) {
+/// The status line at the bottom: time, rates, frame time, recorder memory and estimator
+/// health.
+pub fn status_line(ui: &mut egui::Ui, app: &AppState) {
     egui::Panel::bottom("status").show(ui, |ui| {
         ui.horizontal_wrapped(|ui| {
             let s = &app.stats;
+            let rec = app.sim.recorder();
             ui.monospace(format!(
-                "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s (×{} requested) · frame {:5.1} ms · sim {:4.1} ms/frame",
+                "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s (×{} requested) · frame {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
                 app.sim.t_s(),
                 app.sim.dt_s() * 1e3,
                 s.steps_per_s,
                 app.speed,
                 s.frame_ms,
-                s.step_ms
+                s.step_ms,
+                rec.memory_bytes() as f64 / f64::from(1 << 20),
+                rec.specs().len(),
             ));
             if s.behind {
                 ui.colored_label(egui::Color32::YELLOW, "· behind real time: lower the speed");
             }
-            for ((id, _, _), status) in app.sim.estimates().iter().zip(app.sim.statuses()) {
+            for (e, status) in app.sim.estimators().iter().zip(app.sim.statuses()) {
                 match status {
                     EstimatorStatus::Ok => {}
                     EstimatorStatus::Diverged(why) => {
-                        ui.colored_label(egui::Color32::LIGHT_RED, format!("· {id} diverged: {why} (press Reset)"));
+                        ui.colored_label(egui::Color32::LIGHT_RED, format!("· {} diverged: {why} (press Reset)", e.id()));
                     }
                     EstimatorStatus::Unobservable(why) => {
-                        ui.colored_label(egui::Color32::YELLOW, format!("· {id} unobservable: {why}"));
+                        ui.colored_label(egui::Color32::YELLOW, format!("· {} unobservable: {why}", e.id()));
                     }
                 }
             }

@@ -8,20 +8,20 @@
 //! (eq. 28), the paper's HPF/LPF blend (Fig. 9), a Kalman filter in (u, v), and quaternion
 //! integration for comparison.
 
-use super::{Figure, Lab, LabRun, Reproduction, SensorModel, TimingItem, TruthModel, TruthState};
+mod reproduce;
+
 use crate::dynamics::{AngleProfile, EulerMotion, RigidBody, RigidBodyState};
 use crate::estimators::{
-    AccelWz, BlendedWz, Estimator, IntegrationErrorModel, Measurements, QuaternionIntegration,
-    WzIntegration, WzKalman,
+    AccelWz, BlendedWz, IntegrationErrorModel, QuaternionIntegration, WzIntegration, WzKalman,
 };
 use crate::math::{WzAttitude, vertical_in_body};
-use crate::params::{ParamSpec, ParamValues};
+use crate::model::{
+    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, ReproError, Reproduction,
+    SensorModel, TimingItem, TruthModel, TruthState,
+};
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
 use rand_chacha::ChaCha8Rng;
-
-#[path = "wz_sphere_reproduce.rs"]
-mod reproduce;
 
 /// The paper-3 lab.
 pub struct WzSphere;
@@ -172,7 +172,7 @@ const FIGURES: &[Figure] = &[
             "quat-rk4.tilt_err_deg",
         ],
     ),
-    Figure::new("KF variances (log10)", &["kf-uv.P_uu", "kf-uv.P_vv"]).log(),
+    Figure::new("KF variances (log10)", &["kf-uv.var_u", "kf-uv.var_v"]).log(),
 ];
 
 impl Lab for WzSphere {
@@ -240,8 +240,8 @@ impl Lab for WzSphere {
         100.0
     }
 
-    fn reproduce(&self) -> Reproduction {
-        reproduce::reproduce()
+    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+        Ok(reproduce::reproduce()?)
     }
 
     fn figures(&self) -> &'static [Figure] {
@@ -263,6 +263,8 @@ enum Motion {
 struct P3Truth {
     motion: Motion,
     t_s: f64,
+    /// The state at `t_s` (computed once per step: the prescribed motion costs trig).
+    state: TruthState,
 }
 
 /// The prescribed motion of profile `index` with the slider values in `p`.
@@ -325,7 +327,31 @@ impl P3Truth {
                 )))
             }
         };
-        Self { motion, t_s: 0.0 }
+        let mut truth = Self {
+            motion,
+            t_s: 0.0,
+            state: TruthState {
+                t_s: 0.0,
+                q_ref_from_body: nalgebra::UnitQuaternion::identity(),
+                rate_body_rad_s: Vector3::zeros(),
+                angle_rad: None,
+            },
+        };
+        truth.state = truth.compute_state();
+        truth
+    }
+
+    fn compute_state(&self) -> TruthState {
+        let (q, w) = match &self.motion {
+            Motion::Prescribed(m) => (m.attitude(self.t_s), m.body_rate_rad_s(self.t_s)),
+            Motion::Free(b) => (b.state.q_ref_from_body, b.state.rate_body_rad_s),
+        };
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: q,
+            rate_body_rad_s: w,
+            angle_rad: None,
+        }
     }
 }
 
@@ -337,19 +363,11 @@ impl TruthModel for P3Truth {
             body.step(dt_s);
         }
         self.t_s += dt_s;
+        self.state = self.compute_state();
     }
 
     fn state(&self) -> TruthState {
-        let (q, w) = match &self.motion {
-            Motion::Prescribed(m) => (m.attitude(self.t_s), m.body_rate_rad_s(self.t_s)),
-            Motion::Free(b) => (b.state.q_ref_from_body, b.state.rate_body_rad_s),
-        };
-        TruthState {
-            t_s: self.t_s,
-            q_ref_from_body: q,
-            rate_body_rad_s: w,
-            angle_rad: None,
-        }
+        self.state
     }
 }
 

@@ -218,6 +218,16 @@ pub enum ParamError {
         /// Value given.
         value: f64,
     },
+    /// A choice given by a name that matches no option, or several.
+    #[error("parameter `{key}`: `{text}` names no single option (options: {options})")]
+    NoSuchOption {
+        /// Parameter key.
+        key: String,
+        /// Text given.
+        text: String,
+        /// The options with their indexes.
+        options: String,
+    },
     /// `key=value` expected.
     #[error("`{text}` is not of the form key=value")]
     Malformed {
@@ -243,10 +253,32 @@ impl ParamValues {
         }
     }
 
-    /// Value of `key`. Labs ask only for their own keys, which `defaults` always fills;
-    /// an unknown key reads as NaN so a typo shows up as a visibly broken run, not a panic.
+    /// Value of `key`, one of the lab's own parameters.
+    ///
+    /// # Panics
+    /// When `key` is not a parameter of this lab: a typo in a lab's own code, which the
+    /// registry tests catch (every lab is built and stepped with random parameter sets).
+    /// Keys from users go through [`ParamValues::set`] and come back as
+    /// [`ParamError::Unknown`]; use [`ParamValues::try_get`] where a key may not exist.
     pub fn get(&self, key: &str) -> f64 {
-        self.values.get(key).copied().unwrap_or(f64::NAN)
+        match self.values.get(key) {
+            Some(v) => *v,
+            None => panic!(
+                "parameter `{key}` is not declared by this lab (declared: {})",
+                self.values.keys().cloned().collect::<Vec<_>>().join(", ")
+            ),
+        }
+    }
+
+    /// Value of `key`, or [`ParamError::Unknown`].
+    pub fn try_get(&self, key: &str) -> Result<f64, ParamError> {
+        self.values
+            .get(key)
+            .copied()
+            .ok_or_else(|| ParamError::Unknown {
+                key: key.to_string(),
+                known: self.values.keys().cloned().collect::<Vec<_>>().join(", "),
+            })
     }
 
     /// Value of a toggle.
@@ -279,11 +311,27 @@ impl ParamValues {
         key: &str,
         text: &str,
     ) -> Result<(), ParamError> {
-        find_spec(specs, key)?;
-        let value: f64 = text.trim().parse().map_err(|_| ParamError::NotANumber {
-            key: key.to_string(),
-            text: text.to_string(),
-        })?;
+        let spec = find_spec(specs, key)?;
+        let value = match (text.trim().parse::<f64>(), spec.kind) {
+            (Ok(v), _) => v,
+            (Err(_), ParamKind::Choice(options)) => choice_by_name(key, options, text)? as f64,
+            (Err(_), ParamKind::Toggle) => match text.trim().to_ascii_lowercase().as_str() {
+                "on" | "true" | "yes" => 1.0,
+                "off" | "false" | "no" => 0.0,
+                _ => {
+                    return Err(ParamError::NotANumber {
+                        key: key.to_string(),
+                        text: text.to_string(),
+                    });
+                }
+            },
+            (Err(_), _) => {
+                return Err(ParamError::NotANumber {
+                    key: key.to_string(),
+                    text: text.to_string(),
+                });
+            }
+        };
         self.set(specs, key, value)
     }
 
@@ -311,6 +359,38 @@ impl ParamValues {
     /// (key, value) pairs in key order.
     pub fn iter(&self) -> impl Iterator<Item = (&str, f64)> {
         self.values.iter().map(|(k, v)| (k.as_str(), *v))
+    }
+}
+
+/// The index of the option of a choice parameter named by `text`: an option whose label,
+/// or one of its words, equals `text` (case-insensitive), e.g. `intermediate` for
+/// "y (intermediate I: flips)". Exactly one option must match.
+fn choice_by_name(key: &str, options: &[&str], text: &str) -> Result<usize, ParamError> {
+    let wanted = text.trim().to_lowercase();
+    let matches: Vec<usize> = options
+        .iter()
+        .enumerate()
+        .filter(|(_, o)| {
+            let label = o.to_lowercase();
+            label == wanted
+                || label
+                    .split(|c: char| !c.is_alphanumeric() && c != '-' && c != '.')
+                    .any(|w| w == wanted)
+        })
+        .map(|(i, _)| i)
+        .collect();
+    match matches.as_slice() {
+        [i] => Ok(*i),
+        _ => Err(ParamError::NoSuchOption {
+            key: key.to_string(),
+            text: text.to_string(),
+            options: options
+                .iter()
+                .enumerate()
+                .map(|(i, o)| format!("{i} = {o}"))
+                .collect::<Vec<_>>()
+                .join("; "),
+        }),
     }
 }
 
@@ -356,6 +436,34 @@ mod tests {
         assert!(matches!(errs[3], ParamError::NotANumber { .. }));
         assert!(matches!(errs[4], ParamError::OutOfRange { .. }));
         assert!(errs[4].to_string().contains("1 … 5000"));
+    }
+
+    #[test]
+    fn a_choice_can_be_named() {
+        const AXES: &[ParamSpec] = &[ParamSpec::choice(
+            "spin_axis",
+            "Spin axis",
+            &[
+                "x (smallest I: stable)",
+                "y (intermediate I: flips)",
+                "z (largest I: stable)",
+            ],
+            1,
+        )];
+        let mut p = ParamValues::defaults(AXES);
+        p.set_text(AXES, "spin_axis", "Intermediate").unwrap();
+        assert_eq!(p.get("spin_axis"), 1.0);
+        p.set_text(AXES, "spin_axis", "z").unwrap();
+        assert_eq!(p.get("spin_axis"), 2.0);
+        let err = p.set_text(AXES, "spin_axis", "stable").unwrap_err();
+        assert!(err.to_string().contains("0 = x"), "{err}");
+    }
+
+    #[test]
+    fn an_undeclared_key_is_an_error_not_nan() {
+        let p = ParamValues::defaults(SPECS);
+        assert!(matches!(p.try_get("nope"), Err(ParamError::Unknown { .. })));
+        assert!(std::panic::catch_unwind(|| p.get("nope")).is_err());
     }
 
     #[test]

@@ -4,21 +4,19 @@
 //! KIAM RAS preprint). Estimators: direct integration, the permanent-rotation KF and the
 //! torsional KF, each with covariance matching over a window of N measurements (or none).
 
-use super::{Figure, Lab, LabRun, Preset, Reproduction, SensorModel, TruthModel, TruthState};
+mod reproduce;
+
 use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
-use crate::estimators::{AngleIntegration, Estimator, Measurements, OneAxisKf, OneAxisModel};
-use crate::params::{ParamSpec, ParamValues};
-use crate::record::{SeriesGroup, SeriesSpec};
+use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel};
+use crate::model::{
+    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, ReproError,
+    Reproduction, SensorModel, SeriesGroup, SeriesSpec, SweepSpec, TruthModel, TruthState,
+};
 use crate::sensors::{Averager, WhiteNoise, quantize};
-use crate::sweep::SweepSpec;
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
 use rand_chacha::ChaCha8Rng;
 
-#[path = "suspended_mockup_reproduce.rs"]
-mod reproduce;
-
-pub use reproduce::{ErrorStats as P1ErrorStats, run_stats as p1_run_stats};
-pub use true_period_s as p1_true_period_s;
+pub use reproduce::{FilterStats, p1_noise_floor_deg, run_stats};
 
 /// The paper-1 lab.
 pub struct SuspendedMockup;
@@ -30,19 +28,22 @@ const MATERIALS: &[&str] = &[
     "nylon (1 GPa)",
 ];
 
-const Q_USES: &[&str] = &[
-    "process noise Q for the next window",
-    "reset P := Q_N (saw-tooth)",
+const ADAPTATION_MODES: &[&str] = &[
+    "saw-tooth: P := mean q qᵀ, q = (φ_int − φ̂, z − φ̇̂) (this project's reading)",
+    "saw-tooth, diagonal of mean q qᵀ only (stable for small N)",
+    "literal: P := mean (K r)(K r)ᵀ (collapses)",
+    "rate process noise Q from the window",
 ];
 
 const PRESETS: &[Preset] = &[
     Preset {
         name: "VG-910D",
-        help: "Fizoptika fibre-optic gyro: ±200 °/s, 24-bit output at 300 Hz (the paper's lab gyro)",
+        help: "Fizoptika fibre-optic gyro: ±200 °/s, 24-bit output at 300 Hz, averaged ×3 to the 100-Hz filter (R = σ²/3)",
         values: &[
             ("gyro_range_deg_s", 200.0),
             ("gyro_bits", 24.0),
             ("input_rate_hz", 300.0),
+            ("filter_rate_hz", 100.0),
         ],
     },
     Preset {
@@ -52,27 +53,45 @@ const PRESETS: &[Preset] = &[
             ("gyro_range_deg_s", 300.0),
             ("gyro_bits", 12.0),
             ("input_rate_hz", 1000.0),
+            ("filter_rate_hz", 100.0),
+        ],
+    },
+    Preset {
+        name: "T ≈ 578 s",
+        help: "String 2 m, body 0.5 kg·m²: the period the paper's rate axis (±3–4 °/s from 360°) suggests; the N = 1000 error shrinks to ~0.09°",
+        values: &[("string_length_m", 2.0), ("inertia_kg_m2", 0.5)],
+    },
+    Preset {
+        name: "earlier setting",
+        help: "This project's first reading: VG-910D at 300 Hz averaged ×3 (R = σ²/3), T ≈ 578 s, ζ = 0.01, Q_N's rate element as process noise",
+        values: &[
+            ("input_rate_hz", 300.0),
+            ("filter_rate_hz", 100.0),
+            ("string_length_m", 2.0),
+            ("inertia_kg_m2", 0.5),
+            ("damping_ratio", 0.01),
+            ("kf_adaptation", 3.0),
         ],
     },
 ];
 
 const PARAMS: &[ParamSpec] = &[
     ParamSpec::choice("string_material", "String material", MATERIALS, 0).help("Sets the shear modulus G in f = G·I_p/L."),
-    ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴."),
-    ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 2.0).log().help("Stiffness f = G·I_p/L."),
-    ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.5).log().help("Period T = 2π√(I/f)."),
-    ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.01).log().help("Air and string losses (not given in the paper)."),
+    ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴ (paper: steel 0.35 mm, G·I_p = 1.18e-4 N·m²)."),
+    ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 1.0).log().help("Stiffness f = G·I_p/L; with I = 0.48 kg·m², L = 1 m gives T ≈ 400 s (not stated in the paper)."),
+    ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.48).log().help("Period T = 2π√(I/f): a shorter T means larger accelerations, which the rotation model φ̈ = 0 cannot follow between resets — watch the N = 1000 error grow."),
+    ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.05).log().help("Air and string losses (not given in the paper); ζ = 0.05 makes the undamped torsional model drift to the ±100° of Fig. 5.3 without adaptation."),
     ParamSpec::real("initial_angle_deg", "Initial angle φ₀", "°", -720.0, 720.0, 360.0).on_reset().help("Paper: 360°."),
     ParamSpec::real("initial_rate_deg_s", "Initial rate", "°/s", -20.0, 20.0, 0.0).on_reset(),
-    ParamSpec::real("init_error_deg", "Filters' initial angle error", "°", -180.0, 180.0, 0.0).on_reset().help("The paper tried ≈100°: the torsional KF stayed accurate."),
-    ParamSpec::real("p0_angle_deg", "Filters' initial angle σ", "°", 0.001, 360.0, 0.01).log().on_reset().help("√a₀ of the initial covariance (paper: a₀ = 1e-4 deg², i.e. 0.01°). Raise it with a wrong initial angle."),
-    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.04).log().help("White noise per input sample (paper: 0.04)."),
+    ParamSpec::real("init_error_deg", "Filters' initial angle error", "°", -180.0, 180.0, 0.0).on_reset().help("The paper tried ≈100°: the filters stay close to the integrated angle φ_int, which starts with the same offset."),
+    ParamSpec::real("p0_angle_deg", "Filters' initial angle σ", "°", 0.001, 360.0, 0.01).log().on_reset().help("√a₀ of the initial covariance (paper: a₀ = 1e-4 deg², i.e. 0.01°)."),
+    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.04).log().help("White noise per gyro sample (paper: 0.04)."),
     ParamSpec::real("gyro_range_deg_s", "Gyro range ±", "°/s", 1.0, 1000.0, 200.0).log().help("Readings clip here (VG-910D: 200, ADIS16100: 300)."),
     ParamSpec::real("gyro_bits", "Gyro resolution", "bit", 4.0, 24.0, 24.0).integer().help("Quantisation step = 2·range/2^bits."),
-    ParamSpec::real("input_rate_hz", "Gyro output rate", "Hz", 10.0, 2000.0, 300.0).log().integer().on_reset().help("The gyro's own rate (VG-910D: 300 Hz)."),
-    ParamSpec::real("filter_rate_hz", "Filter rate", "Hz", 1.0, 300.0, 100.0).log().integer().on_reset().help("Averaging takes the input rate down to this (paper: 100 Hz)."),
-    ParamSpec::real("kf_window", "Adaptation window N", "", 0.0, 5000.0, 100.0).log().integer().help("Covariance matching every N measurements; 0 = off (Q = 0: P collapses)."),
-    ParamSpec::choice("kf_q_use", "Q_N is used as", Q_USES, 0).help("The paper is ambiguous: process noise for the next window, or a reset of P (saw-tooth P)."),
+    ParamSpec::real("input_rate_hz", "Gyro output rate", "Hz", 10.0, 2000.0, 100.0).log().integer().on_reset().help("The gyro's own rate; the paper's simulation feeds the filter at 100 Hz (VG-910D: 300 Hz, see its preset)."),
+    ParamSpec::real("filter_rate_hz", "Filter rate", "Hz", 1.0, 300.0, 100.0).log().integer().on_reset().help("Averaging takes the input rate down to this (paper: 100 Hz); R = σ²/m for m averaged samples."),
+    ParamSpec::real("kf_window", "Adaptation window N", "", 0.0, 5000.0, 100.0).log().integer().help("Covariance matching every N measurements; 0 = off (Q = 0: P collapses). Paper: N ≈ 100 best, 1000 worse, > 2000 poor."),
+    ParamSpec::choice("kf_adaptation", "Adaptation", ADAPTATION_MODES, 0).help("What the window's sum is built from and how it enters the filter (the paper is ambiguous; see the lab's help)."),
     ParamSpec::toggle("kf_adapt_r", "Adapt R as well", false),
     ParamSpec::real("kf_period_error_pct", "Torsional KF period error", "%", -50.0, 100.0, 0.0).help("Model period T = true T·(1 + e): set it wrong on purpose."),
     ParamSpec::real("impulse_time_s", "Torque impulse at", "s", 0.0, 600.0, 5.0).requires("impulse_deg_s"),
@@ -95,14 +114,21 @@ const FIGURES: &[Figure] = &[
     Figure::new(
         "Rate",
         &[
-            "integration.rate_z_deg_s",
-            "kf-rotation.rate_z_deg_s",
-            "kf-torsion.rate_z_deg_s",
-            "truth.rate_z_deg_s",
+            "truth.rate_deg_s",
+            "integration.rate_deg_s",
+            "kf-rotation.rate_deg_s",
+            "kf-torsion.rate_deg_s",
         ],
     ),
     Figure::new(
-        "Angle error",
+        "Angle error vs φ_int (paper)",
+        &[
+            "kf-rotation.angle_minus_int_deg",
+            "kf-torsion.angle_minus_int_deg",
+        ],
+    ),
+    Figure::new(
+        "Angle error vs truth",
         &[
             "kf-rotation.angle_err_deg",
             "kf-torsion.angle_err_deg",
@@ -121,16 +147,19 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
-        "P: a, c (log10)",
+        "P: a = P_φφ, c = P_φ̇φ̇ (log10)",
         &[
-            "kf-rotation.a_rad2",
-            "kf-rotation.c_rad2_s2",
-            "kf-torsion.a_rad2",
-            "kf-torsion.c_rad2_s2",
+            "kf-rotation.var_phi",
+            "kf-rotation.var_phidot",
+            "kf-torsion.var_phi",
+            "kf-torsion.var_phidot",
         ],
     )
     .log(),
-    Figure::new("P: b", &["kf-rotation.b_rad2_s", "kf-torsion.b_rad2_s"]),
+    Figure::new(
+        "P: b = P_φφ̇",
+        &["kf-rotation.cov_phi_phidot", "kf-torsion.cov_phi_phidot"],
+    ),
 ];
 
 /// Input rate (Hz) and averaging count of the selected gyro.
@@ -186,12 +215,16 @@ impl Lab for SuspendedMockup {
     fn summary(&self) -> &'static str {
         "A body hangs on a thin string and twists about the vertical: Iφ̈ = −fφ − damping, with \
          f = G·I_p/L and I_p = πd⁴/32, so T = 2π√(I/f). A one-axis gyro (noise, quantisation, range, \
-         averaging to the filter rate) is the only sensor. Three estimators: direct integration; a \
-         Kalman filter assuming permanent rotation (φ̈ = 0); one assuming torsional oscillation \
-         (Ω = 2π/T from the model — set the period error to see a wrong model). With adaptation off \
+         averaging to the filter rate) is the only sensor. Three estimators: direct integration \
+         (φ_int); a Kalman filter assuming permanent rotation (φ̈ = 0); one assuming torsional \
+         oscillation (Ω = 2π/T — set the period error to see a wrong model). With adaptation off \
          (N = 0, Q = 0) P collapses, the gain goes to zero and the filters stop listening. \
-         Covariance matching resets P to the spread of the last N corrections: N ≈ 100 works \
-         best in the paper, N = 1000 is worse, N > 2000 poor. Disturbances: a torque impulse, a \
+         Covariance matching puts the spread of the last N samples into P: N ≈ 100 works best in \
+         the paper, N = 1000 is worse, N > 2000 poor. The paper's error panels compare the filters \
+         with φ_int (its lab runs have no truth); against the true angle no filter can beat the \
+         integrated gyro noise σ√(t/f), because a rate gyro alone cannot observe the angle — both \
+         error plots are here. Defaults are the paper's setting: 100 Hz, R = σ², T ≈ 400 s and \
+         ζ = 0.05 (the paper states neither; see the presets). Disturbances: a torque impulse, a \
          pendulum swing leaking into the gyro, suspension shaking, a wrong initial angle."
     }
 
@@ -229,7 +262,8 @@ impl Lab for SuspendedMockup {
         };
         sensors.apply_params(p);
         let xe = Vector2::new(x0[0] + p.get("init_error_deg").to_radians(), x0[1]);
-        // Paper's initial P: 1e-4 deg², deg²/s, deg²/s².
+        // The paper's GUI gives 1e-4 for a, b and c (deg², deg²/s, deg²/s²), which is singular
+        // (b² = ac); c₀ = 2e-4 keeps P₀ positive definite.
         let a0 = p.get("p0_angle_deg").powi(2).max(1e-4);
         let p0 = Matrix2::new(a0, 1e-4, 1e-4, 2e-4) * 1f64.to_radians().powi(2);
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
@@ -249,8 +283,8 @@ impl Lab for SuspendedMockup {
         600.0
     }
 
-    fn reproduce(&self) -> Reproduction {
-        reproduce::reproduce()
+    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+        Ok(reproduce::reproduce()?)
     }
 
     fn figures(&self) -> &'static [Figure] {
@@ -263,12 +297,17 @@ impl Lab for SuspendedMockup {
 
     fn sweeps(&self) -> &'static [SweepSpec] {
         &[SweepSpec {
-            title: "Adaptation window N (angle-error RMS, 200 s each)",
+            title: "Adaptation window N (angle error, 200 s each)",
             key: "kf_window",
             values: &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],
             duration_s: 200.0,
-            after_s: 10.0,
-            series: &["kf-rotation.angle_err_deg", "kf-torsion.angle_err_deg"],
+            after_s: 0.0,
+            series: &[
+                "kf-rotation.angle_minus_int_deg",
+                "kf-torsion.angle_minus_int_deg",
+                "kf-rotation.angle_err_deg",
+                "kf-torsion.angle_err_deg",
+            ],
         }]
     }
 
@@ -344,11 +383,15 @@ impl TruthModel for Suspended {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        vec![SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab)]
+        vec![
+            SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab),
+            SeriesSpec::new("truth.swing_deg", "deg", SeriesGroup::Lab),
+        ]
     }
 
-    fn extra_values(&self, out: &mut Vec<f64>) {
-        out.push(self.pendulum.period_s());
+    fn extra_values(&self, out: &mut [f64]) {
+        out[0] = self.pendulum.period_s();
+        out[1] = self.swing_angle_and_rate().0.to_degrees();
     }
 
     fn draw_noise(&mut self, rng: &mut ChaCha8Rng) {

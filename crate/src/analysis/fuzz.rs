@@ -1,0 +1,285 @@
+//! The registry fuzzer: every lab, random parameter sets drawn inside the declared ranges
+//! (log-uniform where the slider is logarithmic, both ends included), random seeds, a live
+//! change half-way, a few thousand steps. It asserts what must hold for any input: no panic;
+//! every estimate finite unless its status says why not; every covariance symmetric and
+//! positive semi-definite; the recorder's memory fixed within its budget.
+//! `cargo xtask test` runs it over 1 000 sets, `attlab fuzz --sets N` for longer.
+
+use crate::model::{Lab, ParamKind, ParamSpec, ParamValues, Scale};
+use crate::sim::{SimOptions, Simulation};
+use nalgebra::DMatrix;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+/// How long and how many.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FuzzConfig {
+    /// Parameter sets, spread over the labs in turn.
+    pub sets: usize,
+    /// Steps per set.
+    pub steps: usize,
+    /// Seed of the parameter draws.
+    pub seed: u64,
+}
+
+impl Default for FuzzConfig {
+    fn default() -> Self {
+        Self {
+            sets: 1000,
+            steps: 2000,
+            seed: 1,
+        }
+    }
+}
+
+/// One set that broke a rule.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FuzzFailure {
+    /// Lab id.
+    pub lab: &'static str,
+    /// Simulation seed.
+    pub seed: u64,
+    /// The parameters, as `key=value`.
+    pub params: String,
+    /// What went wrong, and at which step.
+    pub what: String,
+}
+
+impl std::fmt::Display for FuzzFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} seed {}: {} (reproduce: attlab run --lab {} --seed {} {})",
+            self.lab,
+            self.seed,
+            self.what,
+            self.lab,
+            self.seed,
+            self.params
+                .split(' ')
+                .filter(|s| !s.is_empty())
+                .map(|s| format!("--set {s}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        )
+    }
+}
+
+/// What a fuzz run found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FuzzReport {
+    /// Sets run per lab id.
+    pub sets_per_lab: Vec<(&'static str, usize)>,
+    /// Sets in which some estimator said it diverged or is unobservable (allowed, counted).
+    pub flagged: usize,
+    /// Rule violations.
+    pub failures: Vec<FuzzFailure>,
+    /// Largest recorder memory seen (bytes) and the budget.
+    pub max_memory_bytes: usize,
+}
+
+/// A random value of `spec`: an end of the range with probability 1/10 each, otherwise
+/// uniform (log-uniform on a log slider; a log slider starting at 0 draws from 1e-4 up and
+/// hits 0 as its left end).
+pub fn random_value(spec: &ParamSpec, rng: &mut ChaCha8Rng) -> f64 {
+    let (lo, hi) = (spec.min, spec.max);
+    let end: f64 = rng.random();
+    let v = match spec.kind {
+        ParamKind::Toggle => f64::from(u8::from(rng.random::<bool>())),
+        ParamKind::Choice(options) => rng.random_range(0..options.len().max(1)) as f64,
+        _ if end < 0.1 => lo,
+        _ if end < 0.2 => hi,
+        _ if spec.scale == Scale::Log => {
+            let a = if lo > 0.0 { lo } else { (1e-4_f64).min(hi) };
+            if a >= hi {
+                hi
+            } else {
+                (rng.random_range(a.ln()..=hi.ln())).exp()
+            }
+        }
+        _ => rng.random_range(lo..=hi),
+    };
+    let v = if spec.kind == ParamKind::Integer {
+        v.round()
+    } else {
+        v
+    };
+    v.clamp(lo, hi)
+}
+
+/// A random valid parameter set of `lab`.
+pub fn random_params(lab: &dyn Lab, rng: &mut ChaCha8Rng) -> ParamValues {
+    let mut p = ParamValues::defaults(lab.params());
+    for spec in lab.params() {
+        let v = random_value(spec, rng);
+        // Values drawn inside the declared range are valid by construction; a refusal here
+        // would be a bug in the spec (the conformance tests check the specs).
+        let _ = p.set(lab.params(), spec.key, v);
+    }
+    p
+}
+
+fn describe(p: &ParamValues) -> String {
+    p.iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Checks the rules on the simulation's current state; the first violation, if any.
+/// `peaks` holds, per estimator, the largest |P| element seen so far: an update that cancels
+/// a large prior leaves rounding of that size, so positive semi-definiteness is judged to
+/// 1e-9 of it.
+fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64]) -> Option<String> {
+    let step = sim.steps();
+    for (((e, est), status), peak) in sim
+        .estimators()
+        .iter()
+        .zip(sim.estimates())
+        .zip(sim.statuses())
+        .zip(peaks)
+    {
+        if !status.is_ok() {
+            continue;
+        }
+        let finite = est.is_finite();
+        if !finite {
+            return Some(format!(
+                "step {step}: {} estimate not finite but status ok",
+                e.id()
+            ));
+        }
+        if let Some(c) = e.covariance() {
+            let n = c.dim();
+            if c.matrix.len() != n * n {
+                return Some(format!(
+                    "{}: covariance has {} elements for {n} states",
+                    e.id(),
+                    c.matrix.len()
+                ));
+            }
+            let p = DMatrix::from_column_slice(n, n, c.matrix);
+            let scale = p.amax();
+            if !scale.is_finite() {
+                return Some(format!(
+                    "step {step}: {} covariance not finite but status ok",
+                    e.id()
+                ));
+            }
+            *peak = peak.max(scale);
+            let asym = (&p - p.transpose()).amax();
+            if asym > 1e-9 * scale.max(f64::MIN_POSITIVE) {
+                return Some(format!(
+                    "step {step}: {} covariance not symmetric (|P − Pᵀ| = {asym:e}, |P| = {scale:e})",
+                    e.id()
+                ));
+            }
+            // Positive semi-definite to rounding: P/peak + 1e-9·I has a Cholesky factor (an
+            // eigenvalue below −1e-9·peak makes it fail). Bounded time, unlike an eigen
+            // solver fed extreme values.
+            let unit = peak.max(f64::MIN_POSITIVE);
+            let shifted = &p / unit + DMatrix::identity(n, n) * 1e-9;
+            if shifted.cholesky().is_none() {
+                return Some(format!(
+                    "step {step}: {} covariance not positive semi-definite (|P| = {scale:e}, largest |P| so far {unit:e})",
+                    e.id()
+                ));
+            }
+        }
+    }
+    let memory = sim.recorder().memory_bytes();
+    if memory != memory0 || memory > budget {
+        return Some(format!(
+            "step {step}: recorder memory {memory} B (started at {memory0} B, budget {budget} B)"
+        ));
+    }
+    None
+}
+
+/// Runs one set: the first rule it breaks, or whether an estimator flagged itself
+/// (diverged, unobservable) and the recorder's memory.
+pub fn fuzz_one(
+    lab: &'static dyn Lab,
+    params: ParamValues,
+    seed: u64,
+    steps: usize,
+    rng: &mut ChaCha8Rng,
+) -> Result<(bool, usize), String> {
+    let options = SimOptions::default();
+    let budget = options.budget_bytes;
+    let mut sim =
+        Simulation::with_options(lab, params, seed, options).map_err(|e| e.to_string())?;
+    let memory0 = sim.recorder().memory_bytes();
+    let mut peaks = vec![0.0; sim.estimators().len()];
+    let specs = lab.params();
+    let live = (!specs.is_empty()).then(|| {
+        let spec = &specs[rng.random_range(0..specs.len())];
+        (spec.key, random_value(spec, rng))
+    });
+    let (live_key, live_value) = live.unwrap_or(("—", f64::NAN));
+    for k in 0..steps {
+        if k == steps / 2 && live.is_some() {
+            sim.set_param(live_key, live_value)
+                .map_err(|e| format!("live change {live_key}={live_value} refused: {e}"))?;
+        }
+        sim.step();
+        if let Some(v) = violation(&sim, budget, memory0, &mut peaks) {
+            return Err(format!(
+                "{v} (live change at step {}: {live_key}={live_value})",
+                steps / 2
+            ));
+        }
+    }
+    Ok((sim.statuses().iter().any(|s| !s.is_ok()), memory0))
+}
+
+/// Runs `config.sets` sets over every lab in `labs` in turn; `progress` is told each set.
+pub fn run(
+    labs: &[&'static dyn Lab],
+    config: FuzzConfig,
+    mut progress: impl FnMut(usize, &str),
+) -> FuzzReport {
+    let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
+    let mut report = FuzzReport {
+        sets_per_lab: labs.iter().map(|l| (l.id(), 0)).collect(),
+        ..FuzzReport::default()
+    };
+    for set in 0..config.sets {
+        let which = set % labs.len().max(1);
+        let Some(&lab) = labs.get(which) else { break };
+        let params = random_params(lab, &mut rng);
+        let seed: u64 = rng.random();
+        let described = describe(&params);
+        progress(set, lab.id());
+        let mut set_rng = ChaCha8Rng::seed_from_u64(rng.random());
+        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            fuzz_one(lab, params, seed, config.steps, &mut set_rng)
+        }));
+        report.sets_per_lab[which].1 += 1;
+        let what = match outcome {
+            Ok(Ok((flagged, memory))) => {
+                report.flagged += usize::from(flagged);
+                report.max_memory_bytes = report.max_memory_bytes.max(memory);
+                None
+            }
+            Ok(Err(rule)) => Some(rule),
+            Err(panic) => Some(format!(
+                "panicked: {}",
+                panic
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default()
+            )),
+        };
+        if let Some(what) = what {
+            report.failures.push(FuzzFailure {
+                lab: lab.id(),
+                seed,
+                params: described,
+                what,
+            });
+        }
+    }
+    report
+}

@@ -1,0 +1,65 @@
+//! The README's measured tables are generated from the reproductions: each lab's table sits
+//! between `<!-- reproduce:ID -->` and `<!-- /reproduce:ID -->`, written by
+//! `attlab reproduce all --readme README.md` and compared by the test suite, so the README
+//! cannot drift from what the code measures.
+
+use crate::model::Reproduction;
+
+/// The opening and closing markers of lab `id`'s block.
+pub fn markers(id: &str) -> (String, String) {
+    (
+        format!("<!-- reproduce:{id} -->"),
+        format!("<!-- /reproduce:{id} -->"),
+    )
+}
+
+/// The text between lab `id`'s markers, if the README has them.
+pub fn block<'a>(readme: &'a str, id: &str) -> Option<&'a str> {
+    let (open, close) = markers(id);
+    let start = readme.find(&open)? + open.len();
+    let end = start + readme[start..].find(&close)?;
+    Some(readme[start..end].trim_matches('\n'))
+}
+
+/// `readme` with lab `rep.lab`'s block replaced by its current table; an error when the
+/// markers are missing.
+pub fn with_table(readme: &str, rep: &Reproduction) -> Result<String, String> {
+    let (open, close) = markers(&rep.lab);
+    let start = readme
+        .find(&open)
+        .ok_or_else(|| format!("the README has no `{open}` marker"))?
+        + open.len();
+    let end = start
+        + readme[start..]
+            .find(&close)
+            .ok_or_else(|| format!("the README has no `{close}` marker"))?;
+    Ok(format!(
+        "{}\n{}{}",
+        &readme[..start],
+        rep.to_markdown(),
+        &readme[end..]
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Row;
+
+    #[test]
+    fn a_block_is_replaced_and_read_back() {
+        let rep = Reproduction {
+            lab: "x".into(),
+            rows: vec![Row::measurement("m", "—", 1.5, "s")],
+            notes: vec![],
+        };
+        let text = "intro\n<!-- reproduce:x -->\nold\n<!-- /reproduce:x -->\nend\n";
+        let new = with_table(text, &rep).unwrap();
+        assert_eq!(
+            block(&new, "x").unwrap(),
+            rep.to_markdown().trim_matches('\n')
+        );
+        assert!(new.starts_with("intro\n") && new.ends_with("end\n"));
+        assert!(with_table("no markers", &rep).is_err());
+    }
+}

@@ -1,0 +1,379 @@
+//! `attlab reproduce p1`: the paper's setting (100 Hz, R = σ², σ = 0.04 °/s, 200-s runs for
+//! the windows, 600 s for Q = 0), measured the way the paper measured — against the
+//! kinematically integrated angle φ_int, which is what its error panels, its output file and
+//! its laboratory runs have — beside the error against the truth, which no filter on a rate
+//! gyro alone can push below the integrated gyro noise σ√(t/f).
+
+use super::{SuspendedMockup, rates};
+use crate::analysis::scenario::{params_with, run_trace};
+use crate::analysis::stats;
+use crate::analysis::{AnalysisError, StatsContext};
+use crate::model::{Expectation, Lab, Reproduction, Row};
+
+/// Seeds over which the window rows take their median.
+const SEEDS: [u64; 5] = [1, 2, 3, 4, 5];
+
+/// The 1σ angle error of direct integration after `t_s` seconds of white rate noise σ per
+/// gyro sample at `input_rate_hz`: σ·√(t/f) (each sample adds σ/f; t·f samples add up).
+pub fn p1_noise_floor_deg(sigma_deg_s: f64, t_s: f64, input_rate_hz: f64) -> f64 {
+    sigma_deg_s * (t_s / input_rate_hz).sqrt()
+}
+
+/// Error statistics of one filter over one run.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FilterStats {
+    /// max |φ̂ − φ_int| (deg): the paper's angle-error panel.
+    pub max_vs_int_deg: f64,
+    /// max |φ̂ − φ| (deg), against the truth.
+    pub max_vs_truth_deg: f64,
+    /// RMS of φ̂ − φ (deg).
+    pub rms_vs_truth_deg: f64,
+    /// RMS of φ̇̂ − φ̇ (deg/s).
+    pub rate_rms_deg_s: f64,
+    /// Fraction of steps with |φ̇̂ − φ̇| inside the averaged sensor's 1σ band (Fig. 5.8).
+    pub rate_inside_band: f64,
+    /// The filter reported itself diverged during the run (1) or not (0); medians over seeds
+    /// give the majority.
+    pub diverged: f64,
+}
+
+/// (permanent-rotation KF, torsional KF) statistics of one run of p1 with `assignments`,
+/// over t > `after_s`.
+pub fn run_stats(
+    assignments: &[&str],
+    seed: u64,
+    duration_s: f64,
+    after_s: f64,
+) -> Result<[FilterStats; 2], AnalysisError> {
+    let lab: &'static dyn Lab = &SuspendedMockup;
+    let p = params_with(lab, assignments)?;
+    let band = p.get("gyro_noise_deg_s") / (rates(&p).1 as f64).sqrt();
+    let ids = ["kf-rotation", "kf-torsion"];
+    let names: Vec<String> = ids
+        .iter()
+        .flat_map(|id| {
+            [
+                "angle_minus_int_deg",
+                "angle_err_deg",
+                "rate_err_deg_s",
+                "status",
+            ]
+            .map(|q| format!("{id}.{q}"))
+        })
+        .collect();
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let trace = run_trace(lab, assignments, seed, duration_s, &refs)?;
+    let mut out = [FilterStats::default(); 2];
+    for (o, id) in out.iter_mut().zip(ids) {
+        let get = |q: &str| trace.after(&format!("{id}.{q}"), after_s);
+        let (vs_int, vs_truth, rate) = (
+            get("angle_minus_int_deg")?,
+            get("angle_err_deg")?,
+            get("rate_err_deg_s")?,
+        );
+        *o = FilterStats {
+            max_vs_int_deg: stats::max_abs(&vs_int).of(&format!("{id} φ̂ − φ_int"))?,
+            max_vs_truth_deg: stats::max_abs(&vs_truth).of(&format!("{id} φ̂ − φ"))?,
+            rms_vs_truth_deg: stats::rms(&vs_truth).of(&format!("{id} φ̂ − φ"))?,
+            rate_rms_deg_s: stats::rms(&rate).of(&format!("{id} rate error"))?,
+            rate_inside_band: stats::fraction(&rate, |r| r.abs() <= band)
+                .of(&format!("{id} rate error"))?,
+            diverged: f64::from(u8::from(
+                stats::max(trace.series(&format!("{id}.status"))?).of("status")? > 0.0,
+            )),
+        };
+    }
+    Ok(out)
+}
+
+/// The median over [`SEEDS`] of each statistic.
+fn median_stats(assignments: &[&str], duration_s: f64) -> Result<[FilterStats; 2], AnalysisError> {
+    let runs: Vec<[FilterStats; 2]> = SEEDS
+        .iter()
+        .map(|s| run_stats(assignments, *s, duration_s, 0.0))
+        .collect::<Result<_, _>>()?;
+    let mut out = [FilterStats::default(); 2];
+    for (k, o) in out.iter_mut().enumerate() {
+        let med = |f: fn(&FilterStats) -> f64| {
+            stats::median(&runs.iter().map(|r| f(&r[k])).collect::<Vec<_>>())
+                .of("median over seeds")
+        };
+        *o = FilterStats {
+            max_vs_int_deg: med(|s| s.max_vs_int_deg)?,
+            max_vs_truth_deg: med(|s| s.max_vs_truth_deg)?,
+            rms_vs_truth_deg: med(|s| s.rms_vs_truth_deg)?,
+            rate_rms_deg_s: med(|s| s.rate_rms_deg_s)?,
+            rate_inside_band: med(|s| s.rate_inside_band)?,
+            diverged: med(|s| s.diverged)?,
+        };
+    }
+    Ok(out)
+}
+
+/// The statistics of window `n` in `by_n`.
+fn pick(by_n: &[(usize, [FilterStats; 2])], n: usize) -> Result<[FilterStats; 2], AnalysisError> {
+    by_n.iter()
+        .find(|x| x.0 == n)
+        .map(|x| x.1)
+        .ok_or_else(|| AnalysisError::UnknownSeries(format!("window N = {n} was not run")))
+}
+
+/// The reproduction table.
+pub fn reproduce() -> Result<Reproduction, AnalysisError> {
+    let mut rows = Vec::new();
+    let p = params_with(&SuspendedMockup, &[])?;
+    let floor = |t: f64| p1_noise_floor_deg(p.get("gyro_noise_deg_s"), t, p.get("input_rate_hz"));
+    let windows = [1usize, 10, 100, 1000, 3000];
+    let mut by_n = Vec::new();
+    for n in windows {
+        let set = format!("kf_window={n}");
+        by_n.push((n, median_stats(&[&set], 200.0)?));
+    }
+    let q0 = median_stats(&["kf_window=0"], 600.0)?;
+    let (s100, s1000, s3000) = (pick(&by_n, 100)?, pick(&by_n, 1000)?, pick(&by_n, 3000)?);
+    let at = |n: usize| match n {
+        100 => s100,
+        1000 => s1000,
+        _ => s3000,
+    };
+    let panel = |s: &[FilterStats; 2]| s[0].max_vs_int_deg.max(s[1].max_vs_int_deg);
+    rows.push(Row::check(
+        "N = 100: angle-error panel vs φ_int (larger KF max |φ̂ − φ_int|, 200 s, median of 5 seeds)",
+        "±0.01–0.015° (Fig. 5.7)",
+        panel(&at(100)),
+        "deg",
+        Expectation::WithinFactor {
+            lo: 0.01,
+            hi: 0.015,
+            factor: 2.0,
+        },
+    ));
+    rows.push(Row::check(
+        "N = 1000: angle-error panel vs φ_int (larger KF max |φ̂ − φ_int|, 200 s)",
+        "±0.3–0.4° (Fig. 5.5)",
+        panel(&at(1000)),
+        "deg",
+        Expectation::WithinFactor {
+            lo: 0.3,
+            hi: 0.4,
+            factor: 2.0,
+        },
+    ));
+    let long = median_stats(
+        &["kf_window=1000", "string_length_m=2", "inertia_kg_m2=0.5"],
+        200.0,
+    )?;
+    rows.push(
+        Row::check(
+            "N = 1000 at T ≈ 578 s (string 2 m, body 0.5 kg·m²): angle-error panel vs φ_int",
+            "±0.3–0.4° (Fig. 5.5)",
+            panel(&long),
+            "deg",
+            Expectation::WithinFactor { lo: 0.3, hi: 0.4, factor: 2.0 },
+        )
+        .known_to_differ(
+            "the period the paper's rate axis suggests: the rotation model lags less behind the smaller accelerations (∝ 1/T²); the default T ≈ 400 s matches",
+        ),
+    );
+    rows.push(Row::check(
+        "Q = 0: torsional KF max |φ̂ − φ_int| (600 s)",
+        "angle-error axis of the order of ±100° (Fig. 5.3)",
+        q0[1].max_vs_int_deg,
+        "deg",
+        Expectation::within_factor_of(100.0, 2.0),
+    ));
+    rows.push(Row::measurement(
+        "Q = 0: rotation KF max |φ̂ − φ_int| (600 s)",
+        "\"fairly good\" (Fig. 5.3)",
+        q0[0].max_vs_int_deg,
+        "deg",
+    ));
+    for (n, s) in &by_n {
+        for (k, name) in ["rotation", "torsional"].iter().enumerate() {
+            let diverged = if s[k].diverged > 0.5 {
+                " (diverged: stopped at 10 turns)"
+            } else {
+                ""
+            };
+            rows.push(Row::measurement(
+                format!("N = {n}: {name} KF max |φ̂ − φ_int|{diverged}"),
+                if *n == 1 { "\"no smoothing\"" } else { "—" },
+                s[k].max_vs_int_deg,
+                "deg",
+            ));
+        }
+    }
+    // Against the truth: bounded below by the integrated gyro noise.
+    rows.push(Row::measurement(
+        "noise floor of any rate-only estimate: σ√(t/f) at t = 200 s (closed form)",
+        "—",
+        floor(200.0),
+        "deg",
+    ));
+    for n in [100, 1000] {
+        for (k, name) in ["rotation", "torsional"].iter().enumerate() {
+            rows.push(Row::measurement(
+                format!("N = {n}: {name} KF max |φ̂ − φ| against the truth"),
+                "— (no truth in the paper's panels)",
+                at(n)[k].max_vs_truth_deg,
+                "deg",
+            ));
+        }
+    }
+    rows.push(Row::measurement(
+        "noise floor σ√(t/f) at t = 600 s (closed form)",
+        "—",
+        floor(600.0),
+        "deg",
+    ));
+    rows.push(Row::measurement(
+        "Q = 0: rotation KF max |φ̂ − φ| against the truth (600 s)",
+        "—",
+        q0[0].max_vs_truth_deg,
+        "deg",
+    ));
+    // The paper's ordering, on both references.
+    for (reference, f) in [
+        (
+            "φ_int",
+            (|s: &FilterStats| s.max_vs_int_deg) as fn(&FilterStats) -> f64,
+        ),
+        ("truth", |s: &FilterStats| s.max_vs_truth_deg),
+    ] {
+        let (r100, r1000, r0) = (f(&at(100)[0]), f(&at(1000)[0]), f(&q0[0]));
+        rows.push(Row::check(
+            format!("finding: rotation KF vs {reference}, N = 100 below N = 1000"),
+            "N = 100 better (Figs. 5.5, 5.7)",
+            r100,
+            "deg",
+            Expectation::below(r1000),
+        ));
+        rows.push(Row::check(
+            format!("finding: rotation KF vs {reference}, N = 1000 below Q = 0"),
+            "adaptation much better (Figs. 5.3, 5.5)",
+            r1000,
+            "deg",
+            Expectation::below(r0),
+        ));
+    }
+    rows.push(Row::check(
+        "finding: N = 3000 worse than N = 1000 (panel vs φ_int)",
+        "N > 2000 unsatisfactory",
+        panel(&at(3000)),
+        "deg",
+        Expectation::above(panel(&at(1000))),
+    ));
+    let best =
+        stats::min(&by_n.iter().map(|(_, s)| panel(s)).collect::<Vec<_>>()).of("panel over N")?;
+    rows.push(Row::check(
+        "finding: N = 100 within 2× of the best window (panel vs φ_int)",
+        "N ≈ 100 optimal",
+        panel(&at(100)) / best,
+        "×best",
+        Expectation::below(2.0),
+    ));
+    let [rot, tor] = at(1000);
+    rows.push(Row::check(
+        "finding: N = 1000, torsional KF rate inside the 1σ noise band more often than the rotation KF",
+        "torsional fully, rotation partly (Fig. 5.8)",
+        tor.rate_inside_band,
+        "fraction",
+        Expectation::above(rot.rate_inside_band),
+    ));
+    rows.push(Row::measurement(
+        "N = 1000: rotation KF rate inside the 1σ noise band",
+        "partly (Fig. 5.8)",
+        rot.rate_inside_band,
+        "fraction",
+    ));
+    robustness(&mut rows)?;
+    Ok(Reproduction {
+        lab: "p1".into(),
+        rows,
+        notes: [
+            "the paper's setting: filter at 100 Hz, R = σ² (σ = 0.04 °/s), P₀ = 1e-4 (c₀ = 2e-4 so that P₀ is positive definite), 200-s runs for the windows, 600 s for Q = 0; window rows are medians over seeds 1–5",
+            "unstated in the paper and chosen here: T ≈ 400 s (steel 0.35 mm, L = 1 m, I = 0.48 kg·m²) and ζ = 0.05 — the paper's rate axis (±3–4 °/s from 360°) suggests T ≈ 578 s, where the N = 1000 panel is ~0.09° (preset \"T ≈ 578 s\")",
+            "adaptation: this project's reading of Table 2.3 — every N samples P := (1/N)Σ q qᵀ with q = (φ_int − φ̂⁺, z − φ̇̂⁺), then the Riccati solution with Q = 0; the literal q = K r collapses (E[Q_N,cc] = (c₀ − c_N)/N)",
+            "errors against φ_int are what the paper plots; against the truth no rate-only filter beats σ√(t/f)",
+        ]
+        .map(String::from)
+        .to_vec(),
+    })
+}
+
+/// The paper's robustness cases, judged against φ_int like its laboratory runs.
+fn robustness(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
+    let plain = run_stats(&["kf_window=100"], 1, 200.0, 0.0)?;
+    let cases: [(&str, &[&str], &str); 2] = [
+        (
+            "torque impulse 2 °/s at 100 s",
+            &["impulse_time_s=100", "impulse_deg_s=2"],
+            "estimates stay accurate (Fig. 6.9)",
+        ),
+        (
+            "suspension shaking, torque σ 1e-5 N·m",
+            &["shake_torque_n_m=1e-5"],
+            "the KFs still track (Fig. 6.8)",
+        ),
+    ];
+    for (name, extra, paper) in cases {
+        let mut a: Vec<&str> = extra.to_vec();
+        a.push("kf_window=100");
+        let [rot, tor] = run_stats(&a, 1, 200.0, 0.0)?;
+        rows.push(Row::check(
+            format!("robustness, {name}: larger KF max |φ̂ − φ_int|"),
+            format!("{paper}; Fig. 6.8's error axis ≈ 1°"),
+            rot.max_vs_int_deg.max(tor.max_vs_int_deg),
+            "deg",
+            Expectation::below(1.0),
+        ));
+    }
+    let swing = ["swing_amp_deg=5", "swing_misalign_deg=3", "kf_window=100"];
+    let [rot, tor] = run_stats(&swing, 1, 200.0, 0.0)?;
+    rows.push(
+        Row::check(
+            "robustness, pendulum swing 5°, gyro misaligned 3°: larger KF max |φ̂ − φ_int|",
+            "estimates remain good (Fig. 6.10); Fig. 6.8's error axis ≈ 1°",
+            rot.max_vs_int_deg.max(tor.max_vs_int_deg),
+            "deg",
+            Expectation::below(1.0),
+        )
+        .known_to_differ(
+            "with the saw-tooth reading the swing's 2-s rate oscillation feeds the reset P and the torsional KF runs away; the paper's own adaptation evidently damps it",
+        ),
+    );
+    for (mode, name) in [(1, "saw-tooth, diagonal"), (3, "rate process noise")] {
+        let set = format!("kf_adaptation={mode}");
+        let [rot, tor] = run_stats(&[swing[0], swing[1], swing[2], &set], 1, 200.0, 0.0)?;
+        for (s, filter) in [(rot, "rotation"), (tor, "torsional")] {
+            let diverged = if s.diverged > 0.5 { " (diverged)" } else { "" };
+            rows.push(Row::measurement(
+                format!("robustness, swing, adaptation \"{name}\": {filter} KF max |φ̂ − φ_int|{diverged}"),
+                "—",
+                s.max_vs_int_deg,
+                "deg",
+            ));
+        }
+    }
+    let [rot, tor] = run_stats(&["init_error_deg=100", "kf_window=100"], 1, 200.0, 0.0)?;
+    rows.push(Row::check(
+        "robustness, initial angle error 100°: torsional KF max |φ̂ − φ_int|",
+        "\"the torsional KF stayed accurate\" (§7); within 2× of the run without the error",
+        tor.max_vs_int_deg,
+        "deg",
+        Expectation::below(2.0 * plain[1].max_vs_int_deg.max(1e-9)),
+    ));
+    rows.push(Row::measurement(
+        "robustness, initial angle error 100°: rotation KF max |φ̂ − φ_int|",
+        "—",
+        rot.max_vs_int_deg,
+        "deg",
+    ));
+    rows.push(Row::measurement(
+        "robustness, initial angle error 100°: torsional KF max |φ̂ − φ| against the truth",
+        "— (the paper does not say the offset is corrected; φ_int carries it too)",
+        tor.max_vs_truth_deg,
+        "deg",
+    ));
+    Ok(())
+}

@@ -1,0 +1,189 @@
+//! The lab contract: truth, sensors, estimators, parameters, figures and anchors.
+
+use super::estimate::{Estimator, Measurements};
+use super::params::{ParamSpec, ParamValues};
+use super::report::{ReproError, Reproduction};
+use super::series::SeriesSpec;
+use nalgebra::{UnitQuaternion, Vector3};
+use rand_chacha::ChaCha8Rng;
+
+/// The true motion at one instant.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TruthState {
+    /// Simulation time (s).
+    pub t_s: f64,
+    /// True attitude.
+    pub q_ref_from_body: UnitQuaternion<f64>,
+    /// True body rate (rad/s).
+    pub rate_body_rad_s: Vector3<f64>,
+    /// True angle of a single-axis lab (rad).
+    pub angle_rad: Option<f64>,
+}
+
+/// How the body really moves.
+pub trait TruthModel: Send {
+    /// New parameter values, effective from the next step.
+    fn apply_params(&mut self, params: &ParamValues);
+    /// Advance by `dt_s`.
+    fn step(&mut self, dt_s: f64);
+    /// The current state.
+    fn state(&self) -> TruthState;
+    /// Extra lab-specific series (e.g. energy), whose values [`TruthModel::extra_values`]
+    /// writes.
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        Vec::new()
+    }
+    /// Writes the values of [`TruthModel::extra_series`], in order, into `out` (same length).
+    fn extra_values(&self, _out: &mut [f64]) {}
+    /// Draws the random inputs (e.g. a disturbance torque) for the next step.
+    fn draw_noise(&mut self, _rng: &mut ChaCha8Rng) {}
+}
+
+/// The lab's sensors.
+pub trait SensorModel: Send {
+    /// New parameter values, effective from the next sample.
+    fn apply_params(&mut self, params: &ParamValues);
+    /// Samples the sensors at the truth state, `dt_s` after the previous sample.
+    fn sample(&mut self, truth: &TruthState, dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements;
+}
+
+/// One running instance of a lab.
+pub struct LabRun {
+    /// The truth model.
+    pub truth: Box<dyn TruthModel>,
+    /// The sensors.
+    pub sensors: Box<dyn SensorModel>,
+    /// The estimators, in legend order.
+    pub estimators: Vec<Box<dyn Estimator>>,
+}
+
+impl LabRun {
+    /// Steps truth and sensors only, `steps` times, and returns the measurements: the input
+    /// for timing or replaying the estimators on their own.
+    pub fn measurement_trace(
+        &mut self,
+        dt_s: f64,
+        steps: usize,
+        rng: &mut ChaCha8Rng,
+    ) -> Vec<Measurements> {
+        (0..steps)
+            .map(|_| {
+                self.truth.draw_noise(rng);
+                self.truth.step(dt_s);
+                let truth = self.truth.state();
+                self.sensors.sample(&truth, dt_s, rng)
+            })
+            .collect()
+    }
+}
+
+/// A named set of series plotted together, e.g. a figure of the paper.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figure {
+    /// Tab title, e.g. "Fig. 8: v and vᵃ".
+    pub title: &'static str,
+    /// Series names (as recorded) drawn in it.
+    pub series: &'static [&'static str],
+    /// Draw log10 of the values (covariance elements spanning decades).
+    pub log: bool,
+}
+
+impl Figure {
+    /// A figure on a linear axis.
+    pub const fn new(title: &'static str, series: &'static [&'static str]) -> Self {
+        Self {
+            title,
+            series,
+            log: false,
+        }
+    }
+
+    /// The same on a log10 axis.
+    pub const fn log(self) -> Self {
+        Self { log: true, ..self }
+    }
+}
+
+/// A named set of parameter values (e.g. a real instrument) that the UI offers as a button
+/// and the CLI as `--preset NAME`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Preset {
+    /// Button label.
+    pub name: &'static str,
+    /// What it stands for.
+    pub help: &'static str,
+    /// (parameter key, value) pairs it sets.
+    pub values: &'static [(&'static str, f64)],
+}
+
+/// A sweep a lab offers, e.g. paper 1's adaptation window N over a log grid.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepSpec {
+    /// Title for the panel.
+    pub title: &'static str,
+    /// Parameter swept.
+    pub key: &'static str,
+    /// Values, in order.
+    pub values: &'static [f64],
+    /// Length of each run (s).
+    pub duration_s: f64,
+    /// Statistics are taken over t > `after_s`.
+    pub after_s: f64,
+    /// Series whose RMS (and maximum of |·|) is reported.
+    pub series: &'static [&'static str],
+}
+
+/// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).
+pub struct TimingItem {
+    /// What is timed.
+    pub name: &'static str,
+    /// One repetition.
+    pub run: Box<dyn FnMut()>,
+}
+
+/// A lab: truth, sensors, estimators, parameters and the paper's anchors. Registered once in
+/// `labs::all()`; the UI, the CLI and the tests iterate that list.
+pub trait Lab: Sync {
+    /// Stable id (`free-rotation`), used by the CLI and the URL.
+    fn id(&self) -> &'static str;
+    /// Menu title.
+    fn title(&self) -> &'static str;
+    /// The paper it reproduces (or "foundation").
+    fn paper(&self) -> &'static str;
+    /// A paragraph for the explanation panel: what happens and what each slider does.
+    fn summary(&self) -> &'static str;
+    /// Parameters (sliders).
+    fn params(&self) -> &'static [ParamSpec];
+    /// Simulation step for these parameters (s).
+    fn dt_s(&self, params: &ParamValues) -> f64;
+    /// A fresh run. Initial-condition randomness comes from `rng`.
+    fn build(&self, params: &ParamValues, rng: &mut ChaCha8Rng) -> LabRun;
+    /// Default run length for `reproduce` and the CLI (s).
+    fn default_duration_s(&self) -> f64;
+    /// Runs the lab's anchor scenarios and compares with the paper.
+    fn reproduce(&self) -> Result<Reproduction, ReproError>;
+    /// The paper's figures as plot tabs.
+    fn figures(&self) -> &'static [Figure] {
+        &[]
+    }
+    /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
+    fn sweeps(&self) -> &'static [SweepSpec] {
+        &[]
+    }
+    /// True when the body hangs on a string (the 3D view draws it).
+    fn suspended(&self) -> bool {
+        false
+    }
+    /// True when the lab's estimators can run on a recorded single-axis gyro log.
+    fn accepts_rate_log(&self) -> bool {
+        false
+    }
+    /// Named parameter sets (instruments, scenarios).
+    fn presets(&self) -> &'static [Preset] {
+        &[]
+    }
+    /// Work whose cost the lab compares (timed by the CLI, never by tests).
+    fn timing_items(&self) -> Vec<TimingItem> {
+        Vec::new()
+    }
+}

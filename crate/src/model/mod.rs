@@ -1,0 +1,24 @@
+//! The contracts every lab, truth model, sensor model and estimator plugs into, and the plain
+//! data they exchange. A leaf: it imports nothing of this crate but [`crate::math`], so every
+//! other module can depend on it and it on none of them.
+//!
+//! ```text
+//! math → model → dynamics, sensors, estimators → record, sim → analysis → labs → state, bin
+//! ```
+
+mod estimate;
+mod lab;
+mod params;
+mod report;
+mod series;
+
+pub use estimate::{
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Outputs, STATUS_OK,
+    StateInfo, StateKind,
+};
+pub use lab::{
+    Figure, Lab, LabRun, Preset, SensorModel, SweepSpec, TimingItem, TruthModel, TruthState,
+};
+pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
+pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};
+pub use series::{PlotTab, SeriesGroup, SeriesSpec};

@@ -1,0 +1,86 @@
+//! Replaying a recorded gyro log through a lab's estimators (paper 1's laboratory mode): the
+//! log stands in for the truth model and the sensors.
+
+use crate::model::{Measurements, ParamValues, SensorModel, TruthModel, TruthState};
+use crate::sensors::RateLog;
+use nalgebra::{UnitQuaternion, Vector3};
+use rand_chacha::ChaCha8Rng;
+use std::sync::Arc;
+
+/// "Truth" of a replay: time runs, the logged rate stands in for the true rate, the angle is
+/// unknown (so every error is missing).
+pub struct LogTruth {
+    log: Arc<RateLog>,
+    t_s: f64,
+    index: usize,
+}
+
+impl LogTruth {
+    /// Starts at the log's first sample.
+    pub fn new(log: Arc<RateLog>) -> Self {
+        Self {
+            log,
+            t_s: 0.0,
+            index: 0,
+        }
+    }
+}
+
+impl TruthModel for LogTruth {
+    fn apply_params(&mut self, _params: &ParamValues) {}
+
+    fn step(&mut self, dt_s: f64) {
+        self.t_s += dt_s;
+        while self.index + 1 < self.log.t_s.len()
+            && self.log.t_s[self.index + 1] - self.log.t_s[0] <= self.t_s + 1e-9
+        {
+            self.index += 1;
+        }
+    }
+
+    fn state(&self) -> TruthState {
+        let rate = self
+            .log
+            .rate_rad_s
+            .get(self.index)
+            .copied()
+            .unwrap_or(f64::NAN);
+        TruthState {
+            t_s: self.t_s,
+            q_ref_from_body: UnitQuaternion::identity(),
+            rate_body_rad_s: Vector3::new(0.0, 0.0, rate),
+            angle_rad: Some(f64::NAN),
+        }
+    }
+}
+
+/// Delivers each logged sample once, at the first step at or after its time.
+pub struct LogSensor {
+    log: Arc<RateLog>,
+    next: usize,
+}
+
+impl LogSensor {
+    /// Starts before the log's first sample.
+    pub fn new(log: Arc<RateLog>) -> Self {
+        Self { log, next: 0 }
+    }
+}
+
+impl SensorModel for LogSensor {
+    fn apply_params(&mut self, _params: &ParamValues) {}
+
+    fn sample(&mut self, truth: &TruthState, _dt_s: f64, _rng: &mut ChaCha8Rng) -> Measurements {
+        let t0 = self.log.t_s.first().copied().unwrap_or(0.0);
+        let mut latest = None;
+        while self.next < self.log.t_s.len() && self.log.t_s[self.next] - t0 <= truth.t_s + 1e-9 {
+            latest = Some(self.log.rate_rad_s[self.next]);
+            self.next += 1;
+        }
+        Measurements {
+            t_s: truth.t_s,
+            gyro_axis_rad_s: latest,
+            ..Default::default()
+        }
+    }
+}
