@@ -8,7 +8,7 @@ use attlab::analysis::readme;
 use attlab::labs;
 
 const README: &str = include_str!("../../README.md");
-const TESTED: &[&str] = &["free-rotation", "p1", "p3"];
+const TESTED: &[&str] = &["free-rotation", "p1", "p2", "p3", "p5"];
 
 fn reproduces_and_the_readme_shows_it(id: &str) {
     let lab = labs::find(id).expect("registered");
@@ -46,6 +46,16 @@ fn p1_reproduces() {
 }
 
 #[test]
+fn p2_reproduces() {
+    reproduces_and_the_readme_shows_it("p2");
+}
+
+#[test]
 fn p3_reproduces() {
     reproduces_and_the_readme_shows_it("p3");
+}
+
+#[test]
+fn p5_reproduces() {
+    reproduces_and_the_readme_shows_it("p5");
 }

@@ -85,6 +85,8 @@ pub enum Command {
     SetSpeed(f64),
     /// Save every sample of the run so far as CSV.
     ExportCsv,
+    /// Save the paper's own output file (labs that define one).
+    ExportOutputFile,
     /// Remove message `i`.
     Dismiss(usize),
     /// Start the lab's sweep `i`.
@@ -254,6 +256,7 @@ impl AppState {
                 self.speed = speed.clamp(lo, hi);
             }
             Command::ExportCsv => self.export_csv(),
+            Command::ExportOutputFile => self.export_output_file(),
             Command::Dismiss(i) => {
                 if i < self.messages.len() {
                     self.messages.remove(i);
@@ -384,6 +387,43 @@ impl AppState {
                 |e| Message::error(format!("export failed: {e}")),
                 Message::info,
             );
+        self.messages.push(message);
+    }
+
+    fn export_output_file(&mut self) {
+        let lab = self.sim.lab();
+        let Some(file) = lab.output_file(self.sim.params()) else {
+            return self
+                .messages
+                .push(Message::error("this lab has no output file of its paper"));
+        };
+        let mut buf = Vec::new();
+        let duration = self.sim.t_s().max(lab.default_duration_s());
+        let name = format!("attlab-{}-output-seed{}.csv", lab.id(), self.seed);
+        let message = attlab::sim::write_output_file(
+            lab,
+            self.sim.params().clone(),
+            self.seed,
+            duration,
+            &file,
+            &mut buf,
+        )
+        .and_then(|(rows, stopped)| {
+            platform::save_file(&name, "text/csv", buf, self.save_dir.as_deref()).map(|m| {
+                format!(
+                    "{m} ({rows} rows{})",
+                    if stopped {
+                        ", to the first row within tolerance"
+                    } else {
+                        ""
+                    }
+                )
+            })
+        })
+        .map_or_else(
+            |e| Message::error(format!("export failed: {e}")),
+            Message::info,
+        );
         self.messages.push(message);
     }
 

@@ -73,6 +73,9 @@ enum Command {
         /// A named preset of the lab (see `attlab labs`), applied before `--set`.
         #[arg(long)]
         preset: Option<String>,
+        /// Write every series even for a lab whose paper defines its own output file.
+        #[arg(long)]
+        all_series: bool,
     },
     /// Run a lab's estimators on a recorded gyro log (CSV: time, rate) and write the series.
     Replay {
@@ -128,7 +131,17 @@ pub fn main() -> ExitCode {
             csv,
             set,
             preset,
-        } => run(&lab, seed, duration, &csv, preset.as_deref(), &set).map(|()| true),
+            all_series,
+        } => run(
+            &lab,
+            seed,
+            duration,
+            &csv,
+            preset.as_deref(),
+            &set,
+            all_series,
+        )
+        .map(|()| true),
         Command::Replay {
             lab,
             log,
@@ -259,6 +272,7 @@ fn run(
     csv_path: &Path,
     preset: Option<&str>,
     set: &[String],
+    every_series: bool,
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
     let params = params_from(lab, preset, set)?;
@@ -267,6 +281,29 @@ fn run(
         return Err(format!(
             "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
         ));
+    }
+    if let (false, Some(file)) = (every_series, lab.output_file(&params)) {
+        let out = std::fs::File::create(csv_path)
+            .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+        let (rows, stopped) = attlab::sim::write_output_file(
+            lab,
+            params,
+            seed,
+            duration_s,
+            &file,
+            std::io::BufWriter::new(out),
+        )?;
+        println!(
+            "wrote the paper's output file, {rows} rows ({}) to {}{}",
+            file.headers.join(", "),
+            csv_path.display(),
+            if stopped {
+                ", ending at the first row within tolerance"
+            } else {
+                " (the tolerance was not reached)"
+            }
+        );
+        return Ok(());
     }
     let mut sim = Simulation::with_options(lab, params.clone(), seed, all_series())
         .map_err(|e| e.to_string())?;

@@ -9,15 +9,22 @@ mod accel_wz;
 mod blended_wz;
 pub mod covariance_matching;
 pub mod kf;
+mod mekf;
 mod one_axis_kf;
 mod quaternion_integration;
+mod sensitivity;
 mod wz_integration;
 mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
+pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, tabletsat_inertia};
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
 pub use quaternion_integration::QuaternionIntegration;
+pub use sensitivity::{
+    Method, SensitivityCorrection, SensitivitySettings, UpdateInfo, linearised_eigenvalues,
+    sensitivity_finite_difference_check,
+};
 pub use wz_integration::WzIntegration;
 pub use wz_kalman::{ACCEL_NOISE_KEY, KF_Q_SCALE_KEY, WzKalman};
 

@@ -215,6 +215,8 @@ impl TruthModel for Tumble {
             q_ref_from_body: s.q_ref_from_body,
             rate_body_rad_s: s.rate_body_rad_s,
             angle_rad: None,
+            wheel_momentum_body: None,
+            wheel_torque_body: None,
         }
     }
 

@@ -4,17 +4,27 @@
 
 pub mod free_rotation;
 pub mod p1_suspended;
+pub mod p2_tabletsat;
 pub mod p3_wz_sphere;
+pub mod p5_sensitivity;
 
 pub use free_rotation::FreeRotation;
 pub use p1_suspended::SuspendedMockup;
+pub use p2_tabletsat::TabletSat;
 pub use p3_wz_sphere::WzSphere;
+pub use p5_sensitivity::SensitivityLab;
 
 use crate::model::Lab;
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {
-    &[&FreeRotation, &SuspendedMockup, &WzSphere]
+    &[
+        &FreeRotation,
+        &SuspendedMockup,
+        &TabletSat,
+        &WzSphere,
+        &SensitivityLab,
+    ]
 }
 
 /// The lab with this id.

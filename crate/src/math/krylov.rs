@@ -73,3 +73,58 @@ impl KrylovAngles {
         [self.alpha1_rad, self.alpha2_rad, self.alpha3_rad]
     }
 }
+
+/// The Tait–Bryan sequences a lab offers for Krylov-type angles: (name, body axes turned
+/// about first, second, third; 0 = x, 1 = y, 2 = z).
+pub const ANGLE_SEQUENCES: [(&str, [usize; 3]); 6] = [
+    ("z-y-x (Krylov, ship: yaw, pitch, roll)", [2, 1, 0]),
+    ("x-y-z", [0, 1, 2]),
+    ("y-x-z", [1, 0, 2]),
+    ("z-x-y", [2, 0, 1]),
+    ("x-z-y", [0, 2, 1]),
+    ("y-z-x", [1, 2, 0]),
+];
+
+/// `q_ref_from_body` of the intrinsic rotation about body axis `axes[0]` by `angles[0]`,
+/// then `axes[1]` by `angles[1]`, then `axes[2]` by `angles[2]` (three distinct axes). With
+/// `[2, 1, 0]` these are [`KrylovAngles`].
+///
+/// ```
+/// # use attlab::math::{KrylovAngles, quaternion_from_sequence};
+/// let k = KrylovAngles::new(0.5, 0.7, 0.2);
+/// let q = quaternion_from_sequence([2, 1, 0], k.to_array());
+/// assert!(q.angle_to(&k.to_quaternion()) < 1e-12);
+/// ```
+pub fn quaternion_from_sequence(axes: [usize; 3], angles: [f64; 3]) -> UnitQuaternion<f64> {
+    let about = |axis: usize, angle: f64| {
+        let mut v = nalgebra::Vector3::zeros();
+        v[axis] = 1.0;
+        UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_unchecked(v), angle)
+    };
+    about(axes[0], angles[0]) * about(axes[1], angles[1]) * about(axes[2], angles[2])
+}
+
+/// The angles of `q_ref_from_body` in the sequence `axes` (inverse of
+/// [`quaternion_from_sequence`]; the middle angle in [−π/2, π/2]).
+///
+/// ```
+/// # use attlab::math::{ANGLE_SEQUENCES, quaternion_from_sequence, sequence_from_quaternion};
+/// for (_, axes) in ANGLE_SEQUENCES {
+///     let a = [0.4, -0.3, 1.1];
+///     let back = sequence_from_quaternion(axes, &quaternion_from_sequence(axes, a));
+///     assert!(a.iter().zip(back).all(|(x, y)| (x - y).abs() < 1e-12), "{axes:?}: {back:?}");
+/// }
+/// ```
+pub fn sequence_from_quaternion(
+    axes: [usize; 3],
+    q_ref_from_body: &UnitQuaternion<f64>,
+) -> [f64; 3] {
+    let r = q_ref_from_body.to_rotation_matrix().into_inner();
+    let [i, j, k] = axes;
+    // +1 for a cyclic (even) order of the axes, −1 otherwise.
+    let eps = if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 };
+    let a2 = (eps * r[(i, k)]).clamp(-1.0, 1.0).asin();
+    let a1 = (-eps * r[(j, k)]).atan2(r[(k, k)]);
+    let a3 = (-eps * r[(i, j)]).atan2(r[(i, i)]);
+    [a1, a2, a3]
+}

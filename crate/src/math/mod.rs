@@ -28,7 +28,9 @@ pub use integrate::{
     RateSegment, quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uv_derivative,
     uvz_derivative,
 };
-pub use krylov::KrylovAngles;
+pub use krylov::{
+    ANGLE_SEQUENCES, KrylovAngles, quaternion_from_sequence, sequence_from_quaternion,
+};
 pub use rotation::{
     dcm_from_quaternion, pitch_roll_of_vertical, quaternion_from_dcm, rot_x, rot_y, rot_z,
     rotation_angle_between, small_angle_error_body, vertical_in_body, wrap_pi,

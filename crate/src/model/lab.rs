@@ -18,6 +18,28 @@ pub struct TruthState {
     pub rate_body_rad_s: Vector3<f64>,
     /// True angle of a single-axis lab (rad).
     pub angle_rad: Option<f64>,
+    /// Reaction-wheel momentum in body axes (N·m·s), for a spacecraft with wheels.
+    pub wheel_momentum_body: Option<Vector3<f64>>,
+    /// Its rate ḣ (N·m).
+    pub wheel_torque_body: Option<Vector3<f64>>,
+}
+
+impl TruthState {
+    /// A state with an attitude and a rate (no angle, no wheels).
+    pub fn new(
+        t_s: f64,
+        q_ref_from_body: UnitQuaternion<f64>,
+        rate_body_rad_s: Vector3<f64>,
+    ) -> Self {
+        Self {
+            t_s,
+            q_ref_from_body,
+            rate_body_rad_s,
+            angle_rad: None,
+            wheel_momentum_body: None,
+            wheel_torque_body: None,
+        }
+    }
 }
 
 /// How the body really moves.
@@ -45,6 +67,13 @@ pub trait SensorModel: Send {
     fn apply_params(&mut self, params: &ParamValues);
     /// Samples the sensors at the truth state, `dt_s` after the previous sample.
     fn sample(&mut self, truth: &TruthState, dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements;
+    /// Series the sensors know the truth of (their biases, whether they see), whose values
+    /// [`SensorModel::extra_values`] writes.
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        Vec::new()
+    }
+    /// Writes the values of [`SensorModel::extra_series`], in order, into `out`.
+    fn extra_values(&self, _out: &mut [f64]) {}
 }
 
 /// One running instance of a lab.
@@ -133,6 +162,29 @@ pub struct SweepSpec {
     pub series: &'static [&'static str],
 }
 
+/// A lab's own output file, as its paper's program wrote it: these columns, one row per step,
+/// and (if `stop` is given) ending at the first row where that series is 1.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputFile {
+    /// Series written, in order (the first is usually `t_s`).
+    pub columns: Vec<String>,
+    /// Header cells for them (the paper's names).
+    pub headers: Vec<String>,
+    /// A 0/1 series: the file ends at the first row where it is 1.
+    pub stop: Option<String>,
+}
+
+/// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagram {
+    /// Title.
+    pub title: String,
+    /// Draw the unit circle.
+    pub unit_circle: bool,
+    /// Labelled points.
+    pub points: Vec<(String, [f64; 2])>,
+}
+
 /// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).
 pub struct TimingItem {
     /// What is timed.
@@ -184,6 +236,14 @@ pub trait Lab: Sync {
     }
     /// Work whose cost the lab compares (timed by the CLI, never by tests).
     fn timing_items(&self) -> Vec<TimingItem> {
+        Vec::new()
+    }
+    /// The paper's own output file, if the paper defines one (`attlab run --csv` writes it).
+    fn output_file(&self, _params: &ParamValues) -> Option<OutputFile> {
+        None
+    }
+    /// Diagrams that explain the current parameters (drawn beside the plots).
+    fn diagrams(&self, _params: &ParamValues) -> Vec<Diagram> {
         Vec::new()
     }
 }

@@ -13,11 +13,12 @@ mod report;
 mod series;
 
 pub use estimate::{
-    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Outputs, STATUS_OK,
-    StateInfo, StateKind,
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Onboard, Outputs,
+    STATUS_OK, StateInfo, StateKind,
 };
 pub use lab::{
-    Figure, Lab, LabRun, Preset, SensorModel, SweepSpec, TimingItem, TruthModel, TruthState,
+    Diagram, Figure, Lab, LabRun, OutputFile, Preset, SensorModel, SweepSpec, TimingItem,
+    TruthModel, TruthState,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};

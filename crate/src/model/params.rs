@@ -53,6 +53,9 @@ pub struct ParamSpec {
     /// Key of another parameter that must be non-zero for this one to act (e.g. the time of
     /// an impulse acts only when the impulse has a size).
     pub requires: Option<&'static str>,
+    /// True when the parameter shapes only what is exported (e.g. whose angles a paper's
+    /// output file holds), not the run.
+    pub export_only: bool,
 }
 
 impl ParamSpec {
@@ -77,6 +80,7 @@ impl ParamSpec {
             help: "",
             needs_reset: false,
             requires: None,
+            export_only: false,
         }
     }
 
@@ -108,6 +112,14 @@ impl ParamSpec {
     pub const fn requires(self, key: &'static str) -> Self {
         Self {
             requires: Some(key),
+            ..self
+        }
+    }
+
+    /// Shapes only the exports, not the run.
+    pub const fn export_only(self) -> Self {
+        Self {
+            export_only: true,
             ..self
         }
     }

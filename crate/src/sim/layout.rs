@@ -8,8 +8,8 @@ use crate::math::{
     small_angle_error_body, wrap_pi,
 };
 use crate::model::{
-    Attitude, Estimate, Estimator, Figure, PlotTab, SeriesGroup, SeriesSpec, StateInfo, StateKind,
-    TruthModel, TruthState,
+    Attitude, Estimate, Estimator, Figure, PlotTab, SensorModel, SeriesGroup, SeriesSpec,
+    StateInfo, StateKind, TruthModel, TruthState,
 };
 use thiserror::Error;
 
@@ -197,12 +197,16 @@ enum Source {
     Time,
     Truth(Q),
     TruthExtra(usize),
+    SensorExtra(usize),
     Est(usize, Q),
     Variance(usize, usize),
     Cross(usize, usize, usize),
     Innovation(usize, usize),
     Extra(usize, usize),
     Status(usize),
+    /// NEES of estimator i's attitude: eᵀP⁻¹e with e the small-angle error (truth) and P the
+    /// attitude block of its own covariance.
+    NeesAtt(usize),
 }
 
 /// Values derived from one attitude source in one step, computed only where needed.
@@ -229,6 +233,8 @@ pub struct Layout {
     extra_lens: Vec<usize>,
     any_extra: Vec<bool>,
     truth_extra_buf: Vec<f64>,
+    any_sensor_extra: bool,
+    sensor_extra_buf: Vec<f64>,
     extra_bufs: Vec<Vec<f64>>,
     est_derived: Vec<Derived>,
 }
@@ -275,13 +281,14 @@ impl Layout {
     pub fn new(
         lab_id: &str,
         truth: &dyn TruthModel,
+        sensors: &dyn SensorModel,
         estimators: &[Box<dyn Estimator>],
         selection: &Selection,
         figure_series: &[&str],
         sphere: bool,
     ) -> Result<Self, UnknownSeries> {
         let single_axis = truth.state().angle_rad.is_some();
-        let candidates = candidates(truth, estimators, single_axis);
+        let candidates = candidates(truth, sensors, estimators, single_axis);
         let keep: Vec<bool> = match selection {
             Selection::All => vec![true; candidates.len()],
             Selection::Standard => candidates
@@ -345,6 +352,7 @@ impl Layout {
         let mut truth_needs = 0;
         let mut est_needs = vec![0u32; n_est];
         let mut any_truth_extra = false;
+        let mut any_sensor_extra = false;
         let mut any_extra = vec![false; n_est];
         for col in &columns {
             match *col {
@@ -354,13 +362,18 @@ impl Layout {
                     // Errors need the truth's own attitude quantities too.
                     truth_needs |= error_truth_needs(q);
                 }
+                Source::NeesAtt(i) => {
+                    est_needs[i] |= bit(Q::ErrX) | bit(Q::ErrY) | bit(Q::ErrZ);
+                }
                 Source::TruthExtra(_) => any_truth_extra = true,
+                Source::SensorExtra(_) => any_sensor_extra = true,
                 Source::Extra(i, _) => any_extra[i] = true,
                 _ => {}
             }
         }
         let extra_lens: Vec<usize> = estimators.iter().map(|e| e.extra_names().len()).collect();
         let truth_extra_len = truth.extra_series().len();
+        let sensor_extra_len = sensors.extra_series().len();
         Ok(Self {
             columns,
             specs,
@@ -374,6 +387,8 @@ impl Layout {
             extra_lens,
             any_extra,
             truth_extra_buf: vec![f64::NAN; truth_extra_len],
+            any_sensor_extra: any_sensor_extra && sensor_extra_len > 0,
+            sensor_extra_buf: vec![f64::NAN; sensor_extra_len],
             est_derived: vec![NAN_DERIVED; n_est],
         })
     }
@@ -399,10 +414,12 @@ impl Layout {
     }
 
     /// Fills `row` (resized to the columns) with this step's values.
+    #[allow(clippy::too_many_arguments)]
     pub fn fill(
         &mut self,
         row: &mut Vec<f64>,
         truth_model: &dyn TruthModel,
+        sensors: &dyn SensorModel,
         truth: &TruthState,
         estimators: &[Box<dyn Estimator>],
         estimates: &[Estimate],
@@ -425,6 +442,9 @@ impl Layout {
         if self.any_truth_extra && self.truth_extra_len > 0 {
             truth_model.extra_values(&mut self.truth_extra_buf);
         }
+        if self.any_sensor_extra {
+            sensors.extra_values(&mut self.sensor_extra_buf);
+        }
         for (i, e) in estimates.iter().enumerate() {
             let needs = self.est_needs[i];
             if needs != 0 {
@@ -441,6 +461,7 @@ impl Layout {
                 Source::Time => truth.t_s,
                 Source::Truth(q) => truth_d.values[q as usize],
                 Source::TruthExtra(j) => self.truth_extra_buf[j],
+                Source::SensorExtra(j) => self.sensor_extra_buf[j],
                 Source::Est(i, q) => est_d[i].values[q as usize],
                 Source::Variance(i, k) => {
                     estimators[i].covariance().map_or(f64::NAN, |c| c.get(k, k))
@@ -455,10 +476,32 @@ impl Layout {
                     .unwrap_or(f64::NAN),
                 Source::Extra(i, k) => self.extra_bufs[i][k],
                 Source::Status(i) => status_codes[i],
+                Source::NeesAtt(i) => nees_att(estimators[i].as_ref(), &est_d[i]),
             };
             *slot = v;
         }
     }
+}
+
+/// eᵀP⁻¹e of the attitude: e from the truth (rad), P the estimator's attitude block.
+fn nees_att(e: &dyn Estimator, d: &Derived) -> f64 {
+    let Some(c) = e.covariance() else {
+        return f64::NAN;
+    };
+    let idx: Vec<usize> = (0..3)
+        .filter_map(|a| c.index_of(StateKind::AttitudeAxis(a)))
+        .collect();
+    if idx.len() != 3 {
+        return f64::NAN;
+    }
+    let p = nalgebra::Matrix3::from_fn(|r, k| c.get(idx[r], idx[k]));
+    let err = nalgebra::Vector3::new(
+        d.values[Q::ErrX as usize],
+        d.values[Q::ErrY as usize],
+        d.values[Q::ErrZ as usize],
+    )
+    .map(f64::to_radians);
+    p.cholesky().map_or(f64::NAN, |ch| err.dot(&ch.solve(&err)))
 }
 
 /// The truth quantities an error quantity compares with.
@@ -490,6 +533,7 @@ fn standard(c: &Candidate, figure_series: &[&str], sphere: bool) -> bool {
 /// Every series the truth and the estimators can give.
 fn candidates(
     truth: &dyn TruthModel,
+    sensors: &dyn SensorModel,
     estimators: &[Box<dyn Estimator>],
     single_axis: bool,
 ) -> Vec<Candidate> {
@@ -531,6 +575,12 @@ fn candidates(
     for (j, spec) in truth.extra_series().into_iter().enumerate() {
         out.push(Candidate {
             source: Source::TruthExtra(j),
+            spec,
+        });
+    }
+    for (j, spec) in sensors.extra_series().into_iter().enumerate() {
+        out.push(Candidate {
+            source: Source::SensorExtra(j),
             spec,
         });
     }
@@ -590,6 +640,15 @@ fn candidates(
                     SeriesGroup::Covariance,
                 )
                 .from_source(src),
+            });
+        }
+        let has_att_block =
+            (0..3).all(|a| states.iter().any(|s| s.kind == StateKind::AttitudeAxis(a)));
+        if has_att_block && outputs.attitude && !single_axis {
+            out.push(Candidate {
+                source: Source::NeesAtt(i),
+                spec: SeriesSpec::new(format!("{id}.nees_att"), "", SeriesGroup::Error)
+                    .from_source(src),
             });
         }
         if states.len() == 2 {

@@ -163,6 +163,7 @@ impl Simulation {
         let layout = Layout::new(
             lab.id(),
             run.truth.as_ref(),
+            run.sensors.as_ref(),
             &run.estimators,
             &options.selection,
             &figure_series,
@@ -384,6 +385,7 @@ impl Simulation {
         self.layout.fill(
             &mut self.row,
             self.run.truth.as_ref(),
+            self.run.sensors.as_ref(),
             truth,
             &self.run.estimators,
             &self.estimates,
@@ -512,4 +514,57 @@ fn finite(est: &Estimate, e: &dyn crate::model::Estimator) -> bool {
     est.is_finite()
         && e.covariance()
             .is_none_or(|c| c.matrix.iter().all(|v| v.is_finite()))
+}
+
+/// Runs `lab` from its start for at most `duration_s` and writes the paper's output file
+/// `file` (its columns under its headers, one row per step), ending at the first row where
+/// `file.stop` is 1. Returns the rows written and whether the stop row was reached.
+pub fn write_output_file<W: std::io::Write>(
+    lab: &'static dyn Lab,
+    params: ParamValues,
+    seed: u64,
+    duration_s: f64,
+    file: &crate::model::OutputFile,
+    out: W,
+) -> Result<(u64, bool), String> {
+    let mut names: Vec<&str> = file.columns.iter().map(String::as_str).collect();
+    if let Some(stop) = &file.stop {
+        names.push(stop);
+    }
+    let mut sim = Simulation::with_options(lab, params, seed, SimOptions::named(&names))
+        .map_err(|e| e.to_string())?;
+    let cols: Vec<usize> = file
+        .columns
+        .iter()
+        .map(|c| sim.series_index(c))
+        .collect::<Result<_, _>>()
+        .map_err(|e| e.to_string())?;
+    let stop = file
+        .stop
+        .as_deref()
+        .map(|s| sim.series_index(s))
+        .transpose()
+        .map_err(|e| e.to_string())?;
+    let mut writer = ::csv::Writer::from_writer(out);
+    let io = |e: ::csv::Error| e.to_string();
+    writer.write_record(&file.headers).map_err(io)?;
+    let mut rows = 0;
+    let end = duration_s - 1e-9 * sim.dt_s();
+    loop {
+        let row = sim.last_row();
+        writer
+            .write_record(cols.iter().map(|c| csv_cell(row[*c])))
+            .map_err(io)?;
+        rows += 1;
+        if stop.is_some_and(|s| row[s] > 0.5) {
+            writer.flush().map_err(|e| e.to_string())?;
+            return Ok((rows, true));
+        }
+        if sim.t_s() >= end {
+            break;
+        }
+        sim.step();
+    }
+    writer.flush().map_err(|e| e.to_string())?;
+    Ok((rows, false))
 }

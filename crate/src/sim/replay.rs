@@ -50,6 +50,8 @@ impl TruthModel for LogTruth {
             q_ref_from_body: UnitQuaternion::identity(),
             rate_body_rad_s: Vector3::new(0.0, 0.0, rate),
             angle_rad: Some(f64::NAN),
+            wheel_momentum_body: None,
+            wheel_torque_body: None,
         }
     }
 }

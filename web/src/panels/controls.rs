@@ -20,6 +20,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ui.separator();
                 parameters(ui, app, commands);
                 ui.separator();
+                super::lab_tools::diagrams(ui, app);
                 super::lab_tools::sweeps(ui, app, commands);
                 super::lab_tools::laboratory_mode(ui, app, commands);
                 outputs(ui, app, commands);
@@ -224,6 +225,14 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             commands.push(Command::CopyLink);
         }
     });
+    if app.sim.lab().output_file(app.sim.params()).is_some()
+        && ui
+            .button("Export the paper's output file")
+            .on_hover_text("The paper's own rows (t, angle₁, angle₂, angle₃), re-run from t = 0 with the current parameters, ending at the first row within tolerance")
+            .clicked()
+    {
+        commands.push(Command::ExportOutputFile);
+    }
 }
 
 fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {

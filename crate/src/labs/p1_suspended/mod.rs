@@ -379,6 +379,8 @@ impl TruthModel for Suspended {
             q_ref_from_body: q,
             rate_body_rad_s: Vector3::new(theta_dot, 0.0, self.pendulum.state[1]),
             angle_rad: Some(phi),
+            wheel_momentum_body: None,
+            wheel_torque_body: None,
         }
     }
 

@@ -335,6 +335,8 @@ impl P3Truth {
                 q_ref_from_body: nalgebra::UnitQuaternion::identity(),
                 rate_body_rad_s: Vector3::zeros(),
                 angle_rad: None,
+                wheel_momentum_body: None,
+                wheel_torque_body: None,
             },
         };
         truth.state = truth.compute_state();
@@ -351,6 +353,8 @@ impl P3Truth {
             q_ref_from_body: q,
             rate_body_rad_s: w,
             angle_rad: None,
+            wheel_momentum_body: None,
+            wheel_torque_body: None,
         }
     }
 }

@@ -1,0 +1,415 @@
+//! `attlab reproduce p2`: Table 3 as measured here beside the paper's, the ST+Gyro σ of
+//! Figs. 4–5, bias convergence, and the disturbance filter's gain for Mag+Sun.
+//!
+//! Two accuracies per filter: the paper's metric, √max diag P∞ of the attitude (as a
+//! rotation angle, twice the λ of the state) at the end of the run, and the measured σ —
+//! the RMS over the last 60 s of 200 s of each axis' error against the truth (mean
+//! included), largest axis. The checks assert what the paper makes certain; single numbers
+//! whose exponents the OCR lost are reported, not asserted.
+
+use super::TabletSat;
+use super::sets::{FILTERS, FilterRow};
+use crate::analysis::scenario::{Trace, run_trace};
+use crate::analysis::stats;
+use crate::analysis::{AnalysisError, StatsContext};
+use crate::model::{Expectation, Lab, Reproduction, Row};
+
+/// Run length (s) and the window σ is taken over (the last 60 s).
+const RUN_S: f64 = 200.0;
+const WINDOW_FROM_S: f64 = 140.0;
+
+/// One filter's accuracy over one run.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FilterAccuracy {
+    /// Largest per-axis RMS attitude error over the window (deg).
+    pub att_rms_deg: f64,
+    /// Per-axis RMS attitude errors (deg).
+    pub att_axes_deg: [f64; 3],
+    /// Largest per-axis RMS rate error over the window (deg/s).
+    pub rate_rms_deg_s: f64,
+    /// Per-axis RMS rate errors (deg/s).
+    pub rate_axes_deg_s: [f64; 3],
+    /// √max diag P of the attitude at the end (deg, rotation angle).
+    pub att_p_deg: f64,
+    /// √max diag P of the rate at the end (deg/s), NaN without a rate state.
+    pub rate_p_deg_s: f64,
+    /// Mean NEES of the attitude over the window (3 degrees of freedom).
+    pub nees_mean: f64,
+}
+
+fn series_of(id: &str, has_rate_state: bool) -> Vec<String> {
+    let mut s: Vec<String> = [
+        "err_x_deg",
+        "err_y_deg",
+        "err_z_deg",
+        "var_att_x",
+        "var_att_y",
+        "var_att_z",
+        "nees_att",
+    ]
+    .iter()
+    .map(|q| format!("{id}.{q}"))
+    .collect();
+    s.extend(
+        ["rate_err_x_deg_s", "rate_err_y_deg_s", "rate_err_z_deg_s"]
+            .iter()
+            .map(|q| format!("{id}.{q}")),
+    );
+    if has_rate_state {
+        s.extend(
+            ["var_rate_x", "var_rate_y", "var_rate_z"]
+                .iter()
+                .map(|q| format!("{id}.{q}")),
+        );
+    }
+    s
+}
+
+/// The accuracy of filter `id` in `trace`.
+pub fn accuracy(trace: &Trace, id: &str) -> Result<FilterAccuracy, AnalysisError> {
+    let rms_axes = |names: [&str; 3]| -> Result<[f64; 3], AnalysisError> {
+        let mut out = [0.0; 3];
+        for (o, n) in out.iter_mut().zip(names) {
+            *o = stats::rms(&trace.after(&format!("{id}.{n}"), WINDOW_FROM_S)?)
+                .of(&format!("{id}.{n}"))?;
+        }
+        Ok(out)
+    };
+    let att = rms_axes(["err_x_deg", "err_y_deg", "err_z_deg"])?;
+    let rate = rms_axes(["rate_err_x_deg_s", "rate_err_y_deg_s", "rate_err_z_deg_s"])?;
+    let p_max = |names: [&str; 3]| -> Result<f64, AnalysisError> {
+        let mut v = Vec::new();
+        for n in names {
+            v.push(trace.last(&format!("{id}.{n}"))?);
+        }
+        Ok(stats::max(&v).of("variances")?.sqrt().to_degrees())
+    };
+    let rate_p = match trace.series(&format!("{id}.var_rate_x")) {
+        Ok(_) => p_max(["var_rate_x", "var_rate_y", "var_rate_z"])?,
+        Err(_) => f64::NAN,
+    };
+    Ok(FilterAccuracy {
+        att_rms_deg: stats::max(&att).of("attitude σ")?,
+        att_axes_deg: att,
+        rate_rms_deg_s: stats::max(&rate).of("rate σ")?,
+        rate_axes_deg_s: rate,
+        att_p_deg: p_max(["var_att_x", "var_att_y", "var_att_z"])?,
+        rate_p_deg_s: rate_p,
+        nees_mean: stats::mean(&trace.after(&format!("{id}.nees_att"), WINDOW_FROM_S)?)
+            .of("NEES")?,
+    })
+}
+
+/// A 200-s run of every filter with `assignments`, and each one's accuracy.
+fn run_all(
+    assignments: &[&str],
+    seed: u64,
+) -> Result<Vec<(&'static FilterRow, FilterAccuracy)>, AnalysisError> {
+    let names: Vec<String> = FILTERS
+        .iter()
+        .flat_map(|f| {
+            series_of(
+                f.config.id,
+                f.config.states != crate::estimators::StateSet::AttGyroBias,
+            )
+        })
+        .collect();
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let lab: &'static dyn Lab = &TabletSat;
+    let trace = run_trace(lab, assignments, seed, RUN_S, &refs)?;
+    FILTERS
+        .iter()
+        .map(|f| Ok((f, accuracy(&trace, f.config.id)?)))
+        .collect()
+}
+
+fn acc_of<'a>(
+    all: &'a [(&'static FilterRow, FilterAccuracy)],
+    id: &str,
+) -> Result<&'a FilterAccuracy, AnalysisError> {
+    all.iter()
+        .find(|(f, _)| f.config.id == id)
+        .map(|(_, a)| a)
+        .ok_or_else(|| AnalysisError::UnknownSeries(format!("no filter `{id}`")))
+}
+
+/// Seconds after which |estimate − truth| of a bias stays below `tol` (NaN if never).
+fn convergence_time(
+    trace: &Trace,
+    estimate: &str,
+    truth: &str,
+    tol: f64,
+) -> Result<f64, AnalysisError> {
+    let (e, t) = (trace.series(estimate)?, trace.series(truth)?);
+    let times = trace.t_s();
+    // The last sample that is out of tolerance (NaN counts as out).
+    let last_bad = e
+        .iter()
+        .zip(t)
+        .zip(times)
+        .rev()
+        .find(|((e, t), _)| (*e - *t).abs().partial_cmp(&tol) != Some(std::cmp::Ordering::Less))
+        .map(|(_, time)| *time);
+    Ok(match last_bad {
+        None => 0.0,
+        Some(time) if time >= times[times.len() - 1] => f64::NAN,
+        Some(time) => time,
+    })
+}
+
+/// The reproduction table.
+pub fn reproduce() -> Result<Reproduction, AnalysisError> {
+    let mut rows = Vec::new();
+    let all = run_all(&[], 1)?;
+    for (f, a) in &all {
+        let paper = match (f.paper_att_deg, f.paper_rate_deg_s) {
+            (Some(x), Some(r)) => format!("{x:e}° / {r:e} °/s"),
+            (Some(x), None) => format!("{x:e}° / (unreadable)"),
+            (None, Some(r)) => format!("(unreadable) / {r:e} °/s"),
+            (None, None) => "(unreadable)".into(),
+        };
+        let q = if f.q_from_paper {
+            "q from Table 3"
+        } else {
+            "q ours"
+        };
+        rows.push(Row::measurement(
+            format!("{}: attitude σ measured (last 60 s; {q})", f.config.label),
+            paper.clone(),
+            a.att_rms_deg,
+            "deg",
+        ));
+        rows.push(Row::measurement(
+            format!("{}: attitude √max P∞ (paper's metric)", f.config.label),
+            "—",
+            a.att_p_deg,
+            "deg",
+        ));
+        rows.push(Row::measurement(
+            format!("{}: rate σ measured", f.config.label),
+            "—",
+            a.rate_rms_deg_s,
+            "deg/s",
+        ));
+        rows.push(Row::measurement(
+            format!(
+                "{}: mean attitude NEES (χ²₃: 3 if consistent)",
+                f.config.label
+            ),
+            "— (the paper tuned Q by hand)",
+            a.nees_mean,
+            "",
+        ));
+    }
+    // The hierarchy the paper makes certain.
+    let st_sets = [
+        "st-gyro-mag-sun",
+        "st-gyro-mag",
+        "st-mag-sun",
+        "st-mag-mbias",
+        "st-gyro",
+        "st-gyro-gbias",
+        "st",
+    ];
+    let worst_st = stats::max(
+        &st_sets
+            .iter()
+            .map(|id| acc_of(&all, id).map(|a| a.att_rms_deg))
+            .collect::<Result<Vec<_>, _>>()?,
+    )
+    .of("star-tracker sets")?;
+    let msg = acc_of(&all, "mag-sun-gyro")?.att_rms_deg;
+    let ms = acc_of(&all, "mag-sun")?.att_rms_deg;
+    let mg = acc_of(&all, "mag-gyro")?.att_rms_deg;
+    rows.push(Row::check(
+        "finding: worst star-tracker set below Mag+Sun+Gyro",
+        "ST sets ≈ 5e-4–8e-4° ≪ Mag+Sun+Gyro ≈ 0.02°",
+        worst_st,
+        "deg",
+        Expectation::below(msg),
+    ));
+    rows.push(Row::check(
+        "finding: Mag+Sun+Gyro below Mag+Sun",
+        "0.02° < 0.12°",
+        msg,
+        "deg",
+        Expectation::below(ms),
+    ));
+    rows.push(Row::check(
+        "finding: Mag+Sun+Gyro below Mag+Gyro",
+        "0.02° < 0.2°",
+        msg,
+        "deg",
+        Expectation::below(mg),
+    ));
+    rows.push(Row::measurement(
+        "Mag+Sun vs Mag+Gyro (ratio; swaps with the field–sun geometry, not asserted)",
+        "0.12° vs 0.2°",
+        ms / mg,
+        "",
+    ));
+    rows.push(
+        Row::check("Mag+Sun+Gyro attitude σ", "2e-2° (Table 3)", msg, "deg", Expectation::within_factor_of(2e-2, 3.0)).known_to_differ(
+            "the gyro here is read at 1 Hz like the other sensors; the paper does not give its rate, and at 10 Hz (next row) the set is within 3×",
+        ),
+    );
+    let fast_gyro = run_all(&["gyro_rate_hz=10"], 1)?;
+    rows.push(Row::check(
+        "Mag+Sun+Gyro attitude σ, gyro read at 10 Hz",
+        "2e-2° (Table 3)",
+        acc_of(&fast_gyro, "mag-sun-gyro")?.att_rms_deg,
+        "deg",
+        Expectation::within_factor_of(2e-2, 3.0),
+    ));
+    rows.push(Row::check(
+        "Mag+Sun attitude σ",
+        "0.12° (Table 3)",
+        ms,
+        "deg",
+        Expectation::within_factor_of(0.12, 3.0),
+    ));
+    // Figs. 4–5, ST+Gyro per axis.
+    let stg = acc_of(&all, "st-gyro")?;
+    for (k, (paper, axis)) in [1.448e-3, 8.211e-4, 1.150e-3]
+        .iter()
+        .zip(["x", "y", "z"])
+        .enumerate()
+    {
+        rows.push(Row::check(
+            format!("ST+Gyro attitude σ about {axis} (Fig. 4)"),
+            format!("{paper:e}°"),
+            stg.att_axes_deg[k],
+            "deg",
+            Expectation::within_factor_of(*paper, 3.0),
+        ));
+    }
+    for (k, (paper, axis)) in [2.305e-4, 3.449e-4, 2.089e-4]
+        .iter()
+        .zip(["x", "y", "z"])
+        .enumerate()
+    {
+        rows.push(Row::check(
+            format!("ST+Gyro rate σ about {axis} (Fig. 5)"),
+            format!("{paper:e} °/s"),
+            stg.rate_axes_deg_s[k],
+            "deg/s",
+            Expectation::within_factor_of(*paper, 3.0),
+        ));
+    }
+    biases(&mut rows)?;
+    disturbance(&mut rows, &all)?;
+    Ok(Reproduction {
+        lab: "p2".into(),
+        rows,
+        notes: [
+            "unstated in the paper and chosen here: circular sun-synchronous orbit 600 km, node at 10:30, 19 June 2026; WMM 2025 as the field; wheel gains K_λ = 5e-4, K_ω = 0.02; sensors at 1 Hz, EKF prediction at 10 Hz; P₀ from a 2° attitude error; star tracker 45° off zenith, away from the sun (it sees stars around the whole default orbit, as in the paper's runs); disturbance filter R_d = 100 × the row's innovation variance, α = 0.999 per second",
+            "σ measured = RMS over the last 60 s of a 200-s run (mean included), largest axis; the paper's metric = √max diag P∞ (attitude as a rotation angle, 2λ)",
+            "where Table 3's q lost its exponent in the OCR the filter uses this project's q (marked 'q ours')",
+        ]
+        .map(String::from)
+        .to_vec(),
+    })
+}
+
+/// Bias convergence: the gyro bias of ST+Gyro+Δω and the magnetometer bias of
+/// Mag+Sun+Gyro+Δb reach and stay within tolerance of the truth.
+fn biases(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
+    let lab: &'static dyn Lab = &TabletSat;
+    let gyro = run_trace(
+        lab,
+        &["gyro_bias_deg_s=0.05"],
+        1,
+        RUN_S,
+        &[
+            "st-gyro-gbias.gbias_x_deg_s",
+            "st-gyro-gbias.gbias_y_deg_s",
+            "st-gyro-gbias.gbias_z_deg_s",
+            "sensors.gyro_bias_x_deg_s",
+            "sensors.gyro_bias_y_deg_s",
+            "sensors.gyro_bias_z_deg_s",
+        ],
+    )?;
+    let mut worst: f64 = 0.0;
+    for a in ["x", "y", "z"] {
+        let t = convergence_time(
+            &gyro,
+            &format!("st-gyro-gbias.gbias_{a}_deg_s"),
+            &format!("sensors.gyro_bias_{a}_deg_s"),
+            0.005,
+        )?;
+        worst = if t.is_nan() || worst.is_nan() {
+            f64::NAN
+        } else {
+            worst.max(t)
+        };
+    }
+    rows.push(Row::check(
+        "ST+Gyro+Δω: gyro bias 0.05 °/s within 0.005 °/s after",
+        "biases converge from 0 in < 1 min (Figs. 6–7)",
+        worst,
+        "s",
+        Expectation::below(60.0),
+    ));
+    let mag = run_trace(
+        lab,
+        &["mag_bias_nt=2000"],
+        1,
+        RUN_S,
+        &[
+            "mag-sun-gyro-mbias.mbias_x_nt",
+            "mag-sun-gyro-mbias.mbias_y_nt",
+            "mag-sun-gyro-mbias.mbias_z_nt",
+            "sensors.mag_bias_x_nt",
+            "sensors.mag_bias_y_nt",
+            "sensors.mag_bias_z_nt",
+        ],
+    )?;
+    let mut worst: f64 = 0.0;
+    for a in ["x", "y", "z"] {
+        let t = convergence_time(
+            &mag,
+            &format!("mag-sun-gyro-mbias.mbias_{a}_nt"),
+            &format!("sensors.mag_bias_{a}_nt"),
+            400.0,
+        )?;
+        worst = if t.is_nan() || worst.is_nan() {
+            f64::NAN
+        } else {
+            worst.max(t)
+        };
+    }
+    rows.push(Row::check(
+        "Mag+Sun+Gyro+Δb: magnetometer bias 2000 nT within 400 nT (Table 3's Δb accuracy) after",
+        "biases converge from 0 in < 1 min (Figs. 6–7)",
+        worst,
+        "s",
+        Expectation::below(60.0),
+    )
+    .known_to_differ(
+        "a bias across both the field and the sun looks like a turn about the sun line; only the slowly turning geometry separates them (the other components converge within seconds)",
+    ));
+    Ok(())
+}
+
+/// The disturbance filter's gain for Mag+Sun (paper: 0.12° → 0.03°).
+fn disturbance(
+    rows: &mut Vec<Row>,
+    all: &[(&'static FilterRow, FilterAccuracy)],
+) -> Result<(), AnalysisError> {
+    let plain = acc_of(all, "mag-sun")?.att_rms_deg;
+    let with = acc_of(all, "mag-sun-dist")?.att_rms_deg;
+    rows.push(Row::check(
+        "Mag+Sun with the disturbance filter, attitude σ, below Mag+Sun without",
+        "0.12° → 0.03° (§3.2)",
+        with,
+        "deg",
+        Expectation::below(plain),
+    ));
+    rows.push(Row::measurement(
+        "Mag+Sun: σ without / with the disturbance filter",
+        "4",
+        plain / with,
+        "×",
+    ));
+    Ok(())
+}

@@ -1,0 +1,350 @@
+//! Paper 2's sensors (Table 1) with their outages, and what the onboard computer knows.
+//!
+//! * Magnetometer: the WMM field in body axes + bias + 250 nT white noise, ±200 000 nT.
+//! * Sun sensors: five heads (boresights ±x, ±y, +z) of ±45° field of view, 0.1° noise; no
+//!   reading in eclipse or when the sun is outside every head's field.
+//! * Gyro: rate + constant bias + bias random walk + 0.005 °/s white noise, ±250 °/s.
+//! * Star tracker (boresight +z, the zenith in nominal attitude): 0.001°; no reading above
+//!   2 °/s, with the sun inside its exclusion cone, or with the Earth's limb inside its
+//!   exclusion cone.
+//!
+//! Each sensor delivers at its own rate. The onboard computer's references — the field from
+//! its own model (which may be worse than the truth), the sun from the same ephemeris, the
+//! orbit's rate and gravity-gradient coefficient, the wheels' momentum and torque — come
+//! with every step in [`Onboard`].
+
+use super::truth::orbit_of;
+use crate::dynamics::{
+    CircularOrbit, EARTH_RADIUS_M, Epoch, FieldModel, ecef_from_eci, eci_from_ecef, in_shadow,
+    sun_direction_eci,
+};
+use crate::model::{
+    Measurements, Onboard, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthState,
+};
+use crate::sensors::{RandomWalk, WhiteNoise};
+use nalgebra::{UnitQuaternion, Vector3};
+use rand_chacha::ChaCha8Rng;
+
+/// Sun-sensor head boresights (body axes).
+const SUN_HEADS: [[f64; 3]; 5] = [
+    [1.0, 0.0, 0.0],
+    [-1.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0],
+    [0.0, -1.0, 0.0],
+    [0.0, 0.0, 1.0],
+];
+
+/// Star-tracker boresight (body axes): 45° off zenith toward +y (the orbit normal away from
+/// the sun in the default 10:30 orbit), so that it sees stars around the whole default orbit;
+/// the paper does not say where it looks.
+const STAR_BORESIGHT: [f64; 3] = [
+    0.0,
+    std::f64::consts::FRAC_1_SQRT_2,
+    std::f64::consts::FRAC_1_SQRT_2,
+];
+
+/// Direction (body) of the magnetometer bias.
+const MAG_BIAS_DIRECTION: [f64; 3] = [0.36, 0.48, -0.8];
+
+/// Direction (body) of the constant gyro bias.
+const GYRO_BIAS_DIRECTION: [f64; 3] = [0.6, 0.8, 0.0];
+
+/// The onboard field models, in menu order.
+pub const FIELD_MODELS: &[&str] = &[
+    "WMM, as the truth (no model error)",
+    "tilted dipole (several µT off)",
+    "WMM + model error of the size set below",
+];
+
+/// How to read the star tracker's 0.001°.
+pub const STAR_READINGS: &[&str] = &[
+    "0.001° per axis of rotation",
+    "0.001° on each quaternion component (a 0.002° rotation)",
+];
+
+/// Samples every `1/rate` seconds on a step grid of `dt`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Clock {
+    every_steps: u64,
+    step: u64,
+}
+
+impl Clock {
+    fn new(rate_hz: f64, dt_s: f64) -> Self {
+        Self {
+            every_steps: ((1.0 / (rate_hz * dt_s)).round() as u64).max(1),
+            step: 0,
+        }
+    }
+
+    /// Advances one step; true when a sample is due.
+    fn tick(&mut self) -> bool {
+        self.step += 1;
+        self.step.is_multiple_of(self.every_steps)
+    }
+}
+
+/// The sensors and the onboard references.
+pub struct Sensors {
+    orbit: CircularOrbit,
+    epoch: Epoch,
+    onboard_model: FieldModel,
+    mag_clock: Clock,
+    sun_clock: Clock,
+    gyro_clock: Clock,
+    star_clock: Clock,
+    mag_sigma_nt: f64,
+    mag_bias_nt: Vector3<f64>,
+    sun_sigma_rad: f64,
+    sun_fov_rad: f64,
+    gyro_sigma_rad_s: f64,
+    gyro_bias_rad_s: Vector3<f64>,
+    gyro_walk: [RandomWalk; 3],
+    star_sigma_rad: f64,
+    star_max_rate_rad_s: f64,
+    star_sun_exclusion_rad: f64,
+    star_earth_exclusion_rad: f64,
+    /// What the last step saw: (eclipse, sun seen, star tracker available).
+    seen: (bool, bool, bool),
+    /// Thought experiment: the sun put this far (rad) from the field direction.
+    sun_along_field_rad: Option<f64>,
+    /// The last field readings (truth, onboard model), orbital axes (nT).
+    fields: (Vector3<f64>, Vector3<f64>),
+}
+
+impl Sensors {
+    /// Sensors for `p` on the simulation step `dt_s`.
+    pub fn new(p: &ParamValues, dt_s: f64) -> Self {
+        let (orbit, epoch) = orbit_of(p);
+        let mut s = Self {
+            orbit,
+            epoch,
+            onboard_model: FieldModel::Wmm,
+            mag_clock: Clock::new(1.0, dt_s),
+            sun_clock: Clock::new(1.0, dt_s),
+            gyro_clock: Clock::new(1.0, dt_s),
+            star_clock: Clock::new(1.0, dt_s),
+            mag_sigma_nt: 0.0,
+            mag_bias_nt: Vector3::zeros(),
+            sun_sigma_rad: 0.0,
+            sun_fov_rad: 0.0,
+            gyro_sigma_rad_s: 0.0,
+            gyro_bias_rad_s: Vector3::zeros(),
+            gyro_walk: [RandomWalk {
+                value: 0.0,
+                sigma_per_sqrt_s: 0.0,
+            }; 3],
+            star_sigma_rad: 0.0,
+            star_max_rate_rad_s: 0.0,
+            star_sun_exclusion_rad: 0.0,
+            star_earth_exclusion_rad: 0.0,
+            seen: (false, false, false),
+            sun_along_field_rad: None,
+            fields: (Vector3::repeat(f64::NAN), Vector3::repeat(f64::NAN)),
+        };
+        s.mag_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
+        s.sun_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
+        s.gyro_clock = Clock::new(p.get("gyro_rate_hz"), dt_s);
+        s.star_clock = Clock::new(p.get("star_rate_hz"), dt_s);
+        s.apply_params(p);
+        s
+    }
+
+    /// The inertial position (m), the sun direction (unit, inertial) and `q_eci_from_orbit`.
+    fn geometry(&self, t_s: f64) -> (Vector3<f64>, Vector3<f64>, UnitQuaternion<f64>) {
+        let jd = self.epoch.julian_date(t_s);
+        (
+            self.orbit.position_eci_m(t_s),
+            sun_direction_eci(jd),
+            self.orbit.q_eci_from_orbit(t_s),
+        )
+    }
+
+    /// The field of `model` at the satellite, in orbital axes (nT).
+    fn field_orbit_nt(
+        &self,
+        model: FieldModel,
+        r_eci: &Vector3<f64>,
+        q_eci_from_orbit: &UnitQuaternion<f64>,
+        t_s: f64,
+    ) -> Vector3<f64> {
+        let jd = self.epoch.julian_date(t_s);
+        let b_ecef = model
+            .field_ecef_nt(&ecef_from_eci(r_eci, jd), self.epoch.date())
+            .unwrap_or_else(|| Vector3::repeat(f64::NAN));
+        q_eci_from_orbit.inverse_transform_vector(&eci_from_ecef(&b_ecef, jd))
+    }
+}
+
+/// `v` turned by a small random rotation of σ per axis (a noisy direction reading).
+fn noisy_direction(v: &Vector3<f64>, sigma_rad: f64, rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    let noise = WhiteNoise { sigma: sigma_rad };
+    let rot = Vector3::new(noise.sample(rng), noise.sample(rng), noise.sample(rng));
+    UnitQuaternion::from_scaled_axis(rot) * v
+}
+
+impl SensorModel for Sensors {
+    fn apply_params(&mut self, p: &ParamValues) {
+        self.onboard_model = match p.index("onboard_field") {
+            0 => FieldModel::Wmm,
+            1 => FieldModel::TiltedDipole,
+            _ => FieldModel::WmmWithError(p.get("model_error_nt")),
+        };
+        self.mag_sigma_nt = p.get("mag_noise_nt");
+        self.mag_bias_nt = Vector3::from(MAG_BIAS_DIRECTION).normalize() * p.get("mag_bias_nt");
+        self.sun_sigma_rad = p.get("sun_noise_deg").to_radians();
+        self.sun_fov_rad = p.get("sun_fov_deg").to_radians();
+        self.gyro_sigma_rad_s = p.get("gyro_noise_deg_s").to_radians();
+        self.gyro_bias_rad_s =
+            Vector3::from(GYRO_BIAS_DIRECTION).normalize() * p.get("gyro_bias_deg_s").to_radians();
+        for w in &mut self.gyro_walk {
+            w.sigma_per_sqrt_s = p.get("gyro_walk_deg_s_sqrt_s").to_radians();
+        }
+        let star = p.get("star_noise_deg").to_radians();
+        // Per-axis rotation σ, or σ on each quaternion component (twice the rotation).
+        self.star_sigma_rad = if p.index("star_reading") == 1 {
+            2.0 * star
+        } else {
+            star
+        };
+        self.star_max_rate_rad_s = p.get("star_max_rate_deg_s").to_radians();
+        self.star_sun_exclusion_rad = p.get("star_sun_exclusion_deg").to_radians();
+        self.star_earth_exclusion_rad = p.get("star_earth_exclusion_deg").to_radians();
+        self.sun_along_field_rad = p
+            .flag("sun_along_field")
+            .then(|| p.get("sun_field_angle_deg").to_radians());
+    }
+
+    fn sample(&mut self, truth: &TruthState, dt_s: f64, rng: &mut ChaCha8Rng) -> Measurements {
+        let t = truth.t_s;
+        let (r_eci, sun_eci, q_eci_orbit) = self.geometry(t);
+        let q = truth.q_ref_from_body; // orbit_from_body
+        let eclipse = in_shadow(&r_eci, &sun_eci);
+        let mag_due = self.mag_clock.tick();
+        if mag_due || self.fields.0.x.is_nan() || self.sun_along_field_rad.is_some() {
+            self.fields = (
+                self.field_orbit_nt(FieldModel::Wmm, &r_eci, &q_eci_orbit, t),
+                self.field_orbit_nt(self.onboard_model, &r_eci, &q_eci_orbit, t),
+            );
+        }
+        let (b_true_orbit, mag_ref) = self.fields;
+        let sun_orbit = match self.sun_along_field_rad {
+            // The field direction turned by the angle about an axis across it.
+            Some(angle) => {
+                let b = b_true_orbit.normalize();
+                let across = b
+                    .cross(&Vector3::x())
+                    .try_normalize(1e-9)
+                    .unwrap_or_else(Vector3::y);
+                UnitQuaternion::from_scaled_axis(across * angle) * b
+            }
+            None => q_eci_orbit.inverse_transform_vector(&sun_eci),
+        };
+        let sun_body = q.inverse_transform_vector(&sun_orbit);
+        for w in &mut self.gyro_walk {
+            w.step(dt_s, rng);
+        }
+        let walk = Vector3::new(
+            self.gyro_walk[0].value,
+            self.gyro_walk[1].value,
+            self.gyro_walk[2].value,
+        );
+        let mut m = Measurements {
+            t_s: t,
+            ..Measurements::default()
+        };
+        if self.gyro_clock.tick() {
+            let noise = WhiteNoise {
+                sigma: self.gyro_sigma_rad_s,
+            };
+            let range = 250f64.to_radians();
+            let g = truth.rate_body_rad_s
+                + self.gyro_bias_rad_s
+                + walk
+                + Vector3::from_fn(|_, _| noise.sample(rng));
+            m.gyro_body_rad_s = Some(g.map(|x| x.clamp(-range, range)));
+        }
+        if mag_due {
+            let noise = WhiteNoise {
+                sigma: self.mag_sigma_nt,
+            };
+            let b = q.inverse_transform_vector(&b_true_orbit)
+                + self.mag_bias_nt
+                + Vector3::from_fn(|_, _| noise.sample(rng));
+            if b.iter().all(|x| x.is_finite()) {
+                m.mag_body_nt = Some(b.map(|x| x.clamp(-200_000.0, 200_000.0)));
+            }
+        }
+        let sun_seen = !eclipse
+            && SUN_HEADS
+                .iter()
+                .any(|h| Vector3::from(*h).dot(&sun_body) >= self.sun_fov_rad.cos());
+        if self.sun_clock.tick() && sun_seen {
+            m.sun_body = Some(noisy_direction(&sun_body, self.sun_sigma_rad, rng).normalize());
+        }
+        let boresight = Vector3::from(STAR_BORESIGHT);
+        let nadir_body = q.inverse_transform_vector(&-Vector3::z());
+        let earth_radius_angle = (EARTH_RADIUS_M / self.orbit.radius_m).asin();
+        let w_rel = truth.rate_body_rad_s
+            - q.inverse_transform_vector(&self.orbit.frame_rate_orbit_rad_s());
+        let star_ok = truth.rate_body_rad_s.norm().max(w_rel.norm()) <= self.star_max_rate_rad_s
+            && (eclipse || boresight.angle(&sun_body) > self.star_sun_exclusion_rad)
+            && boresight.angle(&nadir_body) > earth_radius_angle + self.star_earth_exclusion_rad;
+        if self.star_clock.tick() && star_ok {
+            let noise = WhiteNoise {
+                sigma: self.star_sigma_rad,
+            };
+            let err = Vector3::from_fn(|_, _| noise.sample(rng));
+            m.star_q_ref_from_body = Some(q * UnitQuaternion::from_scaled_axis(err));
+        }
+        self.seen = (eclipse, sun_seen, star_ok);
+        m.onboard = Some(Onboard {
+            frame_rate_orbit_rad_s: self.orbit.frame_rate_orbit_rad_s(),
+            gravity_gradient_coeff: self.orbit.gravity_gradient_coeff(),
+            mag_ref_orbit_nt: mag_ref,
+            sun_ref_orbit: sun_orbit,
+            wheel_momentum_body: truth.wheel_momentum_body.unwrap_or_default(),
+            wheel_torque_body: truth.wheel_torque_body.unwrap_or_default(),
+        });
+        m
+    }
+
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        let mut s: Vec<SeriesSpec> = ["eclipse", "sun_seen", "star_available"]
+            .iter()
+            .map(|n| SeriesSpec::new(format!("sensors.{n}"), "", SeriesGroup::Lab))
+            .collect();
+        for a in ["x", "y", "z"] {
+            s.push(SeriesSpec::new(
+                format!("sensors.gyro_bias_{a}_deg_s"),
+                "deg/s",
+                SeriesGroup::Lab,
+            ));
+        }
+        for a in ["x", "y", "z"] {
+            s.push(SeriesSpec::new(
+                format!("sensors.mag_bias_{a}_nt"),
+                "nT",
+                SeriesGroup::Lab,
+            ));
+        }
+        s
+    }
+
+    fn extra_values(&self, out: &mut [f64]) {
+        let (e, sun, star) = self.seen;
+        let b = self.gyro_bias_rad_s
+            + Vector3::new(
+                self.gyro_walk[0].value,
+                self.gyro_walk[1].value,
+                self.gyro_walk[2].value,
+            );
+        out[..3].copy_from_slice(&[
+            f64::from(u8::from(e)),
+            f64::from(u8::from(sun)),
+            f64::from(u8::from(star)),
+        ]);
+        out[3..6].copy_from_slice(b.map(f64::to_degrees).as_slice());
+        out[6..9].copy_from_slice(self.mag_bias_nt.as_slice());
+    }
+}

@@ -1,0 +1,271 @@
+//! Paper 2's Table 2 (sensor sets → states) and Table 3 (their tuning and accuracy) as data:
+//! every filter of the lab is a row here, not a copy of code.
+
+use crate::estimators::{MekfConfig, SensorSet, StateSet};
+
+/// One filter of the lab with the paper's tuning and results.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FilterRow {
+    /// What it is.
+    pub config: MekfConfig,
+    /// q_Λ, q_ω, q_bias per 0.1-s prediction step (the paper's Table 3 where it is readable).
+    pub q: [f64; 3],
+    /// Whether `q` is the paper's (true) or this project's choice where the OCR lost it.
+    pub q_from_paper: bool,
+    /// Table 3's attitude σ (deg) and rate σ (deg/s); `None` where the OCR lost the number.
+    pub paper_att_deg: Option<f64>,
+    /// Table 3's rate σ (deg/s).
+    pub paper_rate_deg_s: Option<f64>,
+}
+
+const fn set(star: bool, gyro: bool, mag: bool, sun: bool) -> SensorSet {
+    SensorSet {
+        star,
+        gyro,
+        mag,
+        sun,
+    }
+}
+
+const fn cfg(
+    id: &'static str,
+    label: &'static str,
+    sensors: SensorSet,
+    states: StateSet,
+) -> MekfConfig {
+    MekfConfig {
+        id,
+        label,
+        sensors,
+        states,
+        disturbance: false,
+        constant_gain_after_s: None,
+    }
+}
+
+const fn row(
+    config: MekfConfig,
+    q: [f64; 3],
+    q_from_paper: bool,
+    att: Option<f64>,
+    rate: Option<f64>,
+) -> FilterRow {
+    FilterRow {
+        config,
+        q,
+        q_from_paper,
+        paper_att_deg: att,
+        paper_rate_deg_s: rate,
+    }
+}
+
+/// Table 2's twelve sets (in the paper's order), the reduced variant, the disturbance and
+/// constant-gain filters.
+pub const FILTERS: &[FilterRow] = &[
+    row(
+        cfg(
+            "st-gyro-mag-sun",
+            "1 ST+Gyro+Mag+Sun [λ,ω]",
+            set(true, true, true, true),
+            StateSet::AttRate,
+        ),
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(5e-4),
+        Some(4e-4),
+    ),
+    row(
+        cfg(
+            "st-gyro-mag",
+            "2 ST+Gyro+Mag [λ,ω]",
+            set(true, true, true, false),
+            StateSet::AttRate,
+        ),
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(5e-4),
+        Some(4e-4),
+    ),
+    row(
+        cfg(
+            "st-mag-sun",
+            "3 ST+Mag+Sun [λ,ω]",
+            set(true, false, true, true),
+            StateSet::AttRate,
+        ),
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(7e-4),
+        Some(6e-4),
+    ),
+    row(
+        cfg(
+            "st-mag-mbias",
+            "4 ST+Mag [λ,ω,Δb]",
+            set(true, false, true, false),
+            StateSet::AttRateMagBias,
+        ),
+        [1e-6, 1.2e-6, 1e-4],
+        true,
+        Some(7e-4),
+        Some(6e-4),
+    ),
+    row(
+        cfg(
+            "mag-sun-gyro",
+            "5 Mag+Sun+Gyro [λ,ω]",
+            set(false, true, true, true),
+            StateSet::AttRate,
+        ),
+        [5e-6, 5e-4, 0.0],
+        true,
+        Some(2e-2),
+        None,
+    ),
+    row(
+        cfg(
+            "mag-sun-gyro-gbias",
+            "6 Mag+Sun+Gyro [λ,ω,Δω]",
+            set(false, true, true, true),
+            StateSet::AttRateGyroBias,
+        ),
+        [1e-6, 3e-3, 1e-7],
+        false,
+        Some(2e-2),
+        None,
+    ),
+    row(
+        cfg(
+            "mag-sun-gyro-mbias",
+            "7 Mag+Sun+Gyro [λ,ω,Δb]",
+            set(false, true, true, true),
+            StateSet::AttRateMagBias,
+        ),
+        [5e-6, 5e-4, 5e-4],
+        false,
+        None,
+        None,
+    ),
+    row(
+        cfg(
+            "st-gyro",
+            "8 ST+Gyro [λ,ω]",
+            set(true, true, false, false),
+            StateSet::AttRate,
+        ),
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(5e-4),
+        Some(4e-4),
+    ),
+    row(
+        cfg(
+            "st-gyro-gbias",
+            "9 ST+Gyro [λ,ω,Δω]",
+            set(true, true, false, false),
+            StateSet::AttRateGyroBias,
+        ),
+        [1e-6, 1.2e-6, 1e-8],
+        false,
+        Some(5e-4),
+        Some(4e-4),
+    ),
+    row(
+        cfg(
+            "mag-sun",
+            "10 Mag+Sun [λ,ω]",
+            set(false, false, true, true),
+            StateSet::AttRate,
+        ),
+        [5e-6, 2e-6, 0.0],
+        false,
+        Some(0.12),
+        None,
+    ),
+    row(
+        cfg(
+            "mag-gyro",
+            "11 Mag+Gyro [λ,ω]",
+            set(false, true, true, false),
+            StateSet::AttRate,
+        ),
+        [1e-6, 5e-6, 0.0],
+        false,
+        None,
+        Some(5e-3),
+    ),
+    row(
+        cfg(
+            "st",
+            "12 ST [λ,ω]",
+            set(true, false, false, false),
+            StateSet::AttRate,
+        ),
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(8e-4),
+        Some(6e-4),
+    ),
+    row(
+        cfg(
+            "st-gyro-reduced",
+            "ST+Gyro reduced [λ,Δω]",
+            set(true, true, false, false),
+            StateSet::AttGyroBias,
+        ),
+        [1e-6, 0.0, 1e-8],
+        false,
+        None,
+        None,
+    ),
+    row(
+        MekfConfig {
+            disturbance: true,
+            ..cfg(
+                "mag-sun-dist",
+                "Mag+Sun [λ,ω] + disturbance filter (§3.2)",
+                set(false, false, true, true),
+                StateSet::AttRate,
+            )
+        },
+        [5e-6, 2e-6, 0.0],
+        false,
+        Some(3e-2),
+        None,
+    ),
+    row(
+        MekfConfig {
+            disturbance: true,
+            ..cfg(
+                "st-dist",
+                "ST [λ,ω] + disturbance filter (§3.2)",
+                set(true, false, false, false),
+                StateSet::AttRate,
+            )
+        },
+        [1e-6, 1.2e-6, 0.0],
+        false,
+        Some(8e-4),
+        Some(1e-4),
+    ),
+    row(
+        MekfConfig {
+            constant_gain_after_s: Some(150.0),
+            ..cfg(
+                "st-gyro-const",
+                "ST+Gyro [λ,ω] constant gain (§3.3)",
+                set(true, true, false, false),
+                StateSet::AttRate,
+            )
+        },
+        [1e-6, 1.2e-6, 0.0],
+        true,
+        Some(1.5e-3),
+        None,
+    ),
+];
+
+/// The row of filter `id`.
+pub fn filter(id: &str) -> Option<&'static FilterRow> {
+    FILTERS.iter().find(|f| f.config.id == id)
+}
