@@ -330,6 +330,52 @@ fn page_renders_without_errors() {
         }
         Err(e) => problems.push(format!("taking a screenshot failed: {e}")),
     }
+    // Every lab by its URL: the first frames, the console and a screenshot of each.
+    let base = url.split('#').next().unwrap_or(&url).to_string();
+    for lab in attlab::labs::all() {
+        let id = lab.id();
+        // A fragment-only change does not reload: leave the page first.
+        let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
+        if let Err(e) = session.call(
+            "POST",
+            "/url",
+            Some(&json!({ "url": format!("{base}#lab={id}") })),
+        ) {
+            problems.push(format!("{id}: navigate failed: {e}"));
+            continue;
+        }
+        let status = wait_for_frames(&session);
+        println!("page test: #lab={id}: attlabStatus = {status}");
+        problems.extend(
+            status_problems(&status)
+                .into_iter()
+                .map(|p| format!("#lab={id}: {p}")),
+        );
+        if status["lab"].as_str() != Some(id) {
+            problems.push(format!("#lab={id} opened lab {:?}", status["lab"]));
+        }
+        match session.console() {
+            Ok(entries) => problems.extend(
+                console_problems(&entries)
+                    .into_iter()
+                    .map(|p| format!("#lab={id}: {p}")),
+            ),
+            Err(e) => problems.push(format!("#lab={id}: reading the console log failed: {e}")),
+        }
+        match session.screenshot() {
+            Ok(png_bytes) => {
+                let path = out_dir().join(format!("screenshot-{id}.png"));
+                std::fs::write(&path, &png_bytes).expect("save the screenshot");
+                println!("page test: screenshot saved to {}", path.display());
+                problems.extend(
+                    screenshot_problems(&png_bytes)
+                        .into_iter()
+                        .map(|p| format!("#lab={id}: {p}")),
+                );
+            }
+            Err(e) => problems.push(format!("#lab={id}: taking a screenshot failed: {e}")),
+        }
+    }
     drop(session);
     assert!(
         problems.is_empty(),

@@ -1,4 +1,4 @@
-//! The central view: 3D body, Riemann sphere and complex plane on top, the plot tabs and
+//! The central view: 3D body, Riemann sphere and complex plane (or the lab's diagram) on top, the plot tabs and
 //! plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
 use crate::render::{body3d, plots, riemann_sphere};
@@ -34,9 +34,16 @@ pub fn central(
         draw_body(ui, app, &mut view.camera, r3d, gpu_ready);
         let caption = chart_caption(app);
         riemann_sphere::show_sphere(ui, rsphere, &mut view.sphere, &tracks, &caption);
-        ui.scope_builder(egui::UiBuilder::new().max_rect(rplane), |ui| {
-            riemann_sphere::show_plane(ui, &tracks)
-        });
+        // A lab with a diagram of its own (paper 5's eigenvalues) shows it here, beside the
+        // error plots, instead of the w plane.
+        let diagrams = app.sim.lab().diagrams(app.sim.params());
+        ui.scope_builder(
+            egui::UiBuilder::new().max_rect(rplane),
+            |ui| match diagrams.first() {
+                Some(d) => super::lab_tools::diagram(ui, d),
+                None => riemann_sphere::show_plane(ui, &tracks),
+            },
+        );
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
             plot_tabs(ui, app, commands);

@@ -59,47 +59,37 @@ pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     }
 }
 
-/// The lab's diagrams for the current parameters (e.g. eigenvalues on the unit circle).
-pub fn diagrams(ui: &mut Ui, app: &AppState) {
-    for (i, d) in app
-        .sim
-        .lab()
-        .diagrams(app.sim.params())
-        .into_iter()
-        .enumerate()
-    {
-        egui::CollapsingHeader::new(&d.title)
-            .id_salt(("diagram", i))
-            .default_open(true)
-            .show(ui, |ui| {
-                Plot::new(("diagram_plot", i))
-                    .height(200.0)
-                    .data_aspect(1.0)
-                    .include_x(-1.2)
-                    .include_x(1.2)
-                    .include_y(-1.2)
-                    .include_y(1.2)
-                    .legend(Legend::default().text_style(egui::TextStyle::Small))
-                    .show(ui, |plot| {
-                        if d.unit_circle {
-                            let circle: Vec<[f64; 2]> = (0..=96)
-                                .map(|k| {
-                                    let a = f64::from(k) * std::f64::consts::TAU / 96.0;
-                                    [a.cos(), a.sin()]
-                                })
-                                .collect();
-                            plot.line(Line::new("|λ| = 1", circle).color(egui::Color32::GRAY));
-                        }
-                        for (k, (label, p)) in d.points.iter().enumerate() {
-                            plot.points(
-                                Points::new(label.clone(), vec![*p])
-                                    .radius(5.0)
-                                    .color(source_color(k / 2 + 1)),
-                            );
-                        }
-                    });
-            });
-    }
+/// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit
+/// circle), filling `ui`, with its title above.
+pub fn diagram(ui: &mut Ui, d: &attlab::model::Diagram) {
+    ui.label(egui::RichText::new(&d.title).small());
+    let height = (ui.available_height() - 4.0).max(80.0);
+    Plot::new(("diagram_plot", d.title.as_str()))
+        .height(height)
+        .data_aspect(1.0)
+        .include_x(-1.2)
+        .include_x(1.2)
+        .include_y(-1.2)
+        .include_y(1.2)
+        .legend(Legend::default().text_style(egui::TextStyle::Small))
+        .show(ui, |plot| {
+            if d.unit_circle {
+                let circle: Vec<[f64; 2]> = (0..=96)
+                    .map(|k| {
+                        let a = f64::from(k) * std::f64::consts::TAU / 96.0;
+                        [a.cos(), a.sin()]
+                    })
+                    .collect();
+                plot.line(Line::new("|λ| = 1", circle).color(egui::Color32::GRAY));
+            }
+            for (k, (label, p)) in d.points.iter().enumerate() {
+                plot.points(
+                    Points::new(label.clone(), vec![*p])
+                        .radius(5.0)
+                        .color(source_color(k / 2 + 1)),
+                );
+            }
+        });
 }
 
 /// Loading a recorded gyro log (CSV: time, rate) for labs that accept one.

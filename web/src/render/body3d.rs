@@ -324,9 +324,10 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         dim,
     );
     if let Some((_, label)) = scene.ghost {
+        // On its own line: a long estimator label would run into the truth's.
         painter.text(
-            rect.right_top() + egui::vec2(-8.0, 6.0),
-            egui::Align2::RIGHT_TOP,
+            rect.left_top() + egui::vec2(8.0, 24.0),
+            egui::Align2::LEFT_TOP,
             format!("estimate (ghost): {label}"),
             font.clone(),
             dim,
