@@ -8,7 +8,7 @@ use attlab::analysis::readme;
 use attlab::labs;
 
 const README: &str = include_str!("../../README.md");
-const TESTED: &[&str] = &["free-rotation", "p1", "p2", "p3", "p5"];
+const TESTED: &[&str] = &["free-rotation", "p1", "p2", "p3", "p4", "p5"];
 
 fn reproduces_and_the_readme_shows_it(id: &str) {
     let lab = labs::find(id).expect("registered");
@@ -53,6 +53,11 @@ fn p2_reproduces() {
 #[test]
 fn p3_reproduces() {
     reproduces_and_the_readme_shows_it("p3");
+}
+
+#[test]
+fn p4_reproduces() {
+    reproduces_and_the_readme_shows_it("p4");
 }
 
 #[test]

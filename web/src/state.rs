@@ -9,10 +9,16 @@ use crate::render::{body3d, plots, riemann_sphere};
 use attlab::analysis::sweep::Sweep;
 use attlab::model::PlotTab;
 use attlab::model::{Lab, ParamValues};
-use attlab::sensors::{RateUnit, TimeUnit, parse_rate_log};
+use attlab::sensors::{ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log};
 use attlab::sim::{Selection, SimOptions, Simulation, default_tab};
 use attlab::state::UrlState;
 use web_time::{Duration, Instant};
+
+/// The synthetic Arduino MPU-6050 log shipped with the page (paper 4): name and text.
+pub const EXAMPLE_IMU_LOG: (&str, &str) = (
+    "p4-arduino-mpu6050.csv",
+    include_str!("../../assets/p4-arduino-mpu6050.csv"),
+);
 
 /// Time the simulation may take per frame before it falls behind real time.
 pub const STEP_BUDGET: Duration = Duration::from_millis(12);
@@ -99,6 +105,10 @@ pub enum Command {
     EndReplay,
     /// Units of the gyro log to load.
     SetLogUnits(RateUnit, TimeUnit),
+    /// Units of the IMU log to load (paper 4).
+    SetImuScales(ImuScales),
+    /// Replay the IMU log shipped with the page (paper 4).
+    LoadExampleLog,
     /// Which estimator the 3D ghost shows.
     SetGhost(usize),
     /// Select a plot tab.
@@ -142,6 +152,8 @@ pub struct AppState {
     pub sweep: Option<(usize, Sweep)>,
     /// Units of a gyro log to load.
     pub log_units: (RateUnit, TimeUnit),
+    /// Units of an IMU log to load.
+    pub imu_scales: ImuScales,
     /// Name and sample count of the log being replayed.
     pub replaying: Option<(String, usize)>,
     /// Text for the clipboard, taken by the app after the frame.
@@ -169,6 +181,7 @@ impl AppState {
             stats: Stats::default(),
             sweep: None,
             log_units: (RateUnit::DegPerS, TimeUnit::Seconds),
+            imu_scales: ImuScales::default(),
             replaying: None,
             clipboard: None,
             save_dir: None,
@@ -281,6 +294,10 @@ impl AppState {
                 );
             }
             Command::SetLogUnits(rate, time) => self.log_units = (rate, time),
+            Command::SetImuScales(scales) => self.imu_scales = scales,
+            Command::LoadExampleLog => {
+                self.start_replay(EXAMPLE_IMU_LOG.0.into(), EXAMPLE_IMU_LOG.1)
+            }
             Command::SetGhost(i) => self.ghost_index = i,
             Command::SelectTab(tab) => self.select_tab(tab),
             Command::SetLogCovariance(on) => self.plots.log_covariance = on,
@@ -320,17 +337,25 @@ impl AppState {
         }
     }
 
-    /// Takes a picked gyro log, if one arrived, and starts replaying it (bad lines are
-    /// listed as messages with their line numbers; the good ones are used).
+    /// Takes a picked log, if one arrived, and starts replaying it (bad lines are listed as
+    /// messages with their line numbers; the good ones are used).
     pub fn take_picked_log(&mut self) {
         let Some(picked) = self.file_slot.borrow_mut().take() else {
             return;
         };
-        let (name, text) = match picked {
-            Ok(x) => x,
-            Err(e) => return self.messages.push(Message::error(e)),
+        match picked {
+            Ok((name, text)) => self.start_replay(name, &text),
+            Err(e) => self.messages.push(Message::error(e)),
+        }
+    }
+
+    /// Parses `text` as the lab's kind of log and replays it.
+    fn start_replay(&mut self, name: String, text: &str) {
+        let log = if self.sim.lab().accepts_imu_log() {
+            parse_imu_log(text, self.imu_scales)
+        } else {
+            parse_rate_log(text, self.log_units.0, self.log_units.1)
         };
-        let log = parse_rate_log(&text, self.log_units.0, self.log_units.1);
         const SHOWN: usize = 12;
         for e in log.errors.iter().take(SHOWN) {
             self.messages

@@ -77,20 +77,30 @@ enum Command {
         #[arg(long)]
         all_series: bool,
     },
-    /// Run a lab's estimators on a recorded gyro log (CSV: time, rate) and write the series.
+    /// Run a lab's estimators on a recorded log and write the series: a gyro log (CSV: time,
+    /// rate; p1) or an Arduino MPU-6050 log (CSV: time, ax, ay, az, gx, gy, gz; p4).
     Replay {
-        /// Lab id (a lab with a single-axis gyro, e.g. p1).
+        /// Lab id (p1 for a gyro log, p4 for an IMU log).
         #[arg(long)]
         lab: String,
         /// The log file.
         #[arg(long)]
         log: PathBuf,
-        /// Unit of the rate column: deg_s, mdeg_s or rad_s.
+        /// Gyro logs: unit of the rate column, deg_s, mdeg_s or rad_s.
         #[arg(long, default_value = "deg_s")]
         rate_unit: String,
-        /// Unit of the time column: s or ms.
-        #[arg(long, default_value = "s")]
-        time_unit: String,
+        /// Unit of the time column, s or ms (default: s for a gyro log, ms — Arduino
+        /// millis() — for an IMU log).
+        #[arg(long)]
+        time_unit: Option<String>,
+        /// IMU logs: accelerometer columns in counts of ±2/4/8/16 g (counts2 … counts16; the
+        /// chip's power-on counts2 by default), g or mps2.
+        #[arg(long, default_value = "counts2")]
+        accel_unit: String,
+        /// IMU logs: gyro columns in counts of ±250/500/1000/2000 °/s (counts250 …; the
+        /// power-on counts250 by default), deg_s or rad_s.
+        #[arg(long, default_value = "counts250")]
+        gyro_unit: String,
         /// Output CSV file.
         #[arg(long)]
         csv: PathBuf,
@@ -147,9 +157,23 @@ pub fn main() -> ExitCode {
             log,
             rate_unit,
             time_unit,
+            accel_unit,
+            gyro_unit,
             csv,
             set,
-        } => replay(&lab, &log, &rate_unit, &time_unit, &csv, &set).map(|()| true),
+        } => replay(
+            &lab,
+            &log,
+            LogUnits {
+                rate: &rate_unit,
+                time: time_unit.as_deref(),
+                accel: &accel_unit,
+                gyro: &gyro_unit,
+            },
+            &csv,
+            &set,
+        )
+        .map(|()| true),
         Command::Bench { steps, lab } => match lab.as_deref().map(find_lab).transpose() {
             Ok(only) => {
                 bench(steps.max(10), only);
@@ -338,33 +362,72 @@ fn run(
     Ok(())
 }
 
+/// The unit flags of `attlab replay`.
+struct LogUnits<'a> {
+    rate: &'a str,
+    time: Option<&'a str>,
+    accel: &'a str,
+    gyro: &'a str,
+}
+
 fn replay(
     lab_id: &str,
     log_path: &Path,
-    rate_unit: &str,
-    time_unit: &str,
+    units: LogUnits<'_>,
     csv_path: &Path,
     set: &[String],
 ) -> Result<(), String> {
-    use attlab::sensors::{RateUnit, TimeUnit, parse_rate_log};
-    let lab = find_lab(lab_id)?;
-    let units = || {
-        RateUnit::ALL
-            .iter()
-            .map(|(_, n)| *n)
-            .collect::<Vec<_>>()
-            .join(", ")
+    use attlab::sensors::{
+        AccelUnit, GyroUnit, ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log,
     };
-    let rate_unit = RateUnit::from_name(rate_unit)
-        .ok_or_else(|| format!("--rate-unit `{rate_unit}`: use one of {}", units()))?;
-    let time_unit = match time_unit {
+    let lab = find_lab(lab_id)?;
+    let names = |all: &[&str]| all.join(", ");
+    let imu = lab.accepts_imu_log();
+    if !imu && !lab.accepts_rate_log() {
+        return Err(format!(
+            "lab {lab_id} does not replay logs: use p1 (gyro log) or p4 (IMU log)"
+        ));
+    }
+    let time_unit = match units.time.unwrap_or(if imu { "ms" } else { "s" }) {
         "s" => TimeUnit::Seconds,
         "ms" => TimeUnit::Milliseconds,
         other => return Err(format!("--time-unit `{other}`: use s or ms")),
     };
     let text = std::fs::read_to_string(log_path)
         .map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
-    let log = parse_rate_log(&text, rate_unit, time_unit);
+    let log = if imu {
+        let accel = AccelUnit::from_name(units.accel).ok_or_else(|| {
+            format!(
+                "--accel-unit `{}`: use one of {}",
+                units.accel,
+                names(&AccelUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        let gyro = GyroUnit::from_name(units.gyro).ok_or_else(|| {
+            format!(
+                "--gyro-unit `{}`: use one of {}",
+                units.gyro,
+                names(&GyroUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        parse_imu_log(
+            &text,
+            ImuScales {
+                time: time_unit,
+                accel,
+                gyro,
+            },
+        )
+    } else {
+        let rate_unit = RateUnit::from_name(units.rate).ok_or_else(|| {
+            format!(
+                "--rate-unit `{}`: use one of {}",
+                units.rate,
+                names(&RateUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        parse_rate_log(&text, rate_unit, time_unit)
+    };
     for e in &log.errors {
         eprintln!("attlab: {}: skipped {e}", log_path.display());
     }
@@ -460,8 +523,11 @@ fn print_timings(lab: &'static dyn Lab, reps: usize) {
         }
         let ns = t0.elapsed().as_nanos() as f64 / reps as f64;
         let b = *base.get_or_insert(ns);
+        let flops = item.flops.map_or(String::new(), |f| {
+            format!("   {f} FLOP counted, {:.1} FLOP/ns", f as f64 / ns)
+        });
         println!(
-            "  {:<40} {:>8.1} ns   ×{:.2} of the first",
+            "  {:<40} {:>8.1} ns   ×{:.2} of the first{flops}",
             item.name,
             ns,
             ns / b

@@ -127,6 +127,24 @@ type Rows<const N: usize> = [(f64, SVector<f64, N>, f64); MAX_ROWS];
 /// How a lab turns its parameters and a filter's base (q_Λ, q_ω, q_bias) into a tuning.
 pub type Retune = fn(&ParamValues, [f64; 3]) -> MekfTuning;
 
+/// Floating-point operations of one [`Mekf`] step with `n` states that processes `rows`
+/// scalar measurement rows, counted from the code (a multiply-add is two; a square root or
+/// division one):
+/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 367, Φ = E + F·dt 2n², ΦPΦᵀ
+///   2(2n³ − n²), + Q and symmetrise 3n²: 1207 + 4n³ + 3n²;
+/// * each scalar row — the gain and innovation variance in the filter (4n² + 3n) and the
+///   Joseph update of [`KalmanState::update_scalar`] (PHᵀ 2n² − n, S and K 4n, x 2n,
+///   E − KH 2n², (E − KH)P(E − KH)ᵀ 2(2n³ − n²), KRKᵀ + add 2n² + n, symmetrise 2n²):
+///   4n³ + 10n² + 9n + 2;
+/// * assembling the rows ≈ 200, folding the correction ≈ 55, publishing P 2n², the
+///   positive-definiteness check (scaling 3n² + 2n, Cholesky ≈ n³/3).
+pub const fn full_step_flops(n: u64, rows: u64) -> u64 {
+    let predict = 1207 + 4 * n * n * n + 3 * n * n;
+    let row = 4 * n * n * n + 10 * n * n + 9 * n + 2;
+    let tail = 200 + 55 + 2 * n * n + 3 * n * n + 2 * n + n * n * n / 3;
+    predict + rows * row + tail
+}
+
 /// Inertia of TabletSat-Aurora (paper 2, §1), kg·m².
 pub fn tabletsat_inertia() -> Matrix3<f64> {
     Matrix3::new(0.519, 0.002, 0.005, 0.002, 0.579, 0.009, 0.005, 0.009, 0.71)
@@ -243,6 +261,7 @@ pub struct Mekf<const N: usize> {
     gains: Option<[Option<SVector<f64, N>>; MAX_ROWS]>,
     last_gyro: Option<Vector3<f64>>,
     retune: Option<(Retune, [f64; 3])>,
+    unobservable_axis: Option<Vector3<f64>>,
     t_s: f64,
     nis: [f64; 2],
     status: EstimatorStatus,
@@ -279,6 +298,7 @@ impl<const N: usize> Mekf<N> {
             gains: None,
             last_gyro: None,
             retune: None,
+            unobservable_axis: None,
             t_s: 0.0,
             nis: [0.0; 2],
             status: EstimatorStatus::Ok,
@@ -513,6 +533,18 @@ impl<const N: usize> Mekf<N> {
             return;
         }
         self.check_geometry(&present, ob);
+        // One reference vector and no star tracker: the turn about that vector is not seen.
+        let (star, mag, sun) = (present[0], present[6], present[9]);
+        self.unobservable_axis = if !star && (mag != sun) {
+            let r = if mag {
+                ob.mag_ref_orbit_nt
+            } else {
+                ob.sun_ref_orbit
+            };
+            self.q.inverse_transform_vector(&r).try_normalize(1e-12)
+        } else {
+            None
+        };
         let mut err = KalmanState::new(SVector::<f64, N>::zeros(), self.p);
         let (mut nis, mut dof) = (0.0, 0.0);
         // §3.3: the gain is frozen at the first update after the freeze time in which every
@@ -646,6 +678,10 @@ impl<const N: usize> Estimator for Mekf<N> {
 
     fn label(&self) -> &'static str {
         self.cfg.label
+    }
+
+    fn unobservable_axis_body(&self) -> Option<Vector3<f64>> {
+        self.unobservable_axis
     }
 
     fn apply_params(&mut self, params: &ParamValues) {

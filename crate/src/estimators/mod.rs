@@ -12,15 +12,21 @@ pub mod kf;
 mod mekf;
 mod one_axis_kf;
 mod quaternion_integration;
+mod roll_kf;
 mod sensitivity;
 mod wz_integration;
 mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
-pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, tabletsat_inertia};
+pub use mekf::{
+    Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops, tabletsat_inertia,
+};
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
 pub use quaternion_integration::QuaternionIntegration;
+pub use roll_kf::{
+    ComplementaryRoll, RollInput, RollKf, RollTuning, accel_angle_rad, keys as roll_keys,
+};
 pub use sensitivity::{
     Method, SensitivityCorrection, SensitivitySettings, UpdateInfo, linearised_eigenvalues,
     sensitivity_finite_difference_check,

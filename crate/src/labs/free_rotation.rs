@@ -217,6 +217,7 @@ impl TruthModel for Tumble {
             angle_rad: None,
             wheel_momentum_body: None,
             wheel_torque_body: None,
+            control: None,
         }
     }
 

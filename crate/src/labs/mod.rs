@@ -6,12 +6,14 @@ pub mod free_rotation;
 pub mod p1_suspended;
 pub mod p2_tabletsat;
 pub mod p3_wz_sphere;
+pub mod p4_quadrotor;
 pub mod p5_sensitivity;
 
 pub use free_rotation::FreeRotation;
 pub use p1_suspended::SuspendedMockup;
 pub use p2_tabletsat::TabletSat;
 pub use p3_wz_sphere::WzSphere;
+pub use p4_quadrotor::QuadrotorRoll;
 pub use p5_sensitivity::SensitivityLab;
 
 use crate::model::Lab;
@@ -23,6 +25,7 @@ pub fn all() -> &'static [&'static dyn Lab] {
         &SuspendedMockup,
         &TabletSat,
         &WzSphere,
+        &QuadrotorRoll,
         &SensitivityLab,
     ]
 }

@@ -24,6 +24,22 @@ pub struct Measurements {
     pub star_q_ref_from_body: Option<UnitQuaternion<f64>>,
     /// What a spacecraft's computer knows besides its sensors (orbit, models, wheels).
     pub onboard: Option<Onboard>,
+    /// The controller's command, which a flight computer knows (paper 4).
+    pub control: Option<ControlInput>,
+}
+
+/// The command of paper 4's roll controller as angular acceleration, split as the paper's
+/// PD/PI structure splits it: a zero-mean varying part u_v and the constant part u₀ its
+/// integral has absorbed (the hover asymmetry).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ControlInput {
+    /// u_v (rad/s²).
+    pub varying_rad_s2: f64,
+    /// u₀, the integral part (rad/s²).
+    pub constant_rad_s2: f64,
+    /// The constant the plant really needs to hold its angle (rad/s²): what a filter that
+    /// knows the asymmetry knows.
+    pub needed_rad_s2: f64,
 }
 
 /// What the onboard computer of paper 2's satellite knows each step besides its attitude
@@ -287,6 +303,11 @@ pub trait Estimator: Send {
     /// Health.
     fn status(&self) -> &EstimatorStatus {
         &STATUS_OK
+    }
+    /// The body axis about which the estimator's sensors say nothing now (e.g. the field
+    /// direction for a gyro plus a magnetometer alone), drawn on the body in the 3D view.
+    fn unobservable_axis_body(&self) -> Option<Vector3<f64>> {
+        None
     }
     /// The covariance it carries (or predicts), if any.
     fn covariance(&self) -> Option<Covariance<'_>> {

@@ -1,6 +1,6 @@
 //! The lab contract: truth, sensors, estimators, parameters, figures and anchors.
 
-use super::estimate::{Estimator, Measurements};
+use super::estimate::{ControlInput, Estimator, Measurements};
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
 use super::series::SeriesSpec;
@@ -22,6 +22,8 @@ pub struct TruthState {
     pub wheel_momentum_body: Option<Vector3<f64>>,
     /// Its rate ḣ (N·m).
     pub wheel_torque_body: Option<Vector3<f64>>,
+    /// The command of a controller that is part of the plant (paper 4).
+    pub control: Option<ControlInput>,
 }
 
 impl TruthState {
@@ -38,6 +40,7 @@ impl TruthState {
             angle_rad: None,
             wheel_momentum_body: None,
             wheel_torque_body: None,
+            control: None,
         }
     }
 }
@@ -74,6 +77,67 @@ pub trait SensorModel: Send {
     }
     /// Writes the values of [`SensorModel::extra_series`], in order, into `out`.
     fn extra_values(&self, _out: &mut [f64]) {}
+    /// What the last sample adds to the 3D view (reference directions, the orbit).
+    fn scene(&self) -> SceneExtras {
+        SceneExtras::default()
+    }
+}
+
+/// A reference direction drawn from the body in the 3D view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneVector {
+    /// Short label at its tip.
+    pub label: &'static str,
+    /// Unit direction in the reference frame.
+    pub dir_ref: Vector3<f64>,
+    /// Colour (sRGB).
+    pub rgb: [u8; 3],
+}
+
+/// Where a satellite is on its orbit, for a small picture of the Earth beside the body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrbitPicture {
+    /// Position (ECI, m).
+    pub position_eci_m: Vector3<f64>,
+    /// Unit orbit normal (ECI).
+    pub normal_eci: Vector3<f64>,
+    /// Unit sun direction (ECI).
+    pub sun_eci: Vector3<f64>,
+    /// In the Earth's shadow.
+    pub eclipse: bool,
+    /// Earth radius (m).
+    pub earth_radius_m: f64,
+}
+
+/// What a lab's sensors add to the 3D view.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SceneExtras {
+    /// Reference directions (sun, field, nadir …).
+    pub vectors: Vec<SceneVector>,
+    /// The orbit, if the lab flies one.
+    pub orbit: Option<OrbitPicture>,
+}
+
+/// The body the 3D view draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BodyShape {
+    /// A box with two panels.
+    #[default]
+    Box,
+    /// A hexagonal prism (TabletSat).
+    HexPrism,
+}
+
+/// A lab's live accuracy table: one row per estimator, this run's σ over the last
+/// `window_s` beside the paper's values.
+#[derive(Clone, Copy, Debug)]
+pub struct AccuracyTable {
+    /// Title (names the paper's table).
+    pub title: &'static str,
+    /// Window the measured σ is taken over (s).
+    pub window_s: f64,
+    /// The paper's (attitude σ in deg, rate σ in deg/s) for an estimator id, where given.
+    pub paper: fn(&str) -> [Option<f64>; 2],
 }
 
 /// One running instance of a lab.
@@ -189,6 +253,8 @@ pub struct Diagram {
 pub struct TimingItem {
     /// What is timed.
     pub name: &'static str,
+    /// Floating-point operations of one repetition, where counted (printed beside the time).
+    pub flops: Option<u64>,
     /// One repetition.
     pub run: Box<dyn FnMut()>,
 }
@@ -230,6 +296,11 @@ pub trait Lab: Sync {
     fn accepts_rate_log(&self) -> bool {
         false
     }
+    /// True when the lab's estimators can run on a recorded IMU log (time, accelerometer,
+    /// gyro; paper 4's Arduino and MPU-6050).
+    fn accepts_imu_log(&self) -> bool {
+        false
+    }
     /// Named parameter sets (instruments, scenarios).
     fn presets(&self) -> &'static [Preset] {
         &[]
@@ -245,5 +316,13 @@ pub trait Lab: Sync {
     /// Diagrams that explain the current parameters (drawn beside the plots).
     fn diagrams(&self, _params: &ParamValues) -> Vec<Diagram> {
         Vec::new()
+    }
+    /// The body the 3D view draws.
+    fn body_shape(&self) -> BodyShape {
+        BodyShape::Box
+    }
+    /// A live table of each estimator's accuracy beside the paper's, if the paper has one.
+    fn accuracy_table(&self) -> Option<AccuracyTable> {
+        None
     }
 }

@@ -13,12 +13,12 @@ mod report;
 mod series;
 
 pub use estimate::{
-    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Onboard, Outputs,
-    STATUS_OK, StateInfo, StateKind,
+    Attitude, ControlInput, Covariance, Estimate, Estimator, EstimatorStatus, Measurements,
+    Onboard, Outputs, STATUS_OK, StateInfo, StateKind,
 };
 pub use lab::{
-    Diagram, Figure, Lab, LabRun, OutputFile, Preset, SensorModel, SweepSpec, TimingItem,
-    TruthModel, TruthState,
+    AccuracyTable, BodyShape, Diagram, Figure, Lab, LabRun, OrbitPicture, OutputFile, Preset,
+    SceneExtras, SceneVector, SensorModel, SweepSpec, TimingItem, TruthModel, TruthState,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};

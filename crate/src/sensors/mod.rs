@@ -1,9 +1,11 @@
 //! Sensor models. All randomness comes in through the caller's seeded RNG.
 
 mod gyro;
+mod imu_log;
 mod noise;
 mod rate_log;
 
 pub use gyro::{Gyro3, Gyro3Config};
+pub use imu_log::{AccelUnit, GyroUnit, ImuScales, parse_imu_log};
 pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};
 pub use rate_log::{LogLineError, RateLog, RateUnit, TimeUnit, parse_rate_log};

@@ -1,4 +1,5 @@
 //! Recorded single-axis gyro logs (paper 1's laboratory mode): CSV lines `time, rate`,
+//! (and, read by [`super::parse_imu_log`], paper 4's IMU logs with their accelerometer),
 //! parsed leniently — every good line is kept, every bad one reported with its line number.
 
 use thiserror::Error;
@@ -65,6 +66,8 @@ pub struct RateLog {
     pub t_s: Vec<f64>,
     /// Rates (rad/s).
     pub rate_rad_s: Vec<f64>,
+    /// Accelerometer readings (g), one per sample for an IMU log, empty for a rate log.
+    pub accel_g: Vec<nalgebra::Vector3<f64>>,
     /// Lines that were skipped, with the reason.
     pub errors: Vec<LogLineError>,
 }

@@ -5,16 +5,18 @@
 //! page's CSV export re-runs it and streams every sample, while the recorder only keeps what
 //! its memory budget allows).
 
+mod accuracy;
 mod csv;
 mod layout;
 mod replay;
 
+pub use accuracy::{AccuracyRow, AccuracyTracker};
 pub use csv::{CsvSink, csv_cell};
 pub use layout::{Layout, Selection, UnknownSeries};
 
 use crate::model::{
-    Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SeriesGroup,
-    SeriesSpec, TruthState,
+    Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
+    SeriesGroup, SeriesSpec, TruthState,
 };
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
 use crate::sensors::RateLog;
@@ -96,6 +98,7 @@ pub struct Simulation {
     options: SimOptions,
     replay: Option<Arc<RateLog>>,
     journal: Vec<JournalEntry>,
+    accuracy: Option<AccuracyTracker>,
 }
 
 impl Simulation {
@@ -192,6 +195,7 @@ impl Simulation {
             statuses: vec![EstimatorStatus::Ok; n],
             status_codes: vec![0.0; n],
             options,
+            accuracy: lab.accuracy_table().map(|t| AccuracyTracker::new(t, n)),
             replay,
             journal: Vec::new(),
         };
@@ -355,6 +359,22 @@ impl Simulation {
         self.record(&truth);
     }
 
+    /// What the sensors' last sample adds to the 3D view.
+    pub fn scene(&self) -> SceneExtras {
+        self.run.sensors.scene()
+    }
+
+    /// The lab's live accuracy table (each estimator over the last window), if it has one.
+    pub fn accuracy(&self) -> Option<(&'static str, f64, Vec<AccuracyRow>)> {
+        self.accuracy.as_ref().map(|a| {
+            (
+                a.table().title,
+                a.table().window_s,
+                a.rows(&self.run.estimators),
+            )
+        })
+    }
+
     /// Steps until `duration_s` more simulated time has passed.
     pub fn run_for(&mut self, duration_s: f64) {
         let end = self.t_s + duration_s;
@@ -392,6 +412,9 @@ impl Simulation {
             &self.status_codes,
         );
         self.recorder.push(&self.row);
+        if let Some(a) = &mut self.accuracy {
+            a.push(truth, &self.estimates);
+        }
     }
 
     /// Re-runs this run from its start — same lab, initial parameters, seed (or log) and the

@@ -1,5 +1,5 @@
-//! Replaying a recorded gyro log through a lab's estimators (paper 1's laboratory mode): the
-//! log stands in for the truth model and the sensors.
+//! Replaying a recorded gyro log (paper 1's laboratory mode) or IMU log (paper 4's rig)
+//! through a lab's estimators: the log stands in for the truth model and the sensors.
 
 use crate::model::{Measurements, ParamValues, SensorModel, TruthModel, TruthState};
 use crate::sensors::RateLog;
@@ -52,6 +52,7 @@ impl TruthModel for LogTruth {
             angle_rad: Some(f64::NAN),
             wheel_momentum_body: None,
             wheel_torque_body: None,
+            control: None,
         }
     }
 }
@@ -76,12 +77,13 @@ impl SensorModel for LogSensor {
         let t0 = self.log.t_s.first().copied().unwrap_or(0.0);
         let mut latest = None;
         while self.next < self.log.t_s.len() && self.log.t_s[self.next] - t0 <= truth.t_s + 1e-9 {
-            latest = Some(self.log.rate_rad_s[self.next]);
+            latest = Some(self.next);
             self.next += 1;
         }
         Measurements {
             t_s: truth.t_s,
-            gyro_axis_rad_s: latest,
+            gyro_axis_rad_s: latest.map(|k| self.log.rate_rad_s[k]),
+            accel_body_g: latest.and_then(|k| self.log.accel_g.get(k).copied()),
             ..Default::default()
         }
     }

@@ -108,10 +108,19 @@ fn draw_body(
         .get(app.ghost_index)
         .and_then(|e| e.quaternion())
         .zip(app.sim.estimators().get(app.ghost_index).map(|e| e.label()));
+    let extras = app.sim.scene();
     let scene = body3d::Scene {
         truth,
         ghost,
         suspended: app.sim.lab().suspended(),
+        shape: app.sim.lab().body_shape(),
+        vectors: &extras.vectors,
+        ghost_axis: app
+            .sim
+            .estimators()
+            .get(app.ghost_index)
+            .and_then(|e| e.unobservable_axis_body()),
+        orbit: extras.orbit,
     };
     body3d::show(ui, rect, camera, &scene, gpu_ready);
 }

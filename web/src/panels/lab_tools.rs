@@ -1,11 +1,62 @@
 //! Lab tools shown only for labs that offer them: parameter sweeps (with a progress bar,
-//! computed a slice per frame) and the laboratory mode that replays a recorded gyro log.
+//! computed a slice per frame), the live accuracy table, the lab's diagrams and the
+//! laboratory mode that replays a recorded gyro log.
 
 use crate::render::plots::source_color;
 use crate::state::{AppState, Command};
 use attlab::sensors::{RateUnit, TimeUnit};
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, Points};
+
+/// The live accuracy table: each estimator's measured σ over the last window and its own
+/// √max diag P beside the paper's numbers. Clicking a row shows that estimator as the ghost.
+pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let Some((title, window_s, rows)) = app.sim.accuracy() else {
+        return;
+    };
+    let cell = |x: f64| {
+        if x.is_finite() {
+            attlab::model::fmt_sig(x)
+        } else {
+            "—".into()
+        }
+    };
+    let paper = |x: Option<f64>| x.map_or_else(|| "—".into(), |v| format!("{v:e}"));
+    egui::CollapsingHeader::new(title).default_open(true).show(ui, |ui| {
+        let covered = app.sim.t_s().min(window_s);
+        ui.label(
+            egui::RichText::new(format!(
+                "σ: largest per-axis RMS error against the truth over the last {covered:.0} s of {window_s:.0} s (mean included); √P: the filter's own √max diag P now (the paper's metric). Click a row to show that filter as the ghost."
+            ))
+            .small(),
+        );
+        egui::ScrollArea::horizontal().show(ui, |ui| {
+            egui::Grid::new("accuracy_table").striped(true).num_columns(7).show(ui, |ui| {
+                for h in ["filter", "σ att °", "√P att °", "paper °", "σ rate °/s", "√P rate °/s", "paper °/s"] {
+                    ui.label(egui::RichText::new(h).small().strong());
+                }
+                ui.end_row();
+                for (i, r) in rows.iter().enumerate() {
+                    let selected = app.ghost_index == i;
+                    if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
+                        commands.push(Command::SetGhost(i));
+                    }
+                    for text in [
+                        cell(r.att_sigma_deg),
+                        cell(r.att_p_deg),
+                        paper(r.paper[0]),
+                        cell(r.rate_sigma_deg_s),
+                        cell(r.rate_p_deg_s),
+                        paper(r.paper[1]),
+                    ] {
+                        ui.label(egui::RichText::new(text).small().monospace());
+                    }
+                    ui.end_row();
+                }
+            });
+        });
+    });
+}
 
 /// The lab's sweeps: run/cancel, progress, and RMS against the swept value (log axis).
 pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
@@ -94,6 +145,9 @@ pub fn diagram(ui: &mut Ui, d: &attlab::model::Diagram) {
 
 /// Loading a recorded gyro log (CSV: time, rate) for labs that accept one.
 pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if app.sim.lab().accepts_imu_log() {
+        return imu_log(ui, app, commands);
+    }
     if !app.sim.lab().accepts_rate_log() {
         return;
     }
@@ -135,4 +189,56 @@ fn unit_name(u: RateUnit) -> &'static str {
         .iter()
         .find(|(v, _)| *v == u)
         .map_or("?", |(_, n)| n)
+}
+
+/// Loading a recorded Arduino MPU-6050 log (paper 4): units, the file or the shipped example.
+fn imu_log(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    use attlab::sensors::{AccelUnit, GyroUnit};
+    egui::CollapsingHeader::new("Real data: an Arduino MPU-6050 log").default_open(false).show(ui, |ui| {
+        ui.label(
+            "CSV lines `time, ax, ay, az, gx, gy, gz` (comma, semicolon, tab or space separated) as a sketch prints them; \
+             banner lines before the header and bad lines are listed with their numbers and skipped. \
+             The roll axis is x: rate gx, angle atan2(ay, az). Defaults: the chip's power-on ranges in counts, time in ms.",
+        );
+        let s = app.imu_scales;
+        ui.horizontal_wrapped(|ui| {
+            let name_of = |all: &[(AccelUnit, &'static str)], u: AccelUnit| all.iter().find(|(x, _)| *x == u).map_or("?", |(_, n)| *n);
+            egui::ComboBox::from_label("accel").selected_text(name_of(&AccelUnit::ALL, s.accel)).show_ui(ui, |ui| {
+                for (u, name) in AccelUnit::ALL {
+                    if ui.selectable_label(u == s.accel, name).clicked() {
+                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { accel: u, ..s }));
+                    }
+                }
+            });
+            let gyro_name = GyroUnit::ALL.iter().find(|(x, _)| *x == s.gyro).map_or("?", |(_, n)| *n);
+            egui::ComboBox::from_label("gyro").selected_text(gyro_name).show_ui(ui, |ui| {
+                for (u, name) in GyroUnit::ALL {
+                    if ui.selectable_label(u == s.gyro, name).clicked() {
+                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { gyro: u, ..s }));
+                    }
+                }
+            });
+            egui::ComboBox::from_label("time").selected_text(if s.time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
+                for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
+                    if ui.selectable_label(t == s.time, name).clicked() {
+                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { time: t, ..s }));
+                    }
+                }
+            });
+        });
+        ui.horizontal_wrapped(|ui| {
+            if ui.button("Load MPU-6050 log…").clicked() {
+                commands.push(Command::LoadLog);
+            }
+            if ui.button("Replay the example log").clicked() {
+                commands.push(Command::LoadExampleLog);
+            }
+            if let Some((name, n)) = &app.replaying {
+                ui.label(format!("replaying {name} ({n} samples)"));
+                if ui.button("Back to simulation").clicked() {
+                    commands.push(Command::EndReplay);
+                }
+            }
+        });
+    });
 }

@@ -1,9 +1,12 @@
 //! The 3D body view: a wgpu paint callback drawing the truth body and the estimate as a
 //! translucent ghost beside it, with a mouse-orbit camera.
 
-use super::mesh::{Triangle, Vertex, body_mesh, place, sorted_vertices, string_mesh};
+use super::mesh::{
+    Triangle, Vertex, body_mesh, hex_prism_mesh, place, rod, sorted_vertices, string_mesh,
+};
+use attlab::model::{BodyShape, OrbitPicture, SceneVector};
 use eframe::egui_wgpu::{self, wgpu};
-use egui::{Rect, Sense, Ui};
+use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
 use std::sync::OnceLock;
 
@@ -61,9 +64,13 @@ impl OrbitCamera {
     }
 }
 
-fn mesh() -> &'static [Triangle] {
-    static MESH: OnceLock<Vec<Triangle>> = OnceLock::new();
-    MESH.get_or_init(body_mesh)
+fn mesh(shape: BodyShape) -> &'static [Triangle] {
+    static BOX: OnceLock<Vec<Triangle>> = OnceLock::new();
+    static HEX: OnceLock<Vec<Triangle>> = OnceLock::new();
+    match shape {
+        BodyShape::Box => BOX.get_or_init(body_mesh),
+        BodyShape::HexPrism => HEX.get_or_init(hex_prism_mesh),
+    }
 }
 
 #[repr(C)]
@@ -241,6 +248,14 @@ pub struct Scene<'a> {
     pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
     /// The body hangs on a string from above (paper 1).
     pub suspended: bool,
+    /// The body's shape.
+    pub shape: BodyShape,
+    /// Reference directions drawn from the truth (sun, field, nadir).
+    pub vectors: &'a [SceneVector],
+    /// The axis (ghost's body axes) about which the ghost's sensors say nothing now.
+    pub ghost_axis: Option<Vector3<f64>>,
+    /// The orbit, drawn small in a corner.
+    pub orbit: Option<OrbitPicture>,
 }
 
 /// Shows the 3D view filling `rect`.
@@ -260,26 +275,52 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         return;
     }
     let eye = camera.eye();
-    let mut tris = Vec::with_capacity(mesh().len() * 2 + 64);
+    let body = mesh(scene.shape);
+    let mut tris = Vec::with_capacity(body.len() * 2 + 64);
     let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
+    let truth_at = Vector3::new(0.0, -spacing, 0.0);
+    let ghost_at = Vector3::new(0.0, spacing, 0.0);
+    place(body, &scene.truth, truth_at, 1.0, &eye, &mut tris);
+    if let Some((q, _)) = scene.ghost {
+        place(body, &q, ghost_at, 0.35, &eye, &mut tris);
+    }
+    // Labels at the tips of the drawn vectors: (world point, text, colour).
+    let mut labels: Vec<(Vector3<f64>, &str, Color32)> = Vec::new();
+    let mut rods = Vec::new();
+    for v in scene.vectors {
+        let tip = truth_at + v.dir_ref * 1.5;
+        let [r, g, b] = v.rgb;
+        let color = [
+            f32::from(r) / 255.0,
+            f32::from(g) / 255.0,
+            f32::from(b) / 255.0,
+        ];
+        rod(truth_at, tip, 0.018, color, &mut rods);
+        labels.push((tip, v.label, Color32::from_rgb(r, g, b)));
+    }
+    if let (Some(axis), Some((q, _))) = (scene.ghost_axis, scene.ghost) {
+        let d = q * axis;
+        rod(
+            ghost_at - d * 1.1,
+            ghost_at + d * 1.1,
+            0.022,
+            [0.95, 0.3, 0.85],
+            &mut rods,
+        );
+        labels.push((
+            ghost_at + d * 1.15,
+            "unobservable axis",
+            Color32::from_rgb(242, 77, 217),
+        ));
+    }
     place(
-        mesh(),
-        &scene.truth,
-        Vector3::new(0.0, -spacing, 0.0),
+        &rods,
+        &UnitQuaternion::identity(),
+        Vector3::zeros(),
         1.0,
         &eye,
         &mut tris,
     );
-    if let Some((q, _)) = scene.ghost {
-        place(
-            mesh(),
-            &q,
-            Vector3::new(0.0, spacing, 0.0),
-            0.35,
-            &eye,
-            &mut tris,
-        );
-    }
     if scene.suspended {
         let top = Vector3::new(0.0, 0.0, 0.3);
         let mut bodies = vec![(scene.truth, -spacing, 1.0)];
@@ -314,6 +355,25 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         vertices: sorted_vertices(tris),
     };
     painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+    for (p, text, color) in labels {
+        if let Some(at) = to_screen(&vp, rect, &p) {
+            painter.text(
+                at,
+                egui::Align2::LEFT_BOTTOM,
+                text,
+                egui::FontId::proportional(12.0),
+                color,
+            );
+        }
+    }
+    if let Some(orbit) = &scene.orbit {
+        let side = rect.width().min(rect.height()) * 0.34;
+        let area = Rect::from_min_size(
+            rect.right_bottom() - egui::vec2(side + 6.0, side + 6.0),
+            egui::vec2(side, side),
+        );
+        orbit_picture(&painter, area, orbit);
+    }
     let font = egui::FontId::proportional(13.0);
     let dim = egui::Color32::from_gray(200);
     painter.text(
@@ -339,5 +399,77 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         "drag to orbit · scroll to zoom · axes x red, y green, z blue",
         font,
         egui::Color32::from_gray(140),
+    );
+}
+
+/// `p` (world) on the screen, if it is in front of the camera.
+fn to_screen(vp: &Matrix4<f64>, rect: Rect, p: &Vector3<f64>) -> Option<Pos2> {
+    let clip = vp * p.push(1.0);
+    if clip.w <= 1e-9 {
+        return None;
+    }
+    let (x, y) = (clip.x / clip.w, clip.y / clip.w);
+    Some(Pos2::new(
+        rect.left() + ((x + 1.0) / 2.0) as f32 * rect.width(),
+        rect.top() + ((1.0 - y) / 2.0) as f32 * rect.height(),
+    ))
+}
+
+/// The Earth seen from the orbit normal: the orbit, the satellite, the sun to the right and
+/// the shadow cylinder behind the Earth (the satellite turns red inside it).
+fn orbit_picture(painter: &egui::Painter, area: Rect, orbit: &OrbitPicture) {
+    painter.rect_filled(area, 4.0, Color32::from_rgba_unmultiplied(8, 10, 18, 220));
+    let n = orbit.normal_eci;
+    let sun_in_plane = orbit.sun_eci - n * orbit.sun_eci.dot(&n);
+    let ea = sun_in_plane.try_normalize(1e-9).unwrap_or_else(|| {
+        n.cross(&Vector3::x())
+            .try_normalize(1e-9)
+            .unwrap_or_else(Vector3::y)
+    });
+    let eb = n.cross(&ea);
+    let r = orbit.position_eci_m.norm().max(orbit.earth_radius_m);
+    let center = area.center() + egui::vec2(0.0, 6.0);
+    let scale = area.width() * 0.40 / r as f32;
+    let at = |x: f64, y: f64| center + egui::vec2(x as f32 * scale, -(y as f32) * scale);
+    let re = orbit.earth_radius_m;
+    // The shadow: the cylinder of the Earth's radius away from the sun.
+    let far = r * 1.25;
+    let shadow = vec![at(0.0, re), at(-far, re), at(-far, -re), at(0.0, -re)];
+    painter.add(egui::Shape::convex_polygon(
+        shadow,
+        Color32::from_rgba_unmultiplied(0, 0, 0, 170),
+        Stroke::NONE,
+    ));
+    painter.circle_filled(center, re as f32 * scale, Color32::from_rgb(40, 90, 170));
+    painter.circle_stroke(
+        center,
+        r as f32 * scale,
+        Stroke::new(1.0, Color32::from_gray(150)),
+    );
+    let p = orbit.position_eci_m;
+    let sat = at(p.dot(&ea), p.dot(&eb));
+    let sat_color = if orbit.eclipse {
+        Color32::from_rgb(230, 70, 70)
+    } else {
+        Color32::from_rgb(255, 230, 120)
+    };
+    painter.circle_filled(sat, 4.0, sat_color);
+    let tip = at(far, 0.0);
+    painter.arrow(
+        at(r * 1.02, 0.0),
+        tip - at(r * 1.02, 0.0),
+        Stroke::new(1.5, Color32::from_rgb(255, 210, 60)),
+    );
+    let beta = 90.0 - orbit.sun_eci.angle(&n).to_degrees();
+    let caption = format!(
+        "orbit · β {beta:.0}°{}",
+        if orbit.eclipse { " · shadow" } else { "" }
+    );
+    painter.text(
+        area.left_top() + egui::vec2(4.0, 3.0),
+        egui::Align2::LEFT_TOP,
+        caption,
+        egui::FontId::proportional(10.0),
+        Color32::from_gray(200),
     );
 }

@@ -1,4 +1,5 @@
-//! The body mesh (a box bus with two solar panels and body axes), built in body axes and
+//! The body meshes (a box bus with two solar panels, TabletSat's hexagonal prism, body axes)
+//! and rods for drawn vectors, built in body axes and
 //! transformed and depth-sorted on the CPU each frame.
 
 use nalgebra::{Point3, UnitQuaternion, Vector3};
@@ -90,6 +91,12 @@ pub fn body_mesh() -> Vec<Triangle> {
         [0.85, 0.55, 0.2],
         &mut t,
     );
+    body_axes(&mut t);
+    t
+}
+
+/// The three body axes (x red, y green, z blue).
+fn body_axes(t: &mut Vec<Triangle>) {
     let axes = [
         (0, [0.9, 0.2, 0.2]),
         (1, [0.2, 0.8, 0.25]),
@@ -100,9 +107,87 @@ pub fn body_mesh() -> Vec<Triangle> {
         c[axis] = 0.75;
         let mut h = Vector3::repeat(0.025);
         h[axis] = 0.75;
-        cuboid(c, h, color, &mut t);
+        cuboid(c, h, color, t);
     }
+}
+
+/// TabletSat: a hexagonal prism about body z (the zenith in nominal attitude) with a star
+/// tracker 45° off +z toward +y, and the body axes.
+pub fn hex_prism_mesh() -> Vec<Triangle> {
+    let mut t = Vec::new();
+    let (r, h) = (0.5, 0.3);
+    let color = [0.78, 0.74, 0.62];
+    let corner = |k: usize, z: f64| {
+        let a = std::f64::consts::TAU * k as f64 / 6.0;
+        Vector3::new(r * a.cos(), r * a.sin(), z)
+    };
+    for k in 0..6 {
+        let (a0, a1) = (corner(k, -h), corner(k + 1, -h));
+        let (b0, b1) = (corner(k, h), corner(k + 1, h));
+        let mid = (a0 + a1) / 2.0;
+        let normal = Vector3::new(mid.x, mid.y, 0.0).normalize();
+        t.push(Triangle {
+            corners: [a0, a1, b1],
+            normal,
+            color,
+        });
+        t.push(Triangle {
+            corners: [a0, b1, b0],
+            normal,
+            color,
+        });
+        // End caps as fans about the axis (solar cells on +z).
+        t.push(Triangle {
+            corners: [Vector3::new(0.0, 0.0, h), b0, b1],
+            normal: Vector3::z(),
+            color: [0.22, 0.32, 0.62],
+        });
+        t.push(Triangle {
+            corners: [Vector3::new(0.0, 0.0, -h), a1, a0],
+            normal: -Vector3::z(),
+            color,
+        });
+    }
+    let boresight = Vector3::new(0.0, 1.0, 1.0).normalize();
+    rod(
+        boresight * 0.3,
+        boresight * 0.55,
+        0.07,
+        [0.35, 0.35, 0.4],
+        &mut t,
+    );
+    body_axes(&mut t);
     t
+}
+
+/// A square rod from `from` to `to` (same axes as the mesh it joins), half-width `half`.
+pub fn rod(
+    from: Vector3<f64>,
+    to: Vector3<f64>,
+    half: f64,
+    color: [f32; 3],
+    out: &mut Vec<Triangle>,
+) {
+    let d = to - from;
+    let len = d.norm();
+    if len < 1e-9 {
+        return;
+    }
+    let turn = UnitQuaternion::rotation_between(&Vector3::z(), &d).unwrap_or_else(|| {
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
+    });
+    let mut local = Vec::new();
+    cuboid(
+        Vector3::new(0.0, 0.0, len / 2.0),
+        Vector3::new(half, half, len / 2.0),
+        color,
+        &mut local,
+    );
+    out.extend(local.into_iter().map(|tri| Triangle {
+        corners: tri.corners.map(|c| turn * c + from),
+        normal: turn * tri.normal,
+        color: tri.color,
+    }));
 }
 
 /// A thin vertical string from `bottom` (world) up to height `top_z`.
@@ -167,6 +252,25 @@ mod tests {
             let e1 = t.corners[1] - t.corners[0];
             let e2 = t.corners[2] - t.corners[0];
             let geometric = e1.cross(&e2);
+            assert!(
+                geometric.dot(&t.normal) > 0.0,
+                "winding disagrees with normal"
+            );
+        }
+    }
+
+    #[test]
+    fn the_prism_and_rods_face_outwards() {
+        let mut mesh = hex_prism_mesh();
+        rod(
+            Vector3::new(0.1, 0.2, 0.3),
+            Vector3::new(-1.0, 2.0, 0.5),
+            0.02,
+            [1.0; 3],
+            &mut mesh,
+        );
+        for t in &mesh {
+            let geometric = (t.corners[1] - t.corners[0]).cross(&(t.corners[2] - t.corners[0]));
             assert!(
                 geometric.dot(&t.normal) > 0.0,
                 "winding disagrees with normal"

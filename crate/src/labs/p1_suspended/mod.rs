@@ -381,6 +381,7 @@ impl TruthModel for Suspended {
             angle_rad: Some(phi),
             wheel_momentum_body: None,
             wheel_torque_body: None,
+            control: None,
         }
     }
 

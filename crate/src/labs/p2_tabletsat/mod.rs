@@ -9,13 +9,13 @@ pub mod sensors;
 pub mod sets;
 pub mod truth;
 
-use crate::estimators::{Mekf, MekfTuning, StateSet};
+use crate::estimators::{Mekf, MekfConfig, MekfTuning, SensorSet, StateSet, full_step_flops};
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError, Reproduction,
-    SweepSpec,
+    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset,
+    ReproError, Reproduction, SweepSpec, TimingItem,
 };
 use nalgebra::{SMatrix, UnitQuaternion, Vector3};
-use rand::Rng;
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sensors::{FIELD_MODELS, STAR_READINGS, Sensors};
 use sets::FILTERS;
@@ -150,6 +150,21 @@ const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "P diagonal, ST+Gyro and Mag+Sun+Gyro (log; attitude rad², rate rad²/s²)",
+        &[
+            "st-gyro.var_att_x",
+            "st-gyro.var_att_y",
+            "st-gyro.var_att_z",
+            "st-gyro.var_rate_x",
+            "st-gyro.var_rate_y",
+            "st-gyro.var_rate_z",
+            "mag-sun-gyro.var_att_x",
+            "mag-sun-gyro.var_att_y",
+            "mag-sun-gyro.var_att_z",
+        ],
+    )
+    .log(),
+    Figure::new(
         "NIS per update",
         &[
             "st-gyro.nis",
@@ -207,6 +222,11 @@ const PRESETS: &[Preset] = &[
         name: "sun ∥ field",
         help: "The sun half a degree from the field direction: the vector filters without a star tracker lose the rotation about it and say so",
         values: &[("sun_along_field", 1.0), ("sun_field_angle_deg", 0.5)],
+    },
+    Preset {
+        name: "gyro + one vector (drift)",
+        help: "A gyro bias of 0.02 °/s; Mag+Gyro sees the field only, and with the sun heads narrowed to ±10° Mag+Sun+Gyro mostly does too — pick one as the ghost: the unobservable axis is drawn on the body, the drift about it shows on the error plots",
+        values: &[("gyro_bias_deg_s", 0.02), ("sun_fov_deg", 10.0)],
     },
     Preset {
         name: "sensors at 10 Hz",
@@ -298,7 +318,11 @@ impl Lab for TabletSat {
          show which filter believes itself too much. The paper does not give the orbit, the wheel \
          gains, the sample rates or P₀: the defaults are a 600-km sun-synchronous orbit, sensors at \
          1 Hz with the EKFs predicting at 10 Hz (the rates at which the paper's Q fits), and they are \
-         sliders. Presets: model error, blinded star tracker, long eclipse, no eclipse."
+         sliders. Presets: model error, blinded star tracker, long eclipse, no eclipse, gyro plus \
+         one vector. The 3D view draws the sun, field and nadir from the body, the ghost filter's \
+         unobservable axis when it has one, and the orbit seen from its normal with the Earth's \
+         shadow; the table on the left gives each filter's σ over the last minute and its own \
+         √P beside the paper's Table 3 (click a row to make it the ghost)."
     }
 
     fn params(&self) -> &'static [ParamSpec] {
@@ -350,6 +374,20 @@ impl Lab for TabletSat {
         }
     }
 
+    fn body_shape(&self) -> BodyShape {
+        BodyShape::HexPrism
+    }
+
+    fn accuracy_table(&self) -> Option<AccuracyTable> {
+        Some(AccuracyTable {
+            title: "Accuracy over the last 60 s beside the paper's Table 3",
+            window_s: 60.0,
+            paper: |id| {
+                sets::filter(id).map_or([None, None], |f| [f.paper_att_deg, f.paper_rate_deg_s])
+            },
+        })
+    }
+
     fn default_duration_s(&self) -> f64 {
         600.0
     }
@@ -364,6 +402,58 @@ impl Lab for TabletSat {
 
     fn presets(&self) -> &'static [Preset] {
         PRESETS
+    }
+
+    fn timing_items(&self) -> Vec<TimingItem> {
+        // Every sensor at the prediction rate, so every step carries all twelve rows.
+        let mut p = ParamValues::defaults(PARAMS);
+        for (k, v) in [
+            ("vector_rate_hz", 10.0),
+            ("gyro_rate_hz", 10.0),
+            ("star_rate_hz", 10.0),
+        ] {
+            // The keys and values are this lab's own and in range.
+            let _ = p.set(PARAMS, k, v);
+        }
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let mut run = self.build(&p, &mut rng);
+        let start = run.truth.state();
+        let dt = self.dt_s(&p);
+        let trace = run.measurement_trace(dt, 256, &mut rng);
+        let cfg = MekfConfig {
+            id: "bench",
+            label: "ST+Gyro+Mag+Sun [λ,ω,Δω]",
+            sensors: SensorSet {
+                star: true,
+                gyro: true,
+                mag: true,
+                sun: true,
+            },
+            states: StateSet::AttRateGyroBias,
+            disturbance: false,
+            constant_gain_after_s: None,
+        };
+        let fresh = Mekf::<9>::new(
+            cfg,
+            tuning(&p, [1e-6, 1.2e-6, 1e-8]),
+            start.q_ref_from_body,
+            start.rate_body_rad_s,
+            p0(StateSet::AttRateGyroBias, 0.5f64.to_radians()),
+        );
+        let mut filter = fresh.clone();
+        let mut i = 0;
+        vec![TimingItem {
+            name: "MEKF step: 9 states, 12 rows",
+            flops: Some(full_step_flops(9, 12)),
+            run: Box::new(move || {
+                // The trace repeats: start the filter afresh with it.
+                if i % trace.len() == 0 {
+                    filter = fresh.clone();
+                }
+                filter.step(std::hint::black_box(&trace[i % trace.len()]), dt);
+                i += 1;
+            }),
+        }]
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

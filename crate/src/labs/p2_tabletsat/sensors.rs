@@ -4,7 +4,7 @@
 //! * Sun sensors: five heads (boresights ±x, ±y, +z) of ±45° field of view, 0.1° noise; no
 //!   reading in eclipse or when the sun is outside every head's field.
 //! * Gyro: rate + constant bias + bias random walk + 0.005 °/s white noise, ±250 °/s.
-//! * Star tracker (boresight +z, the zenith in nominal attitude): 0.001°; no reading above
+//! * Star tracker (boresight 45° off zenith toward +y in nominal attitude): 0.001°; no reading above
 //!   2 °/s, with the sun inside its exclusion cone, or with the Earth's limb inside its
 //!   exclusion cone.
 //!
@@ -19,7 +19,8 @@ use crate::dynamics::{
     sun_direction_eci,
 };
 use crate::model::{
-    Measurements, Onboard, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthState,
+    Measurements, Onboard, OrbitPicture, ParamValues, SceneExtras, SceneVector, SensorModel,
+    SeriesGroup, SeriesSpec, TruthState,
 };
 use crate::sensors::{RandomWalk, WhiteNoise};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -110,6 +111,8 @@ pub struct Sensors {
     sun_along_field_rad: Option<f64>,
     /// The last field readings (truth, onboard model), orbital axes (nT).
     fields: (Vector3<f64>, Vector3<f64>),
+    /// What the 3D view shows of the last sample.
+    scene: SceneExtras,
 }
 
 impl Sensors {
@@ -141,6 +144,7 @@ impl Sensors {
             seen: (false, false, false),
             sun_along_field_rad: None,
             fields: (Vector3::repeat(f64::NAN), Vector3::repeat(f64::NAN)),
+            scene: SceneExtras::default(),
         };
         s.mag_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
         s.sun_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
@@ -173,6 +177,47 @@ impl Sensors {
             .field_ecef_nt(&ecef_from_eci(r_eci, jd), self.epoch.date())
             .unwrap_or_else(|| Vector3::repeat(f64::NAN));
         q_eci_from_orbit.inverse_transform_vector(&eci_from_ecef(&b_ecef, jd))
+    }
+}
+
+/// The sun (unless in shadow), the field and the nadir from the body, and the orbit picture.
+fn scene_of(
+    r_eci: &Vector3<f64>,
+    sun_eci: &Vector3<f64>,
+    q_eci_orbit: &UnitQuaternion<f64>,
+    sun_orbit: &Vector3<f64>,
+    field_orbit_nt: &Vector3<f64>,
+    eclipse: bool,
+) -> SceneExtras {
+    let mut vectors = Vec::with_capacity(3);
+    if !eclipse {
+        vectors.push(SceneVector {
+            label: "sun",
+            dir_ref: *sun_orbit,
+            rgb: [255, 210, 60],
+        });
+    }
+    if let Some(b) = field_orbit_nt.try_normalize(1e-9) {
+        vectors.push(SceneVector {
+            label: "field",
+            dir_ref: b,
+            rgb: [90, 200, 255],
+        });
+    }
+    vectors.push(SceneVector {
+        label: "nadir",
+        dir_ref: -Vector3::z(),
+        rgb: [120, 220, 120],
+    });
+    SceneExtras {
+        vectors,
+        orbit: Some(OrbitPicture {
+            position_eci_m: *r_eci,
+            normal_eci: q_eci_orbit * Vector3::y(),
+            sun_eci: *sun_eci,
+            eclipse,
+            earth_radius_m: EARTH_RADIUS_M,
+        }),
     }
 }
 
@@ -298,6 +343,14 @@ impl SensorModel for Sensors {
             m.star_q_ref_from_body = Some(q * UnitQuaternion::from_scaled_axis(err));
         }
         self.seen = (eclipse, sun_seen, star_ok);
+        self.scene = scene_of(
+            &r_eci,
+            &sun_eci,
+            &q_eci_orbit,
+            &sun_orbit,
+            &b_true_orbit,
+            eclipse,
+        );
         m.onboard = Some(Onboard {
             frame_rate_orbit_rad_s: self.orbit.frame_rate_orbit_rad_s(),
             gravity_gradient_coeff: self.orbit.gravity_gradient_coeff(),
@@ -329,6 +382,10 @@ impl SensorModel for Sensors {
             ));
         }
         s
+    }
+
+    fn scene(&self) -> SceneExtras {
+        self.scene.clone()
     }
 
     fn extra_values(&self, out: &mut [f64]) {

@@ -183,6 +183,7 @@ impl TruthModel for Spacecraft {
         TruthState {
             wheel_momentum_body: Some(self.h),
             wheel_torque_body: Some(self.h_dot),
+            control: None,
             ..TruthState::new(self.t_s, self.q, self.w)
         }
     }

@@ -337,6 +337,7 @@ impl P3Truth {
                 angle_rad: None,
                 wheel_momentum_body: None,
                 wheel_torque_body: None,
+                control: None,
             },
         };
         truth.state = truth.compute_state();
@@ -355,6 +356,7 @@ impl P3Truth {
             angle_rad: None,
             wheel_momentum_body: None,
             wheel_torque_body: None,
+            control: None,
         }
     }
 }

@@ -212,6 +212,7 @@ pub fn timing_items() -> Vec<TimingItem> {
     vec![
         TimingItem {
             name: "RK4 step (u, v), eqs. 18–19",
+            flops: None,
             run: Box::new(move || {
                 uv = rk4_step(0.0, black_box(&uv), dt, |_, x| {
                     uv_derivative(x, &black_box(rate))
@@ -220,10 +221,12 @@ pub fn timing_items() -> Vec<TimingItem> {
         },
         TimingItem {
             name: "RK4 step (u, v, z), eq. 21",
+            flops: None,
             run: Box::new(move || wz = step_uvz_rk4(black_box(&wz), |_| black_box(rate), dt)),
         },
         TimingItem {
             name: "RK4 step quaternion (normalised)",
+            flops: None,
             run: Box::new(move || q = step_quaternion_rk4(black_box(&q), |_| black_box(rate), dt)),
         },
     ]

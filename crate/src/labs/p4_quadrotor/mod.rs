@@ -1,0 +1,268 @@
+//! Lab "p4": paper 4 — a Kalman filter for the roll of an asymmetric quadrotor, tuned by
+//! one number γ = det Q / det R (Pham, Shilin, Girnik, Nguyen, Inzhenernyj vestnik Dona
+//! 2025). The paper gives the method, the γ grid and Table 1 but no plant numbers; every
+//! number here that is not the paper's is marked "ours" in the help and the README.
+
+mod mpu6050;
+mod plant;
+mod reproduce;
+
+use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning, roll_keys};
+use crate::model::{
+    Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError, Reproduction,
+    SweepSpec,
+};
+use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
+use plant::{CONTROLLERS, Plant, RIGS};
+use rand_chacha::ChaCha8Rng;
+
+pub use reproduce::{GammaScore, score_gamma, score_gamma_with};
+
+/// The paper-4 lab.
+pub struct QuadrotorRoll;
+
+const PARAMS: &[ParamSpec] = &[
+    ParamSpec::choice("rig", "Rig", RIGS, 0).on_reset().help("The paper's test bench (a lever with one motor, Fig. 3) or a quadrotor's roll axis with four motors (eq. 2), asymmetric or symmetric (eq. 3)."),
+    ParamSpec::real("asymmetry_pct", "Asymmetry a", "%", 0.0, 40.0, 15.0).requires("rig").help("Quadrotor (ours): arms differ by a, thrust gains by a/4, so equal hover thrusts make a roll torque and u₀ ≠ 0."),
+    ParamSpec::real("lever_torque_n_m", "Lever weight torque M_g", "N·m", 0.0, 0.2, 0.05).help("Test bench (ours): the lever's weight about the bearing; holding it needs a constant thrust (u₀ = M_g/J)."),
+    ParamSpec::real("motor_tau_s", "Motor lag T", "s", 0.005, 0.2, 0.04).log().help("1/(1 + T s) on each thrust (Fig. 1)."),
+    ParamSpec::choice("controller", "Controller", CONTROLLERS, 0).help("Fig. 1's nested P–PI, whose rate integral absorbs u₀ so the filter is fed the zero-mean u_v, or a plain PID."),
+    ParamSpec::real("bandwidth_rad_s", "Controller bandwidth ω_c", "rad/s", 1.0, 20.0, 5.0).log().help("Poles at ω_c (ours): the transient time is a few 1/ω_c."),
+    ParamSpec::real("setpoint_deg", "Set-point step", "°", 0.0, 60.0, 20.0).help("A square wave between 0 and this angle."),
+    ParamSpec::real("step_period_s", "Steps every", "s", 1.0, 20.0, 4.0),
+    ParamSpec::real("gust_rad_s2", "Gust / push", "rad/s²", -300.0, 300.0, 0.0).help("An angular-acceleration pulse of 0.1 s."),
+    ParamSpec::real("gust_at_s", "Gust at", "s", 1.0, 60.0, 6.0).requires("gust_rad_s2"),
+    ParamSpec::real("sample_hz", "Sample rate", "Hz", 20.0, 1000.0, 100.0).log().on_reset().help("The Arduino's loop rate (ours: 100 Hz); the filters run at it."),
+    ParamSpec::real("dlpf_hz", "MPU-6050 DLPF bandwidth", "Hz", 5.0, 260.0, 44.0).log().help("The chip's digital low-pass filter: the noise of a sample grows with √bandwidth."),
+    ParamSpec::choice("gyro_range", "Gyro full scale", GYRO_RANGES, 0),
+    ParamSpec::choice("accel_range", "Accelerometer full scale", ACCEL_RANGES, 0),
+    ParamSpec::real("gyro_density_deg_s", "Gyro noise density", "°/s/√Hz", 0.0, 0.05, 0.005).help("Datasheet: 0.005 °/s/√Hz."),
+    ParamSpec::real("accel_density_ug", "Accelerometer noise density", "µg/√Hz", 0.0, 2000.0, 400.0).help("Datasheet: 400 µg/√Hz."),
+    ParamSpec::real("vibration_g", "Propeller vibration at the IMU", "g", 0.0, 1.0, 0.2).help("Ours: the motors shake the accelerometer (RMS per axis); the datasheet noise alone is far smaller. It decides where the best γ lies: 0.2 g puts it at the paper's 2·10⁻³, a quieter rig favours larger γ."),
+    ParamSpec::real("gyro_offset_deg_s", "Gyro zero-rate offset", "°/s", -20.0, 20.0, 0.5).help("Datasheet: up to ±20 °/s before calibration; what is left after a start-up calibration (ours: 0.5)."),
+    ParamSpec::real("imu_offset_m", "IMU distance from the pivot", "m", 0.0, 0.3, 0.1).help("The accelerometer feels rθ̈ and rθ̇² besides gravity, so its angle is wrong during fast motion."),
+    ParamSpec::real(roll_keys::GAMMA, "γ = det Q / det R", "", 1e-8, 10.0, 2e-3).log().help("Small γ trusts the model (smooth, but an offset and a slow transient); large γ trusts the sensors (noisy). Paper's optimum: 2·10⁻³. Q = q·diag(dt³/3, dt) with q set so det Q = γ det R (ours)."),
+    ParamSpec::toggle(roll_keys::INPUT, "Feed u_v to the KF", true).help("The paper's model x⁺ = Ax + Bu with the zero-mean u_v of the P–PI split."),
+    ParamSpec::real(roll_keys::SIGMA_ANGLE, "KF's R: accelerometer-angle σ", "°", 0.01, 5.0, 0.19).log().help("R = diag(σ_θ², σ_ω²), fixed while γ moves; the datasheet values at 44 Hz are 0.19° and 0.04 °/s."),
+    ParamSpec::real(roll_keys::SIGMA_RATE, "KF's R: gyro σ", "°/s", 0.005, 5.0, 0.04).log(),
+    ParamSpec::real(roll_keys::BIAS_WALK, "Bias KF: bias random walk", "°/s/√s", 1e-4, 1.0, 0.01).log().help("Beyond the paper: the [θ, ω, b] filter's bias process noise."),
+    ParamSpec::real(roll_keys::CF_GAIN, "Complementary gain a", "", 0.5, 0.999, 0.98).help("θ ← a(θ + ω dt) + (1 − a)θ_acc (ours: 0.98, τ ≈ 0.5 s at 100 Hz)."),
+];
+
+const FIGURES: &[Figure] = &[
+    Figure::new(
+        "Roll: truth, set-point, accelerometer angle and estimates",
+        &[
+            "truth.angle_deg",
+            "truth.setpoint_deg",
+            "sensors.accel_angle_deg",
+            "kf.angle_deg",
+            "cf.angle_deg",
+            "kf-bias.angle_deg",
+            "kf-u0.angle_deg",
+        ],
+    ),
+    Figure::new(
+        "Roll error of each filter",
+        &[
+            "kf.angle_err_deg",
+            "cf.angle_err_deg",
+            "kf-bias.angle_err_deg",
+            "kf-u0.angle_err_deg",
+        ],
+    ),
+    Figure::new(
+        "Rate error of each filter",
+        &[
+            "kf.rate_err_deg_s",
+            "cf.rate_err_deg_s",
+            "kf-bias.rate_err_deg_s",
+            "kf-u0.rate_err_deg_s",
+        ],
+    ),
+    Figure::new(
+        "Control: u_v, the integral's u₀ and the u₀ hover needs",
+        &[
+            "truth.u_v_rad_s2",
+            "truth.u0_rad_s2",
+            "truth.u0_needed_rad_s2",
+        ],
+    ),
+    Figure::new(
+        "Gyro: reading and truth",
+        &["sensors.gyro_deg_s", "truth.rate_deg_s"],
+    ),
+    Figure::new(
+        "Bias KF (beyond the paper): gyro-bias estimate",
+        &["kf-bias.gyro_bias_deg_s"],
+    ),
+];
+
+const PRESETS: &[Preset] = &[
+    Preset {
+        name: "γ* = 2·10⁻³ (the paper's optimum)",
+        help: "The paper's choice",
+        values: &[(roll_keys::GAMMA, 2e-3)],
+    },
+    Preset {
+        name: "γ = 10⁻⁵: offset, slow",
+        help: "The filter trusts its model: smooth, but behind in the steps and off by the gyro offset",
+        values: &[(roll_keys::GAMMA, 1e-5)],
+    },
+    Preset {
+        name: "γ = 0.2: noisy",
+        help: "The filter trusts the sensors: fast, and it passes their noise",
+        values: &[(roll_keys::GAMMA, 0.2)],
+    },
+    Preset {
+        name: "quadrotor, asymmetric 15 %",
+        help: "Four motors whose arms and thrusts differ: the integral holds u₀ ≠ 0 (Reset)",
+        values: &[("rig", 2.0), ("asymmetry_pct", 15.0)],
+    },
+    Preset {
+        name: "fast motion fools the accelerometer",
+        help: "A fast controller, big steps, the IMU far from the pivot: the accelerometer angle is wrong in every step",
+        values: &[
+            ("bandwidth_rad_s", 12.0),
+            ("setpoint_deg", 40.0),
+            ("imu_offset_m", 0.25),
+        ],
+    },
+    Preset {
+        name: "push at 6 s",
+        help: "A 0.1-s angular-acceleration pulse: the controller recovers, the filters follow",
+        values: &[("gust_rad_s2", 200.0), ("gust_at_s", 6.0)],
+    },
+    Preset {
+        name: "uncalibrated gyro (5 °/s offset)",
+        help: "A large zero-rate offset: the paper's KF drifts off, the bias KF learns it",
+        values: &[("gyro_offset_deg_s", 5.0)],
+    },
+];
+
+const SWEEPS: &[SweepSpec] = &[SweepSpec {
+    title: "γ sweep: RMS of the KF's angle and rate errors (8 s, one step)",
+    key: roll_keys::GAMMA,
+    values: &[
+        1e-7, 1e-6, 1e-5, 1e-4, 5e-4, 2e-3, 5e-3, 0.02, 0.05, 0.2, 1.0,
+    ],
+    duration_s: 8.0,
+    after_s: 0.0,
+    series: &["kf.angle_err_deg", "kf.rate_err_deg_s"],
+}];
+
+/// The filters' settings in `p`.
+fn tuning_of(p: &ParamValues) -> RollTuning {
+    RollTuning {
+        gamma: 2e-3,
+        input_on: true,
+        sigma_angle_rad: 0.0,
+        sigma_rate_rad_s: 0.0,
+        bias_walk: 0.0,
+    }
+    .read(p)
+}
+
+/// The datasheet σ of one sample at `p`'s DLPF: (accelerometer angle °, gyro °/s).
+pub fn datasheet_sigmas(p: &ParamValues) -> (f64, f64) {
+    let bw = p.get("dlpf_hz");
+    (
+        sample_sigma(p.get("accel_density_ug") * 1e-6, bw).to_degrees(),
+        sample_sigma(p.get("gyro_density_deg_s"), bw),
+    )
+}
+
+impl Lab for QuadrotorRoll {
+    fn id(&self) -> &'static str {
+        "p4"
+    }
+
+    fn title(&self) -> &'static str {
+        "Paper 4: quadrotor roll, KF tuned by γ = det Q/det R"
+    }
+
+    fn paper(&self) -> &'static str {
+        "Pham, Shilin, Girnik, Nguyen, Kalman filter synthesis for an asymmetric quadrotor, Inzhenernyj vestnik Dona 2025 No. 10"
+    }
+
+    fn summary(&self) -> &'static str {
+        "A rig rolls about one axis: the paper's test bench (a lever on a bearing with one motor, \
+         Fig. 3) or a quadrotor whose arms and motors differ (eq. 2), so that holding any angle \
+         needs a constant command u₀ ≠ 0. The controller — the nested P–PI of Fig. 1, or a plain \
+         PID — splits its command into the integral's u₀ and a zero-mean u_v. An MPU-6050 (datasheet \
+         noise, zero-rate offset, 16-bit counts, full-scale ranges) measures the rate and, through \
+         atan2 of its accelerometer, an angle that is wrong while the rig moves fast. The paper's \
+         Kalman filter on [θ, ω] is fed u_v and tuned by one number, γ = det Q / det R: small γ \
+         trusts the model (smooth, but an offset and a slow transient), large γ the sensors \
+         (noisy). Beside it a complementary filter (the baseline the paper names) and, beyond the \
+         paper, a KF with a gyro-bias state and one that knows u₀. The paper gives no plant \
+         numbers: the lever (J = 2·10⁻³ kg·m², arm 0.2 m), the quadrotor (J = 0.01 kg·m², arms \
+         0.12 m, hover 2.45 N per motor), the 100-Hz loop, the controller gains, the γ → Q mapping \
+         (Q = q·diag(dt³/3, dt), det Q = γ det R, R from the datasheet) and the 5 % band of the \
+         transient time are ours. The controller acts on the true angle, so every filter sees the \
+         same motion. `attlab reproduce p4` measures Table 1."
+    }
+
+    fn params(&self) -> &'static [ParamSpec] {
+        PARAMS
+    }
+
+    fn dt_s(&self, p: &ParamValues) -> f64 {
+        1.0 / p.get("sample_hz")
+    }
+
+    fn build(&self, p: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
+        let t = tuning_of(p);
+        let mut estimators: Vec<Box<dyn Estimator>> = vec![
+            Box::new(RollKf::<2>::new(
+                "kf",
+                "KF [θ, ω] tuned by γ (the paper)",
+                RollInput::PaperSwitch,
+                t,
+            )),
+            Box::new(ComplementaryRoll::new(p.get(roll_keys::CF_GAIN))),
+            Box::new(RollKf::<3>::new(
+                "kf-bias",
+                "Beyond the paper: KF [θ, ω, b]",
+                RollInput::PaperSwitch,
+                t,
+            )),
+            Box::new(RollKf::<2>::new(
+                "kf-u0",
+                "Beyond the paper: KF fed u_v + u₀",
+                RollInput::WithConstant,
+                t,
+            )),
+        ];
+        estimators.iter_mut().for_each(|e| e.apply_params(p));
+        LabRun {
+            truth: Box::new(Plant::new(p)),
+            sensors: Box::new(Mpu6050::new(p)),
+            estimators,
+        }
+    }
+
+    fn default_duration_s(&self) -> f64 {
+        16.0
+    }
+
+    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+        Ok(reproduce::reproduce()?)
+    }
+
+    fn figures(&self) -> &'static [Figure] {
+        FIGURES
+    }
+
+    fn presets(&self) -> &'static [Preset] {
+        PRESETS
+    }
+
+    fn sweeps(&self) -> &'static [SweepSpec] {
+        SWEEPS
+    }
+
+    fn accepts_imu_log(&self) -> bool {
+        true
+    }
+}

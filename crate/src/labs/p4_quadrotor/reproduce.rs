@@ -1,0 +1,264 @@
+//! `attlab reproduce p4`: Table 1 as measured here beside the paper's — for γ ∈ {0.2, 0.02,
+//! 2·10⁻³, 10⁻⁵} the MSE over θ and ω, the transient time and J = α·MSE + β·t_tr for the
+//! three (α, β) pairs — which γ minimises J for each pair, and the paper's qualitative
+//! finding: small γ biased and slow, large γ noisy.
+//!
+//! Each γ is run over five seeds (the median is reported) for 8 s with the set-point stepping
+//! from 0 to 20° at 4 s (the paper's Fig. 2 spans 0–7 s). MSE = mean of (θ̂ − θ)² + (ω̂ − ω)²
+//! in deg² and (deg/s)²; t_tr = the time from the step until θ̂ stays within 5 % of the step
+//! of the new set-point, θ̂ averaged over ±50 ms (the rest of the run, 4 s, when it never
+//! does).
+
+use super::QuadrotorRoll;
+use crate::analysis::scenario::{Trace, run_trace};
+use crate::analysis::stats;
+use crate::analysis::{AnalysisError, StatsContext};
+use crate::model::{Expectation, Lab, Reproduction, Row, fmt_sig};
+
+/// The paper's γ grid (the exponent of the last one is lost in the OCR; n > 3) and its
+/// Table 1: (MSE, t_tr s).
+const GRID: [(f64, &str, f64, f64); 4] = [
+    (0.2, "0.2", 50333.0, 1.0),
+    (0.02, "0.02", 54366.0, 1.3),
+    (2e-3, "2·10⁻³", 42378.0, 1.0),
+    (1e-5, "10⁻ⁿ (read as 10⁻⁵)", 49137.0, 1.6),
+];
+
+/// The (α, β) pairs of eq. 6 and the paper's J for each γ of the grid.
+const PAIRS: [(f64, f64, [f64; 4]); 3] = [
+    (0.3, 0.7, [15100.0, 16310.0, 12714.0, 14742.0]),
+    (0.7, 0.3, [35233.0, 38056.0, 29664.0, 34396.0]),
+    (0.5, 0.5, [25167.0, 27183.0, 21189.0, 24569.0]),
+];
+
+const SEEDS: u64 = 5;
+const RUN_S: f64 = 8.0;
+const STEP_AT_S: f64 = 4.0;
+const STEP_DEG: f64 = 20.0;
+
+/// One γ's scores, medians over the seeds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GammaScore {
+    /// γ.
+    pub gamma: f64,
+    /// MSE over θ and ω (deg², (deg/s)²).
+    pub mse: f64,
+    /// Transient time (s).
+    pub t_tr_s: f64,
+    /// |Mean θ̂ − θ| over the last second before the step and over the last second of the
+    /// run, averaged (deg): the offset.
+    pub offset_deg: f64,
+    /// Scatter of θ̂ − θ over the same second (deg): the RMS of its sample-to-sample
+    /// differences over √2, the noise without the drift.
+    pub noise_deg: f64,
+}
+
+fn run(gamma: f64, extra: &[&str], seed: u64) -> Result<Trace, AnalysisError> {
+    let g = format!("gamma={gamma}");
+    let step = format!("setpoint_deg={STEP_DEG}");
+    let period = format!("step_period_s={STEP_AT_S}");
+    let mut set = vec![g.as_str(), step.as_str(), period.as_str()];
+    set.extend_from_slice(extra);
+    let lab: &'static dyn Lab = &QuadrotorRoll;
+    run_trace(
+        lab,
+        &set,
+        seed,
+        RUN_S,
+        &[
+            "kf.angle_deg",
+            "kf.angle_err_deg",
+            "kf.rate_err_deg_s",
+            "truth.setpoint_deg",
+        ],
+    )
+}
+
+/// Transient time after the step at [`STEP_AT_S`] (s): until θ̂, averaged over ±50 ms (so
+/// that one noisy sample does not count), stays within 5 % of the step of the set-point.
+fn transient_time(trace: &Trace) -> Result<f64, AnalysisError> {
+    let angle = trace.series("kf.angle_deg")?;
+    let band = 0.05 * STEP_DEG;
+    let half = 5usize;
+    let mut last_out = STEP_AT_S;
+    for (k, t) in trace.t_s().iter().enumerate() {
+        if *t < STEP_AT_S {
+            continue;
+        }
+        let window = &angle[k.saturating_sub(half)..(k + half + 1).min(angle.len())];
+        let mean = stats::mean(window).of("transient window")?;
+        if (mean - STEP_DEG).abs() >= band {
+            last_out = *t;
+        }
+    }
+    let end = trace.t_s().last().copied().unwrap_or(RUN_S);
+    Ok(if last_out >= end - 0.06 {
+        RUN_S - STEP_AT_S
+    } else {
+        last_out - STEP_AT_S
+    })
+}
+
+/// The scores of `gamma`: medians over five seeds.
+pub fn score_gamma(gamma: f64) -> Result<GammaScore, AnalysisError> {
+    score_gamma_with(gamma, &[])
+}
+
+/// The scores of `gamma` with the parameter assignments `extra` (`key=value`).
+pub fn score_gamma_with(gamma: f64, extra: &[&str]) -> Result<GammaScore, AnalysisError> {
+    let (mut mse, mut ttr, mut offset, mut noise) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for seed in 1..=SEEDS {
+        let trace = run(gamma, extra, seed)?;
+        let (ea, er) = (
+            trace.series("kf.angle_err_deg")?,
+            trace.series("kf.rate_err_deg_s")?,
+        );
+        let sq: Vec<f64> = ea.iter().zip(er).map(|(a, r)| a * a + r * r).collect();
+        mse.push(stats::mean(&sq).of("squared errors")?);
+        ttr.push(transient_time(&trace)?);
+        let window = |from: f64, to: f64| -> Vec<f64> {
+            trace
+                .t_s()
+                .iter()
+                .zip(ea)
+                .filter(|(t, _)| (from..to).contains(*t))
+                .map(|(_, e)| *e)
+                .collect()
+        };
+        let still = window(STEP_AT_S - 1.0, STEP_AT_S);
+        let settled = window(RUN_S - 1.0, RUN_S);
+        // The offset: the mean error in the last second before the step and before the end.
+        let before = stats::mean(&still).of("offset window")?;
+        let after = stats::mean(&settled).of("offset window")?;
+        offset.push((before.abs() + after.abs()) / 2.0);
+        // Sample-to-sample scatter (a slow drift of the offset does not count as noise).
+        let steps: Vec<f64> = still
+            .windows(2)
+            .map(|w| (w[1] - w[0]) / std::f64::consts::SQRT_2)
+            .collect();
+        noise.push(stats::rms(&steps).of("noise window")?);
+    }
+    Ok(GammaScore {
+        gamma,
+        mse: stats::median(&mse).of("MSE over seeds")?,
+        t_tr_s: stats::median(&ttr).of("t_tr over seeds")?,
+        offset_deg: stats::median(&offset).of("offset over seeds")?,
+        noise_deg: stats::median(&noise).of("noise over seeds")?,
+    })
+}
+
+/// The reproduction table.
+pub fn reproduce() -> Result<Reproduction, AnalysisError> {
+    let mut rows = Vec::new();
+    let scores: Vec<GammaScore> = GRID
+        .iter()
+        .map(|g| score_gamma(g.0))
+        .collect::<Result<_, _>>()?;
+    for ((_, name, paper_mse, paper_ttr), s) in GRID.iter().zip(&scores) {
+        rows.push(Row::measurement(
+            format!("γ = {name}: MSE over θ and ω"),
+            format!("{paper_mse} (units unstated)"),
+            s.mse,
+            "deg², (deg/s)²",
+        ));
+        rows.push(Row::measurement(
+            format!("γ = {name}: transient time (5 % band)"),
+            format!("{paper_ttr} s"),
+            s.t_tr_s,
+            "s",
+        ));
+    }
+    for (alpha, beta, paper) in PAIRS {
+        let j: Vec<f64> = scores
+            .iter()
+            .map(|s| alpha * s.mse + beta * s.t_tr_s)
+            .collect();
+        for ((_, name, ..), (jv, pv)) in GRID.iter().zip(j.iter().zip(paper)) {
+            rows.push(Row::measurement(
+                format!("J(α = {alpha}, β = {beta}) at γ = {name}"),
+                fmt_sig(pv),
+                *jv,
+                "",
+            ));
+        }
+        let best = j
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(b.1))
+            .map_or(f64::NAN, |(k, _)| GRID[k].0);
+        rows.push(argmin_row(alpha, beta, best));
+    }
+    // Beyond the paper: where the best γ lies depends on how much the propellers shake the
+    // accelerometer, which the paper does not report.
+    for vibration in [0.05, 0.1, 0.2, 0.4] {
+        let v = format!("vibration_g={vibration}");
+        let j: Vec<f64> = GRID
+            .iter()
+            .map(|g| score_gamma_with(g.0, &[&v]).map(|s| 0.5 * s.mse + 0.5 * s.t_tr_s))
+            .collect::<Result<_, _>>()?;
+        let best = j
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.total_cmp(b.1))
+            .map_or(f64::NAN, |(k, _)| GRID[k].0);
+        rows.push(Row::measurement(
+            format!(
+                "beyond the paper: argmin of J(0.5, 0.5) with {vibration} g of propeller vibration"
+            ),
+            "— (the paper gives no vibration)",
+            best,
+            "",
+        ));
+    }
+    // The paper's qualitative finding, around its γ*.
+    let (large, star, small) = (&scores[0], &scores[2], &scores[3]);
+    rows.push(Row::check(
+        "small γ (10⁻⁵) is offset: |mean θ̂ − θ| in the settled seconds",
+        "an offset appears below γ*",
+        small.offset_deg,
+        "deg",
+        Expectation::above(star.offset_deg),
+    ));
+    rows.push(Row::check(
+        "small γ (10⁻⁵) is slow: transient time",
+        "the transient gets longer below γ*",
+        small.t_tr_s,
+        "s",
+        Expectation::above(star.t_tr_s),
+    ));
+    rows.push(Row::check(
+        "large γ (0.2) is noisy: σ of θ̂ − θ at rest",
+        "measurement noise degrades the output above γ*",
+        large.noise_deg,
+        "deg",
+        Expectation::above(star.noise_deg),
+    ));
+    Ok(Reproduction {
+        lab: "p4".into(),
+        rows,
+        notes: [
+            "the paper gives no plant numbers: the test-bench lever (J = 2·10⁻³ kg·m², arm 0.2 m, weight torque 0.05 N·m), the 100-Hz MPU-6050 with its datasheet noise and a 0.5 °/s residual offset, the P–PI gains (ω_c = 5 rad/s), R from the datasheet and Q = q·diag(dt³/3, dt) with det Q = γ det R are this project's",
+            "MSE in deg² + (deg/s)², medians over 5 seeds of 8-s runs with a 20° step at 4 s; the paper's MSE of 4–5·10⁴ is in unstated units (its Fig. 2 axis spans 100–250), so only the ordering can compare",
+            "the paper's J adds MSE ~10⁴ to t_tr ~1 s with weights of similar size, so its J ranks by MSE alone",
+            "the rig's propeller vibration at the IMU (0.2 g RMS here, ours) decides where the best γ lies: the datasheet noise alone favours the largest γ of the grid (see the rows 'beyond the paper')",
+            "t_tr here (3–4 s) is longer than the paper's 1–1.6 s: with 0.2 g of vibration the KF's θ̂ wanders by about its 5 % band of 1°, so it is counted as settled late",
+        ]
+        .map(String::from)
+        .to_vec(),
+    })
+}
+
+/// Which γ of the grid minimises J(α, β), against the paper's 2·10⁻³.
+fn argmin_row(alpha: f64, beta: f64, best: f64) -> Row {
+    Row::check(
+        format!("argmin over the grid of J(α = {alpha}, β = {beta})"),
+        "γ* = 2·10⁻³ for every pair",
+        best,
+        "",
+        Expectation::Near {
+            value: 2e-3,
+            tol: 1e-12,
+        },
+    )
+}

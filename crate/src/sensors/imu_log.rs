@@ -1,0 +1,253 @@
+//! Recorded MPU-6050 logs from an Arduino (paper 4's rig): the usual serial-monitor CSV of
+//! `time, ax, ay, az, gx, gy, gz`, in raw 16-bit counts or in scaled units.
+//!
+//! * The delimiter (comma, semicolon, tab or spaces) is the one under which most lines
+//!   are samples; a line of words before the first sample is the header.
+//! * Lines a sketch prints before the data ("Initializing I2C devices…", "MPU6050
+//!   connection successful") are skipped and reported; so is every later line that is not
+//!   a sample, with its line number and what was wrong. Every good sample is kept.
+//! * Defaults are the chip's power-on ranges (±2 g, ±250 °/s) in counts and `millis()`
+//!   time, so a raw log replays with no flags.
+//!
+//! The roll axis is x: the rate is gx and the accelerometer angle atan2(ay, az).
+
+use super::rate_log::{LogLineError, RateLog, TimeUnit};
+use nalgebra::Vector3;
+
+/// Unit of the accelerometer columns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AccelUnit {
+    /// 16-bit counts of a ±`full_scale_g` range.
+    Counts {
+        /// Full scale (g): 2, 4, 8 or 16.
+        full_scale_g: f64,
+    },
+    /// g.
+    G,
+    /// m/s².
+    MetresPerS2,
+}
+
+/// Unit of the gyro columns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GyroUnit {
+    /// 16-bit counts of a ±`full_scale_deg_s` range.
+    Counts {
+        /// Full scale (°/s): 250, 500, 1000 or 2000.
+        full_scale_deg_s: f64,
+    },
+    /// °/s.
+    DegPerS,
+    /// rad/s.
+    RadPerS,
+}
+
+/// How to read a log's columns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImuScales {
+    /// Time column.
+    pub time: TimeUnit,
+    /// Accelerometer columns.
+    pub accel: AccelUnit,
+    /// Gyro columns.
+    pub gyro: GyroUnit,
+}
+
+impl Default for ImuScales {
+    /// The chip's power-on ranges in counts, Arduino `millis()`.
+    fn default() -> Self {
+        Self {
+            time: TimeUnit::Milliseconds,
+            accel: AccelUnit::Counts { full_scale_g: 2.0 },
+            gyro: GyroUnit::Counts {
+                full_scale_deg_s: 250.0,
+            },
+        }
+    }
+}
+
+impl AccelUnit {
+    /// Every unit with its name, for menus and the CLI.
+    pub const ALL: [(AccelUnit, &'static str); 6] = [
+        (Self::Counts { full_scale_g: 2.0 }, "counts2"),
+        (Self::Counts { full_scale_g: 4.0 }, "counts4"),
+        (Self::Counts { full_scale_g: 8.0 }, "counts8"),
+        (Self::Counts { full_scale_g: 16.0 }, "counts16"),
+        (Self::G, "g"),
+        (Self::MetresPerS2, "mps2"),
+    ];
+
+    /// The unit called `name`.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.iter().find(|(_, n)| *n == name).map(|(u, _)| *u)
+    }
+
+    /// Factor to g.
+    pub fn to_g(self) -> f64 {
+        match self {
+            Self::Counts { full_scale_g } => full_scale_g / 32768.0,
+            Self::G => 1.0,
+            Self::MetresPerS2 => 1.0 / 9.80665,
+        }
+    }
+}
+
+impl GyroUnit {
+    /// Every unit with its name, for menus and the CLI.
+    pub const ALL: [(GyroUnit, &'static str); 6] = [
+        (
+            Self::Counts {
+                full_scale_deg_s: 250.0,
+            },
+            "counts250",
+        ),
+        (
+            Self::Counts {
+                full_scale_deg_s: 500.0,
+            },
+            "counts500",
+        ),
+        (
+            Self::Counts {
+                full_scale_deg_s: 1000.0,
+            },
+            "counts1000",
+        ),
+        (
+            Self::Counts {
+                full_scale_deg_s: 2000.0,
+            },
+            "counts2000",
+        ),
+        (Self::DegPerS, "deg_s"),
+        (Self::RadPerS, "rad_s"),
+    ];
+
+    /// The unit called `name`.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.iter().find(|(_, n)| *n == name).map(|(u, _)| *u)
+    }
+
+    /// Factor to rad/s.
+    pub fn to_rad_s(self) -> f64 {
+        match self {
+            Self::Counts { full_scale_deg_s } => (full_scale_deg_s / 32768.0).to_radians(),
+            Self::DegPerS => 1f64.to_radians(),
+            Self::RadPerS => 1.0,
+        }
+    }
+}
+
+/// Columns of a sample line.
+const COLUMNS: usize = 7;
+
+fn number(s: &str) -> Option<f64> {
+    s.trim().parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+/// The fields of `line` split at `delimiter` (runs of spaces count as one).
+fn fields(line: &str, delimiter: char) -> Vec<&str> {
+    let parts = line.split(delimiter).map(str::trim);
+    if delimiter == ' ' {
+        parts.filter(|f| !f.is_empty()).collect()
+    } else {
+        parts.collect()
+    }
+}
+
+fn is_sample(f: &[&str]) -> bool {
+    f.len() >= COLUMNS && f[..COLUMNS].iter().all(|c| number(c).is_some())
+}
+
+/// Parses an Arduino MPU-6050 log (see the module documentation).
+///
+/// ```
+/// # use attlab::sensors::{parse_imu_log, ImuScales};
+/// let text = "MPU6050 connection successful\nms,ax,ay,az,gx,gy,gz\n0,0,0,16384,131,0,0\n10,0,0,16384,bad,0,0\n20,0,16384,0,0,0,0\n";
+/// let log = parse_imu_log(text, ImuScales::default());
+/// assert_eq!(log.t_s, vec![0.0, 0.02]);
+/// assert!((log.rate_rad_s[0] - 1f64.to_radians()).abs() < 1e-3);
+/// assert_eq!(log.accel_g[1].y, 1.0);
+/// assert_eq!(log.errors.iter().map(|e| e.line).collect::<Vec<_>>(), vec![1, 4]);
+/// ```
+pub fn parse_imu_log(text: &str, scales: ImuScales) -> RateLog {
+    let sample: Vec<&str> = text.lines().take(200).collect();
+    let delimiter = [',', ';', '\t', ' ']
+        .into_iter()
+        .max_by_key(|d| {
+            let n = sample.iter().filter(|l| is_sample(&fields(l, *d))).count();
+            // Prefer the earlier delimiter on a tie.
+            (
+                n,
+                std::cmp::Reverse([',', ';', '\t', ' '].iter().position(|x| x == d)),
+            )
+        })
+        .unwrap_or(',');
+    let time_scale = match scales.time {
+        TimeUnit::Seconds => 1.0,
+        TimeUnit::Milliseconds => 1e-3,
+    };
+    let (ka, kg) = (scales.accel.to_g(), scales.gyro.to_rad_s());
+    let mut log = RateLog::default();
+    let mut header_seen = false;
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let trimmed = raw.trim();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        let f = fields(trimmed, delimiter);
+        let err = |reason: &str| LogLineError {
+            line,
+            text: trimmed.chars().take(80).collect(),
+            reason: reason.to_string(),
+        };
+        if !is_sample(&f) {
+            let words = f.len() >= 2 && f.iter().all(|c| !c.is_empty() && number(c).is_none());
+            if log.t_s.is_empty() && !header_seen && words && f.len() >= COLUMNS {
+                header_seen = true;
+                continue;
+            }
+            log.errors.push(err(if log.t_s.is_empty() && !header_seen {
+                "before the data (a sketch's banner?)"
+            } else if f.len() < COLUMNS {
+                "expected seven columns: time, ax, ay, az, gx, gy, gz"
+            } else {
+                "not a number"
+            }));
+            continue;
+        }
+        let v: Vec<f64> = f[..COLUMNS].iter().filter_map(|c| number(c)).collect();
+        let t = v[0] * time_scale;
+        if log.t_s.last().is_some_and(|last| t <= *last) {
+            log.errors.push(err("time does not increase"));
+            continue;
+        }
+        log.t_s.push(t);
+        log.accel_g.push(Vector3::new(v[1], v[2], v[3]) * ka);
+        log.rate_rad_s.push(v[4] * kg);
+    }
+    log
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scaled_units_and_semicolons_read_too() {
+        let text = "t;ax;ay;az;gx;gy;gz\n0.00;0;0;9.80665;10;0;0\n0.01;0;4.903325;8.4926;10;0;0\n0.02;0;0\n";
+        let scales = ImuScales {
+            time: TimeUnit::Seconds,
+            accel: AccelUnit::MetresPerS2,
+            gyro: GyroUnit::DegPerS,
+        };
+        let log = parse_imu_log(text, scales);
+        assert_eq!(log.t_s, vec![0.0, 0.01]);
+        assert!((log.accel_g[0].z - 1.0).abs() < 1e-12);
+        assert!((log.rate_rad_s[1] - 10f64.to_radians()).abs() < 1e-12);
+        assert_eq!(log.errors.len(), 1);
+        assert_eq!(log.errors[0].line, 4);
+        assert!(log.errors[0].reason.contains("seven columns"));
+    }
+}
