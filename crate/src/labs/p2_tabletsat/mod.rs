@@ -57,9 +57,9 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("star_earth_exclusion_deg", "Star-tracker Earth-limb exclusion", "°", 0.0, 80.0, 20.0),
     // Rates.
     ParamSpec::real("predict_rate_hz", "EKF prediction rate", "Hz", 1.0, 50.0, 10.0).log().integer().on_reset().help("The simulation step; the filters predict (and add Q) at this rate. The paper's Q fits 10 Hz."),
-    ParamSpec::real("vector_rate_hz", "Magnetometer / sun-sensor rate", "Hz", 0.1, 10.0, 1.0).log().on_reset(),
-    ParamSpec::real("gyro_rate_hz", "Gyro rate", "Hz", 0.1, 50.0, 1.0).log().on_reset(),
-    ParamSpec::real("star_rate_hz", "Star-tracker rate", "Hz", 0.1, 10.0, 1.0).log().on_reset(),
+    ParamSpec::real("vector_rate_hz", "Magnetometer / sun-sensor rate", "Hz", 0.1, 10.0, 1.0).log(),
+    ParamSpec::real("gyro_rate_hz", "Gyro rate", "Hz", 0.1, 50.0, 1.0).log(),
+    ParamSpec::real("star_rate_hz", "Star-tracker rate", "Hz", 0.1, 10.0, 1.0).log(),
     // Tuning.
     ParamSpec::real("q_scale", "Q scale (all filters)", "", 0.01, 100.0, 1.0).log().help("Multiplies every filter's q (their own values are the paper's Table 3 where readable)."),
     ParamSpec::real("alpha", "Disturbance filter fading α", "", 0.5, 1.0, 0.999).help("P_d ← P_d/α per second: smaller forgets faster (§3.2)."),
@@ -230,7 +230,7 @@ const PRESETS: &[Preset] = &[
     },
     Preset {
         name: "sensors at 10 Hz",
-        help: "Every sensor at the prediction rate: errors shrink roughly with √rate (Reset)",
+        help: "Every sensor at the prediction rate: errors shrink roughly with √rate",
         values: &[
             ("vector_rate_hz", 10.0),
             ("gyro_rate_hz", 10.0),

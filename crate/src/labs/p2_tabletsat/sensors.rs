@@ -72,10 +72,17 @@ struct Clock {
 
 impl Clock {
     fn new(rate_hz: f64, dt_s: f64) -> Self {
-        Self {
-            every_steps: ((1.0 / (rate_hz * dt_s)).round() as u64).max(1),
+        let mut c = Self {
+            every_steps: 1,
             step: 0,
-        }
+        };
+        c.set_rate(rate_hz, dt_s);
+        c
+    }
+
+    /// A new rate from the next step on (a live slider): the count carries on.
+    fn set_rate(&mut self, rate_hz: f64, dt_s: f64) {
+        self.every_steps = ((1.0 / (rate_hz * dt_s)).round() as u64).max(1);
     }
 
     /// Advances one step; true when a sample is due.
@@ -87,6 +94,7 @@ impl Clock {
 
 /// The sensors and the onboard references.
 pub struct Sensors {
+    dt_s: f64,
     orbit: CircularOrbit,
     epoch: Epoch,
     onboard_model: FieldModel,
@@ -120,6 +128,7 @@ impl Sensors {
     pub fn new(p: &ParamValues, dt_s: f64) -> Self {
         let (orbit, epoch) = orbit_of(p);
         let mut s = Self {
+            dt_s,
             orbit,
             epoch,
             onboard_model: FieldModel::Wmm,
@@ -146,10 +155,7 @@ impl Sensors {
             fields: (Vector3::repeat(f64::NAN), Vector3::repeat(f64::NAN)),
             scene: SceneExtras::default(),
         };
-        s.mag_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
-        s.sun_clock = Clock::new(p.get("vector_rate_hz"), dt_s);
-        s.gyro_clock = Clock::new(p.get("gyro_rate_hz"), dt_s);
-        s.star_clock = Clock::new(p.get("star_rate_hz"), dt_s);
+        s.dt_s = dt_s;
         s.apply_params(p);
         s
     }
@@ -230,6 +236,11 @@ fn noisy_direction(v: &Vector3<f64>, sigma_rad: f64, rng: &mut ChaCha8Rng) -> Ve
 
 impl SensorModel for Sensors {
     fn apply_params(&mut self, p: &ParamValues) {
+        let dt = self.dt_s;
+        self.mag_clock.set_rate(p.get("vector_rate_hz"), dt);
+        self.sun_clock.set_rate(p.get("vector_rate_hz"), dt);
+        self.gyro_clock.set_rate(p.get("gyro_rate_hz"), dt);
+        self.star_clock.set_rate(p.get("star_rate_hz"), dt);
         self.onboard_model = match p.index("onboard_field") {
             0 => FieldModel::Wmm,
             1 => FieldModel::TiltedDipole,
