@@ -127,3 +127,173 @@ fn a_corrupted_log_reports_its_bad_lines_by_number_and_keeps_the_rest() {
     assert_eq!(log.t_s.len(), 997);
     assert!(log.errors[4].to_string().contains("seven columns"));
 }
+
+/// The page's γ sweep (incremental, five seeds) against the same runs made one by one
+/// through `run_trace` and scored, the median taken here.
+#[test]
+fn the_page_gamma_sweep_gives_the_medians_of_runs_made_one_by_one() {
+    use attlab::analysis::sweep::Sweep;
+    use attlab::labs::p4_quadrotor::score_run;
+    let lab = attlab_tests::lab("p4");
+    let spec = lab.sweeps()[0];
+    let base = attlab::model::ParamValues::defaults(lab.params());
+    let sweep = Sweep::new(lab, spec, base.clone(), 1)
+        .with_values(vec![1e-5, 0.2])
+        .run_to_end();
+    assert!(sweep.skipped.is_empty(), "{:?}", sweep.skipped);
+    assert_eq!(sweep.points.len(), 2);
+    for p in &sweep.points {
+        assert_eq!(p.runs, spec.seeds);
+        let mut mse = Vec::new();
+        for seed in 1..=spec.seeds {
+            let g = format!("gamma={}", p.value);
+            let t = trace(
+                "p4",
+                &[&g],
+                seed,
+                spec.duration_s,
+                &["kf.angle_deg", "kf.angle_err_deg", "kf.rate_err_deg_s"],
+            );
+            let cols: Vec<Vec<f64>> = ["kf.angle_deg", "kf.angle_err_deg", "kf.rate_err_deg_s"]
+                .iter()
+                .map(|s| t.series(s).unwrap().to_vec())
+                .collect();
+            let mut params = base.clone();
+            params.set(lab.params(), "gamma", p.value).unwrap();
+            mse.push(score_run(&params, t.t_s(), &cols).unwrap()[0]);
+        }
+        let median = stats::median(&mse).unwrap();
+        assert_eq!(p.scores[0], median, "γ = {}", p.value);
+        let (lo, hi) = (stats::min(&mse).unwrap(), stats::max(&mse).unwrap());
+        assert_eq!(p.score_range[0], [lo, hi]);
+        // J = α·MSE + β·t_tr of the medians, for the paper's pairs in Table 1's order.
+        assert_eq!(p.objectives[0], 0.3 * p.scores[0] + 0.7 * p.scores[1]);
+        assert_eq!(p.objectives[1], 0.7 * p.scores[0] + 0.3 * p.scores[1]);
+    }
+}
+
+/// The Q landscape's grid: setting the two elements to those the γ mapping gives at γ*
+/// reproduces the γ* run exactly, and the grid's points come row by row.
+#[test]
+fn q_set_by_elements_at_the_gamma_mapping_reproduces_the_gamma_run() {
+    use attlab::estimators::RollTuning;
+    let lab = attlab_tests::lab("p4");
+    let params = attlab::model::ParamValues::defaults(lab.params());
+    let tuning = RollTuning {
+        gamma: 0.0,
+        input_on: true,
+        sigma_angle_rad: 0.0,
+        sigma_rate_rad_s: 0.0,
+        bias_walk: 0.0,
+        q_elements: None,
+    }
+    .read(&params);
+    let dt = 1.0 / params.get("sample_hz");
+    let [qa, qr] = tuning.q_block(dt);
+    let deg2 = (180.0 / std::f64::consts::PI).powi(2);
+    let a = format!("kf_q_angle_deg2={}", qa * deg2);
+    let r = format!("kf_q_rate_deg2_s2={}", qr * deg2);
+    let by_gamma = trace("p4", &[], 3, 4.0, &["kf.angle_err_deg"]);
+    let by_elements = trace(
+        "p4",
+        &["kf_q_from=1", &a, &r],
+        3,
+        4.0,
+        &["kf.angle_err_deg"],
+    );
+    let (x, y) = (
+        by_gamma.series("kf.angle_err_deg").unwrap(),
+        by_elements.series("kf.angle_err_deg").unwrap(),
+    );
+    let worst = x
+        .iter()
+        .zip(y)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-9, "largest difference {worst}°");
+    // And a Q far off that mapping gives a different run (the elements are really used).
+    let off = trace(
+        "p4",
+        &["kf_q_from=1", "kf_q_angle_deg2=1e-3", &r],
+        3,
+        4.0,
+        &["kf.angle_err_deg"],
+    );
+    let moved = x
+        .iter()
+        .zip(off.series("kf.angle_err_deg").unwrap())
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(moved > 1e-3, "{moved}");
+}
+
+#[test]
+fn the_q_landscape_fills_its_grid_row_by_row_and_finds_an_interior_optimum() {
+    use attlab::analysis::sweep::Sweep;
+    let lab = attlab_tests::lab("p4");
+    let spec = lab.sweeps()[1];
+    let grid = spec.grid.expect("the landscape is a grid");
+    let base = attlab::model::ParamValues::defaults(lab.params());
+    let sweep = Sweep::new(lab, spec, base, 1).run_to_end();
+    assert!(sweep.skipped.is_empty(), "{:?}", sweep.skipped);
+    assert_eq!(sweep.points.len(), spec.values.len() * grid.values.len());
+    for (k, p) in sweep.points.iter().enumerate() {
+        assert_eq!(p.value, spec.values[k / grid.values.len()]);
+        assert_eq!(p.grid_value, Some(grid.values[k % grid.values.len()]));
+    }
+    let best = sweep.argmin(0).expect("an optimum");
+    let corner = |v: f64, values: &[f64]| v == values[0] || v == values[values.len() - 1];
+    println!(
+        "optimum q_θ = {} deg², q_ω = {:?} (deg/s)², J = {}",
+        best.value, best.grid_value, best.objectives[0]
+    );
+    assert!(
+        !corner(best.value, spec.values) || !corner(best.grid_value.unwrap(), grid.values),
+        "the optimum sits in a corner of the grid: {best:?}"
+    );
+}
+
+#[test]
+fn the_gamma_sweep_runs_on_the_example_log_with_its_own_scores() {
+    use attlab::analysis::sweep::Sweep;
+    use attlab::sensors::{ImuScales, parse_imu_log};
+    let lab = attlab_tests::lab("p4");
+    let spec = lab.sweeps()[0];
+    let log = parse_imu_log(EXAMPLE_LOG, ImuScales::default());
+    let base = attlab::model::ParamValues::defaults(lab.params());
+    let sweep = Sweep::new(lab, spec, base, 1)
+        .on_log(log)
+        .expect("the γ sweep can run on a log")
+        .run_to_end();
+    assert!(sweep.skipped.is_empty(), "{:?}", sweep.skipped);
+    assert_eq!(sweep.points.len(), spec.values.len());
+    for p in &sweep.points {
+        assert_eq!(p.runs, 1, "one run per value on a log");
+        assert!(p.unscored.is_empty(), "{:?}", p.unscored);
+        assert!(p.scores.iter().all(|s| s.is_finite()), "{p:?}");
+    }
+    // Trusting the sensors more passes more of their noise: θ̂'s jitter grows with γ.
+    let jitter: Vec<f64> = sweep.points.iter().map(|p| p.scores[1]).collect();
+    println!("jitter over γ: {jitter:?}");
+    assert!(jitter.windows(2).all(|w| w[1] >= w[0]), "{jitter:?}");
+    assert!(jitter[jitter.len() - 1] > jitter[0], "{jitter:?}");
+    let best = sweep.argmin(0).expect("an argmin");
+    println!(
+        "on the example log the proxy is smallest at γ = {}",
+        best.value
+    );
+}
+
+/// A Sweep that cannot run on a log says so (the p1 sweep has no log scoring).
+#[test]
+fn a_sweep_without_log_scoring_refuses_a_log() {
+    use attlab::analysis::sweep::Sweep;
+    let lab = attlab_tests::lab("p1");
+    let base = attlab::model::ParamValues::defaults(lab.params());
+    let log = attlab::sensors::RateLog::default();
+    assert!(
+        Sweep::new(lab, lab.sweeps()[0], base, 1)
+            .on_log(log)
+            .is_none()
+    );
+}

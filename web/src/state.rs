@@ -279,6 +279,20 @@ impl AppState {
                 if let Some(spec) = self.sim.lab().sweeps().get(i) {
                     let sweep =
                         Sweep::new(self.sim.lab(), *spec, self.sim.params().clone(), self.seed);
+                    // While a log is replayed, a sweep that can run on it does.
+                    let sweep = match self.sim.replay_log() {
+                        Some(log) if spec.log_scoring.is_some() => {
+                            sweep.on_log(log.clone()).unwrap_or_else(|| {
+                                Sweep::new(
+                                    self.sim.lab(),
+                                    *spec,
+                                    self.sim.params().clone(),
+                                    self.seed,
+                                )
+                            })
+                        }
+                        _ => sweep,
+                    };
                     self.sweep = Some((i, sweep));
                 }
             }

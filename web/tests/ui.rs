@@ -95,3 +95,60 @@ fn export_writes_every_sample_of_the_run() {
             .any(|m| !m.is_error && m.text.contains("201 rows"))
     );
 }
+
+/// Paper 4's γ sweep from its button: it runs in slices, then its result is a table with
+/// each objective's argmin, and the Q landscape fills a heat map with its optimum.
+#[test]
+fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
+    let mut h = harness("p4");
+    // Two sweeps offer the button; the first is the γ sweep.
+    h.query_all_by_label("Run sweep")
+        .next()
+        .expect("a sweep button")
+        .scroll_to_me();
+    h.run();
+    h.query_all_by_label("Run sweep")
+        .next()
+        .expect("a sweep button")
+        .click();
+    h.run_steps(2);
+    let (i, _) = h
+        .state()
+        .state
+        .sweep
+        .as_ref()
+        .map(|(i, s)| (*i, s.is_done()))
+        .expect("a sweep started");
+    assert_eq!(i, 0);
+    while !h
+        .state()
+        .state
+        .sweep
+        .as_ref()
+        .is_some_and(|(_, s)| s.is_done())
+    {
+        h.state_mut()
+            .state
+            .advance_sweep(std::time::Duration::from_millis(50));
+    }
+    h.run_steps(4);
+    for pair in [
+        "J(α = 0.3, β = 0.7)",
+        "J(α = 0.7, β = 0.3)",
+        "J(α = 0.5, β = 0.5)",
+    ] {
+        let label = format!("argmin of {pair}: gamma = ");
+        assert!(
+            h.query_all_by_label_contains(&label).next().is_some(),
+            "no '{label}' on the panel"
+        );
+    }
+    let sweep = &h.state().state.sweep.as_ref().unwrap().1;
+    assert_eq!(sweep.points.len(), 11);
+    assert!(
+        sweep
+            .points
+            .iter()
+            .all(|p| p.runs == 5 && p.objectives.iter().all(|j| j.is_finite()))
+    );
+}

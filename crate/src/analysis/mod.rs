@@ -28,6 +28,9 @@ pub enum AnalysisError {
         /// Why not.
         source: stats::StatsError,
     },
+    /// A run of a scenario or sweep that could not be made or scored.
+    #[error("{0}")]
+    Scenario(String),
 }
 
 impl From<AnalysisError> for ReproError {

@@ -1,30 +1,58 @@
 //! Parameter sweeps run a little at a time (so a page can draw a progress bar and stay
-//! responsive): one run per value, the RMS and the largest |value| of chosen series after a
-//! settling time.
+//! responsive): one run per value (or per cell of a two-parameter grid) and seed, the RMS and
+//! the largest |value| of chosen series after a settling time, and the lab's own scores of
+//! each run (medians over the seeds) with the weighted sums it minimises. A sweep can also
+//! run on a recorded log instead of the simulation (one run per value, no truth).
 
-use crate::model::{Lab, ParamValues, SweepSpec};
+use super::stats;
+use crate::model::{Lab, ParamValues, SweepScoring, SweepSpec};
+use crate::sensors::RateLog;
 use crate::sim::{SimOptions, Simulation};
 
-/// Statistics of each series for one value.
+/// Statistics of each series for one value (one cell of a grid).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepPoint {
     /// Parameter value.
     pub value: f64,
-    /// RMS per series, in the order of [`SweepSpec::series`]; NaN when a sample was missing.
+    /// Value of the grid's second parameter, for a grid sweep.
+    pub grid_value: Option<f64>,
+    /// RMS per series over every seed's samples, in the order of [`SweepSpec::series`];
+    /// NaN when a sample was missing.
     pub rms: Vec<f64>,
     /// Largest |value| per series; NaN when a sample was missing.
     pub max_abs: Vec<f64>,
     /// Samples that were NaN, per series (a diverged filter, a missing value).
     pub missing: Vec<usize>,
+    /// The lab's scores, medians over the seeds that could be scored (NaN when none could).
+    pub scores: Vec<f64>,
+    /// Smallest and largest of each score over those seeds.
+    pub score_range: Vec<[f64; 2]>,
+    /// The scoring's weighted sums of the median scores.
+    pub objectives: Vec<f64>,
+    /// Seeds run for this point.
+    pub runs: u64,
+    /// Why runs could not be scored.
+    pub unscored: Vec<String>,
 }
 
 struct Running {
     sim: Simulation,
     cols: Vec<usize>,
+    score_cols: Vec<Option<usize>>,
+    t_s: Vec<f64>,
+    recorded: Vec<Vec<f64>>,
+}
+
+/// What the runs of the current point have gathered so far.
+#[derive(Default)]
+struct Gathered {
     sum_sq: Vec<f64>,
     max_abs: Vec<f64>,
     missing: Vec<usize>,
     n: usize,
+    per_seed: Vec<Vec<f64>>,
+    unscored: Vec<String>,
+    runs: u64,
 }
 
 /// A sweep in progress.
@@ -33,25 +61,52 @@ pub struct Sweep {
     spec: SweepSpec,
     base: ParamValues,
     seed: u64,
+    values: Vec<f64>,
+    log: Option<RateLog>,
+    next_run: usize,
     current: Option<Running>,
-    /// Finished points.
+    gathered: Gathered,
+    /// Finished points, in the order of the values (grid: row by row).
     pub points: Vec<SweepPoint>,
     /// Values that could not be run, with the reason.
     pub skipped: Vec<String>,
 }
 
 impl Sweep {
-    /// A sweep of `spec` over `lab` from the parameters `base`.
+    /// A sweep of `spec` over `lab` from the parameters `base`, the first run with `seed`.
     pub fn new(lab: &'static dyn Lab, spec: SweepSpec, base: ParamValues, seed: u64) -> Self {
         Self {
             lab,
             spec,
             base,
             seed,
+            values: spec.values.to_vec(),
+            log: None,
+            next_run: 0,
             current: None,
+            gathered: Gathered::default(),
             points: Vec::new(),
             skipped: Vec::new(),
         }
+    }
+
+    /// The same sweep over other values of its parameter.
+    pub fn with_values(mut self, values: Vec<f64>) -> Self {
+        self.values = values;
+        self
+    }
+
+    /// The sweep runs the lab's estimators on `log` (one run per value, to its end) and
+    /// scores with the spec's log scoring; `None` when the spec has none.
+    pub fn on_log(mut self, log: RateLog) -> Option<Self> {
+        self.spec.log_scoring?;
+        self.log = Some(log);
+        Some(self)
+    }
+
+    /// True when the sweep runs on a recorded log.
+    pub fn is_on_log(&self) -> bool {
+        self.log.is_some()
     }
 
     /// The sweep's specification.
@@ -59,9 +114,63 @@ impl Sweep {
         &self.spec
     }
 
+    /// The scoring that applies: the log's on a log, else the simulation's.
+    pub fn scoring(&self) -> Option<&'static SweepScoring> {
+        if self.log.is_some() {
+            self.spec.log_scoring
+        } else {
+            self.spec.scoring
+        }
+    }
+
+    /// The values of the first parameter.
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
+    fn seeds(&self) -> usize {
+        if self.log.is_some() {
+            1
+        } else {
+            self.spec.seeds.max(1) as usize
+        }
+    }
+
+    fn grid_len(&self) -> usize {
+        self.spec.grid.map_or(1, |g| g.values.len().max(1))
+    }
+
+    fn total_runs(&self) -> usize {
+        self.values.len() * self.grid_len() * self.seeds()
+    }
+
+    fn duration_s(&self) -> f64 {
+        match &self.log {
+            Some(log) => match (log.t_s.first(), log.t_s.last()) {
+                (Some(a), Some(b)) => b - a,
+                _ => 0.0,
+            },
+            None => self.spec.duration_s,
+        }
+    }
+
+    /// The (value, grid value) of point `k`.
+    fn point_values(&self, k: usize) -> Option<(f64, Option<f64>)> {
+        let g = self.grid_len();
+        let value = *self.values.get(k / g)?;
+        let grid = self.spec.grid.and_then(|a| a.values.get(k % g).copied());
+        Some((value, grid))
+    }
+
     /// Runs at most `max_steps` simulation steps; returns true when the sweep is complete.
     pub fn advance(&mut self, max_steps: usize) -> bool {
         let mut budget = max_steps;
+        let end = self.duration_s();
+        let after = if self.log.is_some() {
+            0.0
+        } else {
+            self.spec.after_s
+        };
         while budget > 0 {
             if self.current.is_none() && !self.start_next() {
                 return true;
@@ -69,104 +178,220 @@ impl Sweep {
             let Some(r) = self.current.as_mut() else {
                 return true;
             };
-            while budget > 0 && r.sim.t_s() < self.spec.duration_s {
+            let stop = end - 1e-9 * r.sim.dt_s();
+            let g = &mut self.gathered;
+            while budget > 0 && r.sim.t_s() < stop {
                 r.sim.step();
                 budget -= 1;
-                if r.sim.t_s() > self.spec.after_s {
-                    r.n += 1;
-                    let row = r.sim.last_row();
+                let row = r.sim.last_row();
+                if !r.score_cols.is_empty() {
+                    r.t_s.push(r.sim.t_s());
+                    for (c, col) in r.score_cols.iter().zip(&mut r.recorded) {
+                        col.push(c.map_or(f64::NAN, |c| row[c]));
+                    }
+                }
+                if r.sim.t_s() > after {
+                    g.n += 1;
                     for (k, c) in r.cols.iter().enumerate() {
                         let v = row[*c];
                         if v.is_nan() {
-                            r.missing[k] += 1;
+                            g.missing[k] += 1;
                         } else {
-                            r.sum_sq[k] += v * v;
-                            r.max_abs[k] = r.max_abs[k].max(v.abs());
+                            g.sum_sq[k] += v * v;
+                            g.max_abs[k] = g.max_abs[k].max(v.abs());
                         }
                     }
                 }
             }
-            if r.sim.t_s() >= self.spec.duration_s {
-                let n = r.n.max(1) as f64;
-                let value = r.sim.params().get(self.spec.key);
-                let point = SweepPoint {
-                    value,
-                    rms: r
-                        .sum_sq
-                        .iter()
-                        .zip(&r.missing)
-                        .map(|(s, m)| if *m > 0 { f64::NAN } else { (s / n).sqrt() })
-                        .collect(),
-                    max_abs: r
-                        .max_abs
-                        .iter()
-                        .zip(&r.missing)
-                        .map(|(x, m)| if *m > 0 { f64::NAN } else { *x })
-                        .collect(),
-                    missing: r.missing.clone(),
-                };
-                self.points.push(point);
-                self.current = None;
+            if r.sim.t_s() >= stop {
+                self.finish_run();
             }
         }
         self.is_done()
     }
 
+    /// Scores the run that just ended and, after its point's last seed, closes the point.
+    fn finish_run(&mut self) {
+        let Some(r) = self.current.take() else {
+            return;
+        };
+        let scoring = self.scoring();
+        let g = &mut self.gathered;
+        g.runs += 1;
+        if let Some(sc) = scoring {
+            match (sc.score)(r.sim.params(), &r.t_s, &r.recorded) {
+                Ok(s) if s.len() == sc.names.len() => g.per_seed.push(s),
+                Ok(s) => g.unscored.push(format!(
+                    "the scoring gave {} numbers for {} scores",
+                    s.len(),
+                    sc.names.len()
+                )),
+                Err(e) => g.unscored.push(format!("seed {}: {e}", r.sim.seed())),
+            }
+        }
+        self.next_run += 1;
+        if self.next_run.is_multiple_of(self.seeds()) {
+            self.close_point(self.next_run / self.seeds() - 1);
+        }
+    }
+
+    fn close_point(&mut self, k: usize) {
+        let Some((value, grid_value)) = self.point_values(k) else {
+            return;
+        };
+        let g = std::mem::take(&mut self.gathered);
+        let n = g.n.max(1) as f64;
+        let names = self.scoring().map_or(0, |s| s.names.len());
+        let column = |i: usize| -> Vec<f64> {
+            let mut v: Vec<f64> = g.per_seed.iter().map(|s| s[i]).collect();
+            v.sort_by(f64::total_cmp);
+            v
+        };
+        // A NaN score (or none) makes the point's score NaN: nothing is dropped.
+        let scores: Vec<f64> = (0..names)
+            .map(|i| stats::median(&column(i)).unwrap_or(f64::NAN))
+            .collect();
+        let score_range = (0..names)
+            .map(|i| {
+                let c = column(i);
+                match (c.first(), c.last()) {
+                    (Some(a), Some(b)) => [*a, *b],
+                    _ => [f64::NAN, f64::NAN],
+                }
+            })
+            .collect();
+        let objectives = self.scoring().map_or_else(Vec::new, |sc| {
+            sc.objectives
+                .iter()
+                .map(|(_, w)| w.iter().zip(&scores).map(|(w, s)| w * s).sum())
+                .collect()
+        });
+        self.points.push(SweepPoint {
+            value,
+            grid_value,
+            rms: g
+                .sum_sq
+                .iter()
+                .zip(&g.missing)
+                .map(|(s, m)| if *m > 0 { f64::NAN } else { (s / n).sqrt() })
+                .collect(),
+            max_abs: g
+                .max_abs
+                .iter()
+                .zip(&g.missing)
+                .map(|(x, m)| if *m > 0 { f64::NAN } else { *x })
+                .collect(),
+            missing: g.missing.clone(),
+            scores,
+            score_range,
+            objectives,
+            runs: g.runs,
+            unscored: g.unscored,
+        });
+    }
+
     fn start_next(&mut self) -> bool {
-        while let Some(&value) = self.spec.values.get(self.points.len() + self.skipped.len()) {
-            let mut p = self.base.clone();
-            let started = p
-                .set(self.lab.params(), self.spec.key, value)
-                .map_err(|e| e.to_string())
-                .and_then(|()| {
-                    Simulation::with_options(
-                        self.lab,
-                        p,
-                        self.seed,
-                        SimOptions::named(self.spec.series),
-                    )
-                    .map_err(|e| e.to_string())
-                });
-            match started {
-                Ok(sim) => {
-                    let cols = self
-                        .spec
-                        .series
-                        .iter()
-                        .filter_map(|s| sim.series_index(s).ok())
-                        .collect();
-                    let k = self.spec.series.len();
-                    self.current = Some(Running {
-                        sim,
-                        cols,
-                        sum_sq: vec![0.0; k],
-                        max_abs: vec![0.0; k],
-                        missing: vec![0; k],
-                        n: 0,
-                    });
+        let seeds = self.seeds();
+        while self.next_run < self.total_runs() {
+            let point = self.next_run / seeds;
+            let Some((value, grid_value)) = self.point_values(point) else {
+                return false;
+            };
+            let seed = self.seed + (self.next_run % seeds) as u64;
+            match self.start_run(value, grid_value, seed) {
+                Ok(running) => {
+                    if self.next_run.is_multiple_of(seeds) {
+                        let k = self.spec.series.len();
+                        self.gathered = Gathered {
+                            sum_sq: vec![0.0; k],
+                            max_abs: vec![0.0; k],
+                            missing: vec![0; k],
+                            ..Gathered::default()
+                        };
+                    }
+                    self.current = Some(running);
                     return true;
                 }
-                Err(e) => self
-                    .skipped
-                    .push(format!("{} = {value}: {e}", self.spec.key)),
+                Err(e) => {
+                    let grid = match (self.spec.grid, grid_value) {
+                        (Some(a), Some(v)) => format!(", {} = {v}", a.key),
+                        _ => String::new(),
+                    };
+                    self.skipped
+                        .push(format!("{} = {value}{grid}: {e}", self.spec.key));
+                    // The whole point is skipped: on to the next point's first seed.
+                    self.next_run = (point + 1) * seeds;
+                    self.gathered = Gathered::default();
+                }
             }
         }
         false
     }
 
+    fn start_run(&self, value: f64, grid_value: Option<f64>, seed: u64) -> Result<Running, String> {
+        let specs = self.lab.params();
+        let mut p = self.base.clone();
+        for (key, v) in self.spec.fixed {
+            p.set(specs, key, *v).map_err(|e| e.to_string())?;
+        }
+        p.set(specs, self.spec.key, value)
+            .map_err(|e| e.to_string())?;
+        if let (Some(axis), Some(v)) = (self.spec.grid, grid_value) {
+            p.set(specs, axis.key, v).map_err(|e| e.to_string())?;
+        }
+        let score_series: &[&str] = self.scoring().map_or(&[], |s| s.series);
+        let mut names: Vec<&str> = self.spec.series.to_vec();
+        names.extend(
+            score_series
+                .iter()
+                .filter(|s| !self.spec.series.contains(s)),
+        );
+        let sim = match &self.log {
+            Some(log) => Simulation::replay(self.lab, p, log.clone(), SimOptions::named(&names))?,
+            None => Simulation::with_options(self.lab, p, seed, SimOptions::named(&names))
+                .map_err(|e| e.to_string())?,
+        };
+        let cols = self
+            .spec
+            .series
+            .iter()
+            .filter_map(|s| sim.series_index(s).ok())
+            .collect();
+        let score_cols: Vec<Option<usize>> = score_series
+            .iter()
+            .map(|s| sim.series_index(s).ok())
+            .collect();
+        let row = sim.last_row();
+        let recorded = score_cols
+            .iter()
+            .map(|c| vec![c.map_or(f64::NAN, |c| row[c])])
+            .collect();
+        Ok(Running {
+            t_s: if score_cols.is_empty() {
+                Vec::new()
+            } else {
+                vec![sim.t_s()]
+            },
+            sim,
+            cols,
+            score_cols,
+            recorded,
+        })
+    }
+
     /// All values done.
     pub fn is_done(&self) -> bool {
-        self.current.is_none() && self.points.len() + self.skipped.len() >= self.spec.values.len()
+        self.current.is_none() && self.next_run >= self.total_runs()
     }
 
     /// Fraction done, 0…1.
     pub fn progress(&self) -> f64 {
+        let end = self.duration_s();
         let per_run = self
             .current
             .as_ref()
-            .map_or(0.0, |r| (r.sim.t_s() / self.spec.duration_s).min(1.0));
-        ((self.points.len() + self.skipped.len()) as f64 + per_run)
-            / self.spec.values.len().max(1) as f64
+            .map_or(0.0, |r| (r.sim.t_s() / end.max(1e-9)).min(1.0));
+        (self.next_run as f64 + per_run) / self.total_runs().max(1) as f64
     }
 
     /// The value with the smallest RMS of series `index`, with that RMS; values whose run
@@ -177,5 +402,19 @@ impl Sweep {
             .filter_map(|p| p.rms.get(index).map(|r| (p.value, *r)))
             .filter(|(_, r)| r.is_finite())
             .min_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
+    /// The point with the smallest objective `index` (a finite one), if any.
+    pub fn argmin(&self, index: usize) -> Option<&SweepPoint> {
+        self.points
+            .iter()
+            .filter(|p| p.objectives.get(index).is_some_and(|j| j.is_finite()))
+            .min_by(|a, b| a.objectives[index].total_cmp(&b.objectives[index]))
+    }
+
+    /// Runs the sweep to its end.
+    pub fn run_to_end(mut self) -> Self {
+        while !self.advance(100_000) {}
+        self
     }
 }

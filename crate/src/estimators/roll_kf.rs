@@ -11,6 +11,8 @@
 //!   sensor's datasheet noise stays fixed, Q = q·diag(dt³/3, dt) (a white angular
 //!   acceleration of density q), and q is the value with det Q = γ·det R:
 //!   q = √(3γ det R)/dt². The bias state, when there is one, adds q_b·dt outside that block.
+//! * Beyond the paper, for the Q landscape: Q = diag(q_θ, q_ω) set element by element, so a
+//!   sweep can walk across lines of constant γ.
 
 use super::kf::{KalmanState, LinearObservation};
 use crate::model::{
@@ -33,6 +35,12 @@ pub mod keys {
     pub const BIAS_WALK: &str = "kf_bias_walk";
     /// Complementary-filter gain a.
     pub const CF_GAIN: &str = "cf_gain";
+    /// Where Q comes from: 0 = γ (the paper), 1 = two elements.
+    pub const Q_FROM: &str = "kf_q_from";
+    /// Q's angle element per step (deg²), when Q is set element by element.
+    pub const Q_ANGLE: &str = "kf_q_angle_deg2";
+    /// Q's rate element per step ((deg/s)²), when Q is set element by element.
+    pub const Q_RATE: &str = "kf_q_rate_deg2_s2";
 }
 
 /// What the filter is fed as the model input.
@@ -58,6 +66,8 @@ pub struct RollTuning {
     pub sigma_rate_rad_s: f64,
     /// Bias random-walk density (rad/s/√s).
     pub bias_walk: f64,
+    /// Q = diag(q_θ rad², q_ω (rad/s)²) per step, set element by element instead of by γ.
+    pub q_elements: Option<[f64; 2]>,
 }
 
 impl RollTuning {
@@ -78,7 +88,29 @@ impl RollTuning {
         if let Ok(v) = p.try_get(keys::BIAS_WALK) {
             self.bias_walk = v.to_radians();
         }
+        if let Ok(from) = p.try_get(keys::Q_FROM) {
+            let deg2 = std::f64::consts::PI.powi(2) / 180f64.powi(2);
+            self.q_elements = match (
+                from >= 0.5,
+                p.try_get(keys::Q_ANGLE),
+                p.try_get(keys::Q_RATE),
+            ) {
+                (true, Ok(a), Ok(r)) => Some([a * deg2, r * deg2]),
+                _ => None,
+            };
+        }
         self
+    }
+
+    /// The [θ, ω] block of Q for a step of `dt_s`: by γ, or element by element.
+    pub fn q_block(&self, dt_s: f64) -> [f64; 2] {
+        match self.q_elements {
+            Some(q) => q,
+            None => {
+                let q = self.q_density(dt_s);
+                [q * dt_s.powi(3) / 3.0, q * dt_s]
+            }
+        }
     }
 
     /// q of Q = q·diag(dt³/3, dt) with det Q = γ det R.
@@ -182,10 +214,10 @@ impl<const N: usize> Estimator for RollKf<N> {
         let mut x = phi * self.kf.x;
         x[0] += dt_s * dt_s / 2.0 * u;
         x[1] += dt_s * u;
-        let q = self.tuning.q_density(dt_s);
+        let q = self.tuning.q_block(dt_s);
         let qm = SMatrix::<f64, N, N>::from_fn(|i, j| match (i, j) {
-            (0, 0) => q * dt_s.powi(3) / 3.0,
-            (1, 1) => q * dt_s,
+            (0, 0) => q[0],
+            (1, 1) => q[1],
             (2, 2) => self.tuning.bias_walk.powi(2) * dt_s,
             _ => 0.0,
         });
@@ -323,6 +355,7 @@ mod tests {
             sigma_angle_rad: 0.2f64.to_radians(),
             sigma_rate_rad_s: 0.05f64.to_radians(),
             bias_walk: 0.0,
+            q_elements: None,
         }
     }
 

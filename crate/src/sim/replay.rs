@@ -1,7 +1,9 @@
 //! Replaying a recorded gyro log (paper 1's laboratory mode) or IMU log (paper 4's rig)
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
-use crate::model::{Measurements, ParamValues, SensorModel, TruthModel, TruthState};
+use crate::model::{
+    Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthModel, TruthState,
+};
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
@@ -58,15 +60,23 @@ impl TruthModel for LogTruth {
 }
 
 /// Delivers each logged sample once, at the first step at or after its time.
+///
+/// Its own series are what was logged: the gyro rate and, for an IMU log, the roll the
+/// accelerometer gives, atan2(a_y, a_z) (the latest sample delivered).
 pub struct LogSensor {
     log: Arc<RateLog>,
     next: usize,
+    last: Option<usize>,
 }
 
 impl LogSensor {
     /// Starts before the log's first sample.
     pub fn new(log: Arc<RateLog>) -> Self {
-        Self { log, next: 0 }
+        Self {
+            log,
+            next: 0,
+            last: None,
+        }
     }
 }
 
@@ -80,11 +90,43 @@ impl SensorModel for LogSensor {
             latest = Some(self.next);
             self.next += 1;
         }
+        if latest.is_some() {
+            self.last = latest;
+        }
         Measurements {
             t_s: truth.t_s,
             gyro_axis_rad_s: latest.map(|k| self.log.rate_rad_s[k]),
             accel_body_g: latest.and_then(|k| self.log.accel_g.get(k).copied()),
             ..Default::default()
+        }
+    }
+
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        let mut s = vec![SeriesSpec::new(
+            "sensors.gyro_deg_s",
+            "deg/s",
+            SeriesGroup::Rate,
+        )];
+        if !self.log.accel_g.is_empty() {
+            s.push(SeriesSpec::new(
+                "sensors.accel_angle_deg",
+                "deg",
+                SeriesGroup::Attitude,
+            ));
+        }
+        s
+    }
+
+    fn extra_values(&self, out: &mut [f64]) {
+        let k = self.last;
+        let rate = k.and_then(|k| self.log.rate_rad_s.get(k));
+        if let Some(slot) = out.get_mut(0) {
+            *slot = rate.map_or(f64::NAN, |w| w.to_degrees());
+        }
+        if let Some(slot) = out.get_mut(1) {
+            *slot = k
+                .and_then(|k| self.log.accel_g.get(k))
+                .map_or(f64::NAN, |a| a.y.atan2(a.z).to_degrees());
         }
     }
 }

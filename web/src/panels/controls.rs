@@ -21,7 +21,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 parameters(ui, app, commands);
                 ui.separator();
                 super::lab_tools::accuracy(ui, app, commands);
-                super::lab_tools::sweeps(ui, app, commands);
+                super::sweeps::sweeps(ui, app, commands);
                 super::lab_tools::laboratory_mode(ui, app, commands);
                 outputs(ui, app, commands);
                 messages(ui, app, commands);

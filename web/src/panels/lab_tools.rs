@@ -1,6 +1,6 @@
-//! Lab tools shown only for labs that offer them: parameter sweeps (with a progress bar,
-//! computed a slice per frame), the live accuracy table, the lab's diagrams and the
-//! laboratory mode that replays a recorded gyro log.
+//! Lab tools shown only for labs that offer them: the live accuracy table, the lab's
+//! diagrams and the laboratory mode that replays a recorded gyro or IMU log (the sweeps have
+//! their own file).
 
 use crate::render::plots::source_color;
 use crate::state::{AppState, Command};
@@ -56,58 +56,6 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             });
         });
     });
-}
-
-/// The lab's sweeps: run/cancel, progress, and RMS against the swept value (log axis).
-pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    for (i, spec) in app.sim.lab().sweeps().iter().enumerate() {
-        egui::CollapsingHeader::new(format!("Sweep: {}", spec.title)).default_open(true).show(ui, |ui| {
-            let running = app.sweep.as_ref().filter(|(j, _)| *j == i).map(|(_, s)| s);
-            match running {
-                Some(s) if !s.is_done() => {
-                    ui.add(egui::ProgressBar::new(s.progress() as f32).show_percentage());
-                    if ui.button("Cancel").clicked() {
-                        commands.push(Command::CancelSweep);
-                    }
-                }
-                _ => {
-                    if ui.button("Run sweep").on_hover_text("One run per value with the current parameters; the page stays live").clicked() {
-                        commands.push(Command::RunSweep(i));
-                    }
-                }
-            }
-            let Some(s) = running else { return };
-            for (k, series) in spec.series.iter().enumerate() {
-                if let Some((value, rms)) = s.best(k) {
-                    ui.label(format!("best for {series}: {} = {value} ({rms:.4} rms)", spec.key));
-                }
-            }
-            for p in s.points.iter().filter(|p| p.missing.iter().any(|m| *m > 0)) {
-                ui.colored_label(egui::Color32::LIGHT_RED, format!("{} = {}: a filter diverged (missing samples)", spec.key, p.value));
-            }
-            for reason in &s.skipped {
-                ui.colored_label(egui::Color32::LIGHT_RED, format!("skipped {reason}"));
-            }
-            Plot::new(("sweep", i))
-                .height(170.0)
-                .legend(Legend::default().text_style(egui::TextStyle::Small))
-                .x_axis_label(format!("log10 {}", spec.key))
-                .y_axis_label("log10 max |value|")
-                .show(ui, |plot| {
-                    for (k, series) in spec.series.iter().enumerate() {
-                        let pts: Vec<[f64; 2]> = s
-                            .points
-                            .iter()
-                            .filter(|p| p.value > 0.0 && p.max_abs[k] > 0.0)
-                            .map(|p| [p.value.log10(), p.max_abs[k].log10()])
-                            .collect();
-                        let color = source_color(k + 1);
-                        plot.line(Line::new(*series, pts.clone()).color(color));
-                        plot.points(Points::new(*series, pts).radius(3.0).color(color));
-                    }
-                });
-        });
-    }
 }
 
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit

@@ -5,6 +5,7 @@
 mod central;
 mod controls;
 mod lab_tools;
+mod sweeps;
 
 pub use central::central;
 pub use controls::controls;

@@ -296,19 +296,19 @@ impl Lab for SuspendedMockup {
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
-        &[SweepSpec {
-            title: "Adaptation window N (angle error, 200 s each)",
-            key: "kf_window",
-            values: &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],
-            duration_s: 200.0,
-            after_s: 0.0,
-            series: &[
+        const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
+            "Adaptation window N (angle error, 200 s each)",
+            "kf_window",
+            &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],
+            200.0,
+            &[
                 "kf-rotation.angle_minus_int_deg",
                 "kf-torsion.angle_minus_int_deg",
                 "kf-rotation.angle_err_deg",
                 "kf-torsion.angle_err_deg",
             ],
-        }]
+        )];
+        SWEEPS
     }
 
     fn accepts_rate_log(&self) -> bool {

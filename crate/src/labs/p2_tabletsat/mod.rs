@@ -457,13 +457,14 @@ impl Lab for TabletSat {
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
-        &[SweepSpec {
-            title: "Tune Q under the unmodelled torque (attitude error, 200 s each)",
-            key: "q_scale",
-            values: &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
-            duration_s: 200.0,
-            after_s: 140.0,
-            series: &["st-gyro.err_deg", "mag-sun-gyro.err_deg", "mag-sun.err_deg"],
-        }]
+        const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
+            "Tune Q under the unmodelled torque (attitude error, 200 s each)",
+            "q_scale",
+            &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
+            200.0,
+            &["st-gyro.err_deg", "mag-sun-gyro.err_deg", "mag-sun.err_deg"],
+        )
+        .after(140.0)];
+        SWEEPS
     }
 }

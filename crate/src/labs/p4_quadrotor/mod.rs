@@ -6,6 +6,7 @@
 mod mpu6050;
 mod plant;
 mod reproduce;
+mod tuning;
 
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning, roll_keys};
 use crate::model::{
@@ -17,6 +18,7 @@ use plant::{CONTROLLERS, Plant, RIGS};
 use rand_chacha::ChaCha8Rng;
 
 pub use reproduce::{GammaScore, score_gamma, score_gamma_with};
+pub use tuning::{PAIRS, SCORE_NAMES, score_run};
 
 /// The paper-4 lab.
 pub struct QuadrotorRoll;
@@ -42,12 +44,17 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("gyro_offset_deg_s", "Gyro zero-rate offset", "°/s", -20.0, 20.0, 0.5).help("Datasheet: up to ±20 °/s before calibration; what is left after a start-up calibration (ours: 0.5)."),
     ParamSpec::real("imu_offset_m", "IMU distance from the pivot", "m", 0.0, 0.3, 0.1).help("The accelerometer feels rθ̈ and rθ̇² besides gravity, so its angle is wrong during fast motion."),
     ParamSpec::real(roll_keys::GAMMA, "γ = det Q / det R", "", 1e-8, 10.0, 2e-3).log().help("Small γ trusts the model (smooth, but an offset and a slow transient); large γ trusts the sensors (noisy). Paper's optimum: 2·10⁻³. Q = q·diag(dt³/3, dt) with q set so det Q = γ det R (ours)."),
+    ParamSpec::choice(roll_keys::Q_FROM, "KF's Q from", Q_FROM, 0).help("γ (the paper, with this project's mapping) or two elements set by hand (beyond the paper: the Q landscape sweep walks across lines of constant γ)."),
+    ParamSpec::real(roll_keys::Q_ANGLE, "Q angle element q_θ", "deg²", 1e-10, 1e-2, 2e-6).log().requires(roll_keys::Q_FROM).help("Per step; γ* with the γ mapping is q_θ ≈ 2·10⁻⁶ deg²."),
+    ParamSpec::real(roll_keys::Q_RATE, "Q rate element q_ω", "(deg/s)²", 1e-6, 100.0, 0.06).log().requires(roll_keys::Q_FROM).help("Per step; γ* with the γ mapping is q_ω ≈ 0.06 (deg/s)²."),
     ParamSpec::toggle(roll_keys::INPUT, "Feed u_v to the KF", true).help("The paper's model x⁺ = Ax + Bu with the zero-mean u_v of the P–PI split."),
     ParamSpec::real(roll_keys::SIGMA_ANGLE, "KF's R: accelerometer-angle σ", "°", 0.01, 5.0, 0.19).log().help("R = diag(σ_θ², σ_ω²), fixed while γ moves; the datasheet values at 44 Hz are 0.19° and 0.04 °/s."),
     ParamSpec::real(roll_keys::SIGMA_RATE, "KF's R: gyro σ", "°/s", 0.005, 5.0, 0.04).log(),
     ParamSpec::real(roll_keys::BIAS_WALK, "Bias KF: bias random walk", "°/s/√s", 1e-4, 1.0, 0.01).log().help("Beyond the paper: the [θ, ω, b] filter's bias process noise."),
     ParamSpec::real(roll_keys::CF_GAIN, "Complementary gain a", "", 0.5, 0.999, 0.98).help("θ ← a(θ + ω dt) + (1 − a)θ_acc (ours: 0.98, τ ≈ 0.5 s at 100 Hz)."),
 ];
+
+const Q_FROM: &[&str] = &["γ (the paper)", "two elements"];
 
 const FIGURES: &[Figure] = &[
     Figure::new(
@@ -140,17 +147,6 @@ const PRESETS: &[Preset] = &[
     },
 ];
 
-const SWEEPS: &[SweepSpec] = &[SweepSpec {
-    title: "γ sweep: RMS of the KF's angle and rate errors (8 s, one step)",
-    key: roll_keys::GAMMA,
-    values: &[
-        1e-7, 1e-6, 1e-5, 1e-4, 5e-4, 2e-3, 5e-3, 0.02, 0.05, 0.2, 1.0,
-    ],
-    duration_s: 8.0,
-    after_s: 0.0,
-    series: &["kf.angle_err_deg", "kf.rate_err_deg_s"],
-}];
-
 /// The filters' settings in `p`.
 fn tuning_of(p: &ParamValues) -> RollTuning {
     RollTuning {
@@ -159,6 +155,7 @@ fn tuning_of(p: &ParamValues) -> RollTuning {
         sigma_angle_rad: 0.0,
         sigma_rate_rad_s: 0.0,
         bias_walk: 0.0,
+        q_elements: None,
     }
     .read(p)
 }
@@ -259,7 +256,7 @@ impl Lab for QuadrotorRoll {
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
-        SWEEPS
+        tuning::SWEEPS
     }
 
     fn accepts_imu_log(&self) -> bool {

@@ -9,11 +9,11 @@
 //! of the new set-point, θ̂ averaged over ±50 ms (the rest of the run, 4 s, when it never
 //! does).
 
-use super::QuadrotorRoll;
-use crate::analysis::scenario::{Trace, run_trace};
-use crate::analysis::stats;
-use crate::analysis::{AnalysisError, StatsContext};
-use crate::model::{Expectation, Lab, Reproduction, Row, fmt_sig};
+use super::{QuadrotorRoll, tuning};
+use crate::analysis::AnalysisError;
+use crate::analysis::scenario::params_with;
+use crate::analysis::sweep::Sweep;
+use crate::model::{Expectation, Lab, Reproduction, Row, SweepSpec, fmt_sig};
 
 /// The paper's γ grid (the exponent of the last one is lost in the OCR; n > 3) and its
 /// Table 1: (MSE, t_tr s).
@@ -53,98 +53,55 @@ pub struct GammaScore {
     pub noise_deg: f64,
 }
 
-fn run(gamma: f64, extra: &[&str], seed: u64) -> Result<Trace, AnalysisError> {
-    let g = format!("gamma={gamma}");
-    let step = format!("setpoint_deg={STEP_DEG}");
-    let period = format!("step_period_s={STEP_AT_S}");
-    let mut set = vec![g.as_str(), step.as_str(), period.as_str()];
-    set.extend_from_slice(extra);
-    let lab: &'static dyn Lab = &QuadrotorRoll;
-    run_trace(
-        lab,
-        &set,
-        seed,
-        RUN_S,
-        &[
-            "kf.angle_deg",
-            "kf.angle_err_deg",
-            "kf.rate_err_deg_s",
-            "truth.setpoint_deg",
-        ],
-    )
-}
-
-/// Transient time after the step at [`STEP_AT_S`] (s): until θ̂, averaged over ±50 ms (so
-/// that one noisy sample does not count), stays within 5 % of the step of the set-point.
-fn transient_time(trace: &Trace) -> Result<f64, AnalysisError> {
-    let angle = trace.series("kf.angle_deg")?;
-    let band = 0.05 * STEP_DEG;
-    let half = 5usize;
-    let mut last_out = STEP_AT_S;
-    for (k, t) in trace.t_s().iter().enumerate() {
-        if *t < STEP_AT_S {
-            continue;
-        }
-        let window = &angle[k.saturating_sub(half)..(k + half + 1).min(angle.len())];
-        let mean = stats::mean(window).of("transient window")?;
-        if (mean - STEP_DEG).abs() >= band {
-            last_out = *t;
-        }
-    }
-    let end = trace.t_s().last().copied().unwrap_or(RUN_S);
-    Ok(if last_out >= end - 0.06 {
-        RUN_S - STEP_AT_S
-    } else {
-        last_out - STEP_AT_S
-    })
-}
-
 /// The scores of `gamma`: medians over five seeds.
 pub fn score_gamma(gamma: f64) -> Result<GammaScore, AnalysisError> {
     score_gamma_with(gamma, &[])
 }
 
-/// The scores of `gamma` with the parameter assignments `extra` (`key=value`).
+/// The scores of `gamma` with the parameter assignments `extra` (`key=value`): the page's γ
+/// sweep (same scoring, same seeds) over this one value.
 pub fn score_gamma_with(gamma: f64, extra: &[&str]) -> Result<GammaScore, AnalysisError> {
-    let (mut mse, mut ttr, mut offset, mut noise) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for seed in 1..=SEEDS {
-        let trace = run(gamma, extra, seed)?;
-        let (ea, er) = (
-            trace.series("kf.angle_err_deg")?,
-            trace.series("kf.rate_err_deg_s")?,
-        );
-        let sq: Vec<f64> = ea.iter().zip(er).map(|(a, r)| a * a + r * r).collect();
-        mse.push(stats::mean(&sq).of("squared errors")?);
-        ttr.push(transient_time(&trace)?);
-        let window = |from: f64, to: f64| -> Vec<f64> {
-            trace
-                .t_s()
-                .iter()
-                .zip(ea)
-                .filter(|(t, _)| (from..to).contains(*t))
-                .map(|(_, e)| *e)
-                .collect()
-        };
-        let still = window(STEP_AT_S - 1.0, STEP_AT_S);
-        let settled = window(RUN_S - 1.0, RUN_S);
-        // The offset: the mean error in the last second before the step and before the end.
-        let before = stats::mean(&still).of("offset window")?;
-        let after = stats::mean(&settled).of("offset window")?;
-        offset.push((before.abs() + after.abs()) / 2.0);
-        // Sample-to-sample scatter (a slow drift of the offset does not count as noise).
-        let steps: Vec<f64> = still
-            .windows(2)
-            .map(|w| (w[1] - w[0]) / std::f64::consts::SQRT_2)
-            .collect();
-        noise.push(stats::rms(&steps).of("noise window")?);
+    let lab: &'static dyn Lab = &QuadrotorRoll;
+    let step = format!("setpoint_deg={STEP_DEG}");
+    let period = format!("step_period_s={STEP_AT_S}");
+    let mut set = vec![step.as_str(), period.as_str()];
+    set.extend_from_slice(extra);
+    let base = params_with(lab, &set)?;
+    let spec = tuning::SWEEPS[0];
+    let sweep = Sweep::new(
+        lab,
+        SweepSpec {
+            duration_s: RUN_S,
+            seeds: SEEDS,
+            ..spec
+        },
+        base,
+        1,
+    )
+    .with_values(vec![gamma])
+    .run_to_end();
+    if let Some(reason) = sweep.skipped.first() {
+        return Err(AnalysisError::Scenario(reason.clone()));
     }
+    let point = sweep
+        .points
+        .first()
+        .ok_or_else(|| AnalysisError::Scenario(format!("γ = {gamma} was not run")))?;
+    if let Some(reason) = point.unscored.first() {
+        return Err(AnalysisError::Scenario(format!("γ = {gamma}: {reason}")));
+    }
+    let [mse, t_tr_s, offset_deg, noise_deg] = point.scores[..] else {
+        return Err(AnalysisError::Scenario(format!(
+            "γ = {gamma}: {} scores",
+            point.scores.len()
+        )));
+    };
     Ok(GammaScore {
         gamma,
-        mse: stats::median(&mse).of("MSE over seeds")?,
-        t_tr_s: stats::median(&ttr).of("t_tr over seeds")?,
-        offset_deg: stats::median(&offset).of("offset over seeds")?,
-        noise_deg: stats::median(&noise).of("noise over seeds")?,
+        mse,
+        t_tr_s,
+        offset_deg,
+        noise_deg,
     })
 }
 
