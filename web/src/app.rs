@@ -97,7 +97,8 @@ impl AttLabApp {
 impl eframe::App for AttLabApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
-        if self.state.playing || self.state.sweep.is_some() {
+        let sweeping = self.state.sweep.as_ref().is_some_and(|(_, s)| !s.is_done());
+        if self.state.playing || sweeping {
             ui.ctx().request_repaint();
         }
     }

@@ -97,6 +97,8 @@ pub enum Command {
     Dismiss(usize),
     /// Start the lab's sweep `i`.
     RunSweep(usize),
+    /// Shade (or not) the lab's outages on the plots.
+    SetShowOutages(bool),
     /// Stop the running sweep.
     CancelSweep,
     /// Ask for a gyro log file to replay.
@@ -316,6 +318,7 @@ impl AppState {
             Command::SelectTab(tab) => self.select_tab(tab),
             Command::SetLogCovariance(on) => self.plots.log_covariance = on,
             Command::SetShowBands(on) => self.plots.show_bands = on,
+            Command::SetShowOutages(on) => self.plots.show_outages = on,
             Command::CopyLink => self.clipboard = Some(format!("#{}", self.fragment())),
         }
     }
@@ -521,7 +524,7 @@ impl AppState {
 
 /// What the page records while `tab` is shown (see [`Selection::for_tab`]).
 pub fn view_selection(sim: &Simulation, tab: PlotTab) -> Selection {
-    Selection::for_tab(sim.lab().figures(), sim.available_specs(), tab)
+    Selection::for_tab(sim.lab(), sim.available_specs(), tab)
 }
 
 /// A simulation recording what `tab` shows.

@@ -152,3 +152,50 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
             .all(|p| p.runs == 5 && p.objectives.iter().all(|j| j.is_finite()))
     );
 }
+
+/// Paper 2's outages are recorded on every tab and shaded where the sensor gave nothing:
+/// the shaded time matches the samples where the star tracker was out.
+#[test]
+fn the_star_tracker_outages_are_shaded_where_it_was_out() {
+    use attlab::sim::Simulation;
+    use attlab_web::render::plots::outage_intervals;
+    let lab = labs::find("p2").expect("registered");
+    let mut params = ParamValues::defaults(lab.params());
+    params
+        .set(lab.params(), "star_sun_exclusion_deg", 90.0)
+        .unwrap();
+    let mut sim = Simulation::new(lab, params, 1);
+    sim.run_for(600.0);
+    let rec = sim.recorder();
+    let i = rec
+        .index_of("sensors.star_available")
+        .expect("recorded with the first tab");
+    let shaded: f64 = outage_intervals(rec, i, 0.0)
+        .iter()
+        .map(|[a, b]| b - a)
+        .sum();
+    // Every sample, from a separate run of the same scenario.
+    let trace = attlab::analysis::scenario::run_trace(
+        lab,
+        &["star_sun_exclusion_deg=90"],
+        1,
+        600.0,
+        &["sensors.star_available"],
+    )
+    .unwrap();
+    let out = trace
+        .series("sensors.star_available")
+        .unwrap()
+        .iter()
+        .filter(|v| **v == 0.0)
+        .count();
+    let out_s = out as f64 * sim.dt_s();
+    assert!(
+        out_s > 60.0,
+        "the blinded tracker should be out for minutes, was out {out_s} s"
+    );
+    assert!(
+        (shaded - out_s).abs() < 0.02 * out_s + 2.0,
+        "shaded {shaded} s, out {out_s} s"
+    );
+}

@@ -346,6 +346,18 @@ pub struct OutputFile {
     pub stop: Option<String>,
 }
 
+/// A sensor outage a lab's plots shade: the intervals where a recorded 0/1 series equals
+/// `out_when` (e.g. paper 2's eclipse, or the star tracker unavailable).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outage {
+    /// The 0/1 series.
+    pub series: &'static str,
+    /// Its value during the outage.
+    pub out_when: f64,
+    /// What the shading is called in the legend.
+    pub label: &'static str,
+}
+
 /// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
@@ -390,6 +402,10 @@ pub trait Lab: Sync {
     fn reproduce(&self) -> Result<Reproduction, ReproError>;
     /// The paper's figures as plot tabs.
     fn figures(&self) -> &'static [Figure] {
+        &[]
+    }
+    /// Outages the plots shade (every plot, every tab).
+    fn outages(&self) -> &'static [Outage] {
         &[]
     }
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).

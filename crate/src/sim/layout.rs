@@ -8,8 +8,8 @@ use crate::math::{
     small_angle_error_body, wrap_pi,
 };
 use crate::model::{
-    Attitude, Estimate, Estimator, Figure, PlotTab, SensorModel, SeriesGroup, SeriesSpec,
-    StateInfo, StateKind, TruthModel, TruthState,
+    Attitude, Estimate, Estimator, Lab, PlotTab, SensorModel, SeriesGroup, SeriesSpec, StateInfo,
+    StateKind, TruthModel, TruthState,
 };
 use thiserror::Error;
 
@@ -37,9 +37,10 @@ impl Selection {
     }
 
     /// What the page records while `tab` is shown: the tab's series, and the vertical and
-    /// (u, v) of every source where the lab has them (the sphere and the w plane draw them).
-    /// `available` is every series the lab has.
-    pub fn for_tab(figures: &[Figure], available: &[SeriesSpec], tab: PlotTab) -> Self {
+    /// (u, v) of every source where the lab has them (the sphere and the w plane draw them),
+    /// and the outages the plots shade. `available` is every series the lab has.
+    pub fn for_tab(lab: &dyn Lab, available: &[SeriesSpec], tab: PlotTab) -> Self {
+        let figures = lab.figures();
         let mut names: Vec<String> = match tab {
             PlotTab::Figure(i) => figures
                 .get(i)
@@ -56,6 +57,13 @@ impl Selection {
                 .iter()
                 .filter(|s| s.group == SeriesGroup::Sphere && !s.name.ends_with(".z_deg"))
                 .map(|s| s.name.clone()),
+        );
+        // Outages are shaded on every tab.
+        names.extend(
+            lab.outages()
+                .iter()
+                .filter(|o| available.iter().any(|s| s.name == o.series))
+                .map(|o| o.series.to_string()),
         );
         Self::View(names)
     }

@@ -47,7 +47,7 @@ impl SimOptions {
     /// What the page records for its first tab (the lab's first figure, or the errors).
     pub fn page(lab: &dyn Lab, available: &[SeriesSpec]) -> Self {
         Self {
-            selection: Selection::for_tab(lab.figures(), available, default_tab(lab)),
+            selection: Selection::for_tab(lab, available, default_tab(lab)),
             budget_bytes: DEFAULT_BUDGET_BYTES,
         }
     }

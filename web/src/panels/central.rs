@@ -47,7 +47,13 @@ pub fn central(
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
             plot_tabs(ui, app, commands);
-            plots::show(ui, app.sim.recorder(), app.sim.lab().figures(), &app.plots);
+            plots::show(
+                ui,
+                app.sim.recorder(),
+                app.sim.lab().figures(),
+                app.sim.lab().outages(),
+                &app.plots,
+            );
         });
     });
 }
@@ -89,6 +95,16 @@ fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 if ui.checkbox(&mut on, "±3σ bands").changed() {
                     commands.push(Command::SetShowBands(on));
                 }
+            }
+        }
+        if !app.sim.lab().outages().is_empty() {
+            let mut on = app.plots.show_outages;
+            if ui
+                .checkbox(&mut on, "shade outages")
+                .on_hover_text("Shade the intervals where a sensor gives nothing (every plot)")
+                .changed()
+            {
+                commands.push(Command::SetShowOutages(on));
             }
         }
     });

@@ -2,10 +2,10 @@
 //! per series group, coloured by source, with ±3σ bands where a series says which variance
 //! bounds it.
 
-use attlab::model::{Figure, Lab, SeriesGroup, SeriesSpec};
+use attlab::model::{Figure, Lab, Outage, SeriesGroup, SeriesSpec};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Line, LineStyle, Plot};
+use egui_plot::{Legend, Line, LineStyle, Plot, Span};
 
 /// Colour of a source: truth white, estimators from a fixed palette by position.
 pub fn source_color(source_index: usize) -> Color32 {
@@ -33,6 +33,8 @@ pub struct PlotState {
     pub log_covariance: bool,
     /// Draw ±3σ bands around errors that have one.
     pub show_bands: bool,
+    /// Shade the lab's sensor outages.
+    pub show_outages: bool,
 }
 
 impl PlotState {
@@ -42,6 +44,7 @@ impl PlotState {
             tab: attlab::sim::default_tab(lab),
             log_covariance: true,
             show_bands: true,
+            show_outages: true,
         }
     }
 }
@@ -60,8 +63,48 @@ pub fn groups(available: &[SeriesSpec]) -> Vec<SeriesGroup> {
     groups
 }
 
-/// Draws the selected plot (over the whole run). Returns nothing: tab changes are commands.
-pub fn show(ui: &mut Ui, rec: &Recorder, figures: &[Figure], state: &PlotState) {
+/// The intervals [t₀, t₁] where series `index` equals `out_when`, from its plotted points.
+pub fn outage_intervals(rec: &Recorder, index: usize, out_when: f64) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    let mut start: Option<f64> = None;
+    let mut last_t = 0.0;
+    for p in rec.plot_points(index, 4 * MAX_POINTS) {
+        let is_out = (p[1] - out_when).abs() < 0.5;
+        match (is_out, start) {
+            (true, None) => start = Some(p[0]),
+            (false, Some(t0)) => {
+                out.push([t0, p[0]]);
+                start = None;
+            }
+            _ => {}
+        }
+        last_t = p[0];
+    }
+    if let Some(t0) = start {
+        out.push([t0, last_t]);
+    }
+    out
+}
+
+/// Shading colours of outages, by position.
+fn outage_color(k: usize) -> Color32 {
+    const C: [Color32; 3] = [
+        Color32::from_rgba_premultiplied(60, 50, 0, 40),
+        Color32::from_rgba_premultiplied(60, 0, 30, 40),
+        Color32::from_rgba_premultiplied(0, 40, 60, 40),
+    ];
+    C[k % C.len()]
+}
+
+/// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
+/// tab changes are commands.
+pub fn show(
+    ui: &mut Ui,
+    rec: &Recorder,
+    figures: &[Figure],
+    outages: &[Outage],
+    state: &PlotState,
+) {
     let tab = match state.tab {
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
         t => t,
@@ -91,6 +134,18 @@ pub fn show(ui: &mut Ui, rec: &Recorder, figures: &[Figure], state: &PlotState) 
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label("t [s]")
         .show(ui, |plot| {
+            for (k, o) in outages.iter().enumerate().filter(|_| state.show_outages) {
+                let Some(i) = rec.index_of(o.series) else {
+                    continue;
+                };
+                for [t0, t1] in outage_intervals(rec, i, o.out_when) {
+                    plot.span(
+                        Span::new(o.label, t0..=t1)
+                            .fill(outage_color(k))
+                            .border_width(0.0),
+                    );
+                }
+            }
             for (i, color) in lines {
                 let spec = &rec.specs()[i];
                 let mut pts = rec.plot_points(i, MAX_POINTS);

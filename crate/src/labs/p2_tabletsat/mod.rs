@@ -11,8 +11,8 @@ pub mod truth;
 
 use crate::estimators::{Mekf, MekfConfig, MekfTuning, SensorSet, StateSet, full_step_flops};
 use crate::model::{
-    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset,
-    ReproError, Reproduction, SweepSpec, TimingItem,
+    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, Outage, ParamSpec, ParamValues,
+    Preset, ReproError, Reproduction, SweepSpec, TimingItem,
 };
 use nalgebra::{SMatrix, UnitQuaternion, Vector3};
 use rand::{Rng, SeedableRng};
@@ -454,6 +454,21 @@ impl Lab for TabletSat {
                 i += 1;
             }),
         }]
+    }
+
+    fn outages(&self) -> &'static [Outage] {
+        &[
+            Outage {
+                series: "sensors.sun_seen",
+                out_when: 0.0,
+                label: "no sun reading (eclipse or outside the heads' fields)",
+            },
+            Outage {
+                series: "sensors.star_available",
+                out_when: 0.0,
+                label: "star tracker out",
+            },
+        ]
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
