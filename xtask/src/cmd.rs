@@ -15,8 +15,11 @@ pub type Result<T> = std::result::Result<T, BoxError>;
 
 /// The workspace root (the folder holding the root `Cargo.toml`).
 pub fn root() -> PathBuf {
-    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    manifest.parent().unwrap_or(manifest).to_path_buf()
+    // `cargo run` sets the manifest folder at run time too; the one compiled in may belong
+    // to another checkout that shares the target folder.
+    let manifest = std::env::var_os("CARGO_MANIFEST_DIR")
+        .map_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")), PathBuf::from);
+    manifest.parent().map_or_else(|| manifest.clone(), Path::to_path_buf)
 }
 
 /// Cargo's target directory (`CARGO_TARGET_DIR` or `<root>/target`).
