@@ -197,7 +197,10 @@ impl Lab for QuadrotorRoll {
          0.12 m, hover 2.45 N per motor), the 100-Hz loop, the controller gains, the γ → Q mapping \
          (Q = q·diag(dt³/3, dt), det Q = γ det R, R from the datasheet) and the 5 % band of the \
          transient time are ours. The controller acts on the true angle, so every filter sees the \
-         same motion. `attlab reproduce p4` measures Table 1."
+         same motion. The sweeps below run the paper's tuning experiment: J = α·MSE + β·t_tr against \
+         γ for its three (α, β) pairs (5 seeds, medians, argmin ringed), the Q landscape over two \
+         elements of Q with the γ lines on it, and, while a log is replayed, the γ sweep on the \
+         log. `attlab reproduce p4` measures Table 1."
     }
 
     fn params(&self) -> &'static [ParamSpec] {
