@@ -68,6 +68,7 @@ impl AttLabApp {
         self.state.advance_sweep(SWEEP_BUDGET);
         self.state.take_picked_log();
         let mut commands: Vec<Command> = Vec::new();
+        panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state);
         panels::controls(ui, &self.state, &mut commands);
         panels::central(

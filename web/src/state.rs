@@ -5,7 +5,7 @@
 //! value.
 
 use crate::platform;
-use crate::render::{body3d, plots, riemann_sphere};
+use crate::render::{body3d, plots, riemann_sphere, single_axis};
 use attlab::analysis::sweep::Sweep;
 use attlab::model::PlotTab;
 use attlab::model::{Lab, ParamValues};
@@ -121,15 +121,44 @@ pub enum Command {
     SetShowBands(bool),
     /// Copy the link of the current state to the clipboard.
     CopyLink,
+    /// Show the next view alone over the whole central area (then the plots, then all).
+    CycleFocus,
 }
 
-/// Widget-owned view state: changed by dragging, never by the simulation.
+/// What the central area shows: everything, or one view (or the plots) at full size.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Focus {
+    /// The lab's views on top, the plots below.
+    #[default]
+    All,
+    /// The lab's view with this index alone.
+    View(usize),
+    /// The plots alone.
+    Plots,
+}
+
+impl Focus {
+    /// The next focus for a lab with `views` views: each view, the plots, all.
+    pub fn next(self, views: usize) -> Self {
+        match self {
+            Self::All if views > 0 => Self::View(0),
+            Self::View(k) if k + 1 < views => Self::View(k + 1),
+            Self::All | Self::View(_) => Self::Plots,
+            Self::Plots => Self::All,
+        }
+    }
+}
+
+/// Widget-owned view state: the camera and the sphere change by dragging; the phase
+/// trails remember what the views drew (never read by the simulation).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct View {
     /// 3D camera.
     pub camera: body3d::OrbitCamera,
     /// Sphere orientation.
     pub sphere: riemann_sphere::SphereView,
+    /// Phase-portrait trails of a single-axis lab.
+    pub trails: single_axis::PhaseTrails,
 }
 
 /// Everything the panels read.
@@ -144,6 +173,8 @@ pub struct AppState {
     pub speed: f64,
     /// Plot tab and options.
     pub plots: plots::PlotState,
+    /// One view at full size, or all.
+    pub focus: Focus,
     /// Which estimator the 3D ghost shows.
     pub ghost_index: usize,
     /// Messages for the user.
@@ -178,6 +209,7 @@ impl AppState {
             playing: true,
             speed,
             plots,
+            focus: Focus::All,
             ghost_index: 0,
             messages: Vec::new(),
             stats: Stats::default(),
@@ -212,6 +244,7 @@ impl AppState {
         match command {
             Command::SelectLab(lab) => {
                 self.plots = plots::PlotState::for_lab(lab);
+                self.focus = Focus::All;
                 self.sim = simulation(
                     lab,
                     ParamValues::defaults(lab.params()),
@@ -320,6 +353,7 @@ impl AppState {
             Command::SetShowBands(on) => self.plots.show_bands = on,
             Command::SetShowOutages(on) => self.plots.show_outages = on,
             Command::CopyLink => self.clipboard = Some(format!("#{}", self.fragment())),
+            Command::CycleFocus => self.focus = self.focus.next(self.sim.lab().views().len()),
         }
     }
 

@@ -199,3 +199,40 @@ fn the_star_tracker_outages_are_shaded_where_it_was_out() {
         "shaded {shaded} s, out {out_s} s"
     );
 }
+
+/// The keyboard shortcuts listed in the help: space, s, →, f.
+#[test]
+fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
+    use attlab_web::state::Focus;
+    let mut h = harness("p4");
+    h.run();
+    h.key_press(egui::Key::Space);
+    h.run();
+    assert!(h.state().state.playing, "space resumes");
+    h.key_press(egui::Key::Space);
+    h.run();
+    assert!(!h.state().state.playing, "space pauses");
+    let steps = h.state().state.sim.steps();
+    h.key_press(egui::Key::S);
+    h.run();
+    assert_eq!(h.state().state.sim.steps(), steps + 1, "s steps once");
+    let tab = h.state().state.plots.tab;
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    assert_ne!(h.state().state.plots.tab, tab, "→ selects the next tab");
+    h.key_press(egui::Key::ArrowLeft);
+    h.run();
+    assert_eq!(h.state().state.plots.tab, tab, "← goes back");
+    let views = h.state().state.sim.lab().views().len();
+    let mut seen = Vec::new();
+    for _ in 0..=views + 1 {
+        h.key_press(egui::Key::F);
+        h.run();
+        seen.push(h.state().state.focus);
+    }
+    let mut expected: Vec<Focus> = (0..views).map(Focus::View).collect();
+    expected.extend([Focus::Plots, Focus::All]);
+    assert_eq!(seen, expected);
+    // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
+    assert_eq!(h.state().state.sim.lab().views(), attlab::model::SINGLE_AXIS_VIEWS);
+}

@@ -358,6 +358,29 @@ pub struct Outage {
     pub label: &'static str,
 }
 
+/// A view the page's top row shows, left to right, as the lab declares (each lab shows what
+/// explains it: a body turning about one axis has no use for the Riemann sphere).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewKind {
+    /// The body in 3D with the estimate as a ghost.
+    Body3d,
+    /// The Riemann sphere: the vertical in body axes.
+    Sphere,
+    /// The complex plane of w (or the lab's diagram, when it has one).
+    WPlane,
+    /// A single-axis angle on a dial, a needle per source.
+    Dial,
+    /// Rate against angle, a trail per source.
+    PhasePortrait,
+}
+
+/// The views of a lab that does not say otherwise.
+pub const DEFAULT_VIEWS: &[ViewKind] = &[ViewKind::Body3d, ViewKind::Sphere, ViewKind::WPlane];
+
+/// The views of a lab whose body turns about one axis.
+pub const SINGLE_AXIS_VIEWS: &[ViewKind] =
+    &[ViewKind::Body3d, ViewKind::Dial, ViewKind::PhasePortrait];
+
 /// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
@@ -436,6 +459,10 @@ pub trait Lab: Sync {
     /// The paper's own output file, if the paper defines one (`attlab run --csv` writes it).
     fn output_file(&self, _params: &ParamValues) -> Option<OutputFile> {
         None
+    }
+    /// The views of the page's top row, left to right.
+    fn views(&self) -> &'static [ViewKind] {
+        DEFAULT_VIEWS
     }
     /// Diagrams that explain the current parameters (drawn beside the plots).
     fn diagrams(&self, _params: &ParamValues) -> Vec<Diagram> {

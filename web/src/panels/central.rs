@@ -1,12 +1,13 @@
-//! The central view: 3D body, Riemann sphere and complex plane (or the lab's diagram) on top, the plot tabs and
-//! plots below. Reads the state, emits commands (tab choices); the widgets own their view.
+//! The central view: the lab's declared views on top (3D body, Riemann sphere and complex
+//! plane or the lab's diagram; for a single-axis lab a dial and the phase portrait), the plot
+//! tabs and plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
-use crate::render::{body3d, plots, riemann_sphere};
-use crate::state::{AppState, Command, View};
+use crate::render::{body3d, plots, riemann_sphere, single_axis};
+use crate::state::{AppState, Command, Focus, View};
 use attlab::math::{WzAttitude, WzChart};
-use attlab::model::{SeriesGroup, StateKind};
+use attlab::model::{SeriesGroup, StateKind, ViewKind};
 use attlab::record::Recorder;
-use egui::{Rect, Ui, Vec2};
+use egui::{Pos2, Rect, Ui, Vec2};
 use nalgebra::Vector3;
 
 /// Draws the central panel.
@@ -19,43 +20,126 @@ pub fn central(
 ) {
     egui::CentralPanel::default().show(ui, |ui| {
         let full = ui.available_rect_before_wrap();
+        let kinds = app.sim.lab().views();
+        match app.focus {
+            Focus::View(k) if k < kinds.len() => {
+                draw_view(ui, app, view, kinds[k], full, gpu_ready);
+                return;
+            }
+            Focus::Plots => {
+                ui.scope_builder(egui::UiBuilder::new().max_rect(full), |ui| {
+                    draw_plots(ui, app, commands);
+                });
+                return;
+            }
+            _ => {}
+        }
         let top_h = (full.height() * 0.55).max(220.0);
         let top = Rect::from_min_size(full.min, Vec2::new(full.width(), top_h));
-        let w3d = top.width() * 0.42;
-        let wsphere = top.width() * 0.30;
-        let r3d = Rect::from_min_size(top.min, Vec2::new(w3d - 4.0, top_h));
-        let rsphere = Rect::from_min_size(
-            top.min + Vec2::new(w3d, 0.0),
-            Vec2::new(wsphere - 4.0, top_h),
-        );
-        let rplane = Rect::from_min_max(top.min + Vec2::new(w3d + wsphere, 0.0), top.max);
-        let mut tracks = tracks(app);
-        attach_ellipses(app, &mut tracks);
-        draw_body(ui, app, &mut view.camera, r3d, gpu_ready);
-        let caption = chart_caption(app);
-        riemann_sphere::show_sphere(ui, rsphere, &mut view.sphere, &tracks, &caption);
-        // A lab with a diagram of its own (paper 5's eigenvalues) shows it here, beside the
-        // error plots, instead of the w plane.
-        let diagrams = app.sim.lab().diagrams(app.sim.params());
-        ui.scope_builder(
-            egui::UiBuilder::new().max_rect(rplane),
-            |ui| match diagrams.first() {
-                Some(d) => super::lab_tools::diagram(ui, d),
-                None => riemann_sphere::show_plane(ui, &tracks),
-            },
-        );
+        let total: f32 = kinds.iter().map(|k| weight(*k)).sum();
+        let mut x = top.min.x;
+        for kind in kinds {
+            let w = top.width() * weight(*kind) / total.max(1.0);
+            let rect = Rect::from_min_size(Pos2::new(x, top.min.y), Vec2::new(w - 4.0, top_h));
+            x += w;
+            draw_view(ui, app, view, *kind, rect, gpu_ready);
+        }
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
-            plot_tabs(ui, app, commands);
-            plots::show(
-                ui,
-                app.sim.recorder(),
-                app.sim.lab().figures(),
-                app.sim.lab().outages(),
-                &app.plots,
-            );
+            draw_plots(ui, app, commands);
         });
     });
+}
+
+/// The plot tabs and the selected plot.
+fn draw_plots(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    plot_tabs(ui, app, commands);
+    plots::show(
+        ui,
+        app.sim.recorder(),
+        app.sim.lab().figures(),
+        app.sim.lab().outages(),
+        &app.plots,
+    );
+}
+
+/// Share of the top row a view takes.
+fn weight(kind: ViewKind) -> f32 {
+    match kind {
+        ViewKind::Body3d => 42.0,
+        ViewKind::Sphere => 30.0,
+        ViewKind::WPlane => 28.0,
+        ViewKind::Dial => 24.0,
+        ViewKind::PhasePortrait => 34.0,
+    }
+}
+
+/// Draws one of the lab's views into `rect`.
+fn draw_view(
+    ui: &mut Ui,
+    app: &AppState,
+    view: &mut View,
+    kind: ViewKind,
+    rect: Rect,
+    gpu_ready: bool,
+) {
+    match kind {
+        ViewKind::Body3d => draw_body(ui, app, &mut view.camera, rect, gpu_ready),
+        ViewKind::Sphere => {
+            let mut tracks = tracks(app);
+            attach_ellipses(app, &mut tracks);
+            let caption = chart_caption(app);
+            riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, &caption);
+        }
+        ViewKind::WPlane => {
+            // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
+            let diagrams = app.sim.lab().diagrams(app.sim.params());
+            ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+                match diagrams.first() {
+                    Some(d) => super::lab_tools::diagram(ui, d),
+                    None => {
+                        let mut tracks = tracks(app);
+                        attach_ellipses(app, &mut tracks);
+                        riemann_sphere::show_plane(ui, &tracks);
+                    }
+                }
+            });
+        }
+        ViewKind::Dial => single_axis::dial(ui, rect, &axis_sources(app)),
+        ViewKind::PhasePortrait => {
+            let sources = axis_sources(app);
+            view.trails.push(app.sim.t_s(), &sources);
+            single_axis::phase_portrait(ui, rect, &view.trails, &sources);
+        }
+    }
+}
+
+/// Truth and every single-axis estimator: angle and rate about the axis, in source colours.
+fn axis_sources(app: &AppState) -> Vec<single_axis::AxisSource> {
+    let truth = app.sim.truth();
+    let mut out = vec![single_axis::AxisSource {
+        name: "truth".into(),
+        color: plots::source_color(0),
+        angle_rad: truth.angle_rad.unwrap_or(f64::NAN),
+        rate_rad_s: truth.rate_body_rad_s.z,
+    }];
+    for (i, (e, est)) in app
+        .sim
+        .estimators()
+        .iter()
+        .zip(app.sim.estimates())
+        .enumerate()
+    {
+        if let Some(angle) = est.angle_rad {
+            out.push(single_axis::AxisSource {
+                name: e.id().to_string(),
+                color: plots::source_color(i + 1),
+                angle_rad: angle,
+                rate_rad_s: est.rate_body_rad_s.map_or(f64::NAN, |w| w.z),
+            });
+        }
+    }
+    out
 }
 
 /// The tab row and the options of the selected tab.

@@ -257,6 +257,8 @@ fn explanation(ui: &mut Ui, app: &AppState) {
         .show(ui, |ui| {
             ui.label(app.sim.lab().summary());
             ui.add_space(4.0);
+            ui.label(RichText::new(super::keys::HELP).small().strong());
+            ui.add_space(4.0);
             ui.label(RichText::new(
             "Frames: reference ζ up; body ξ′ right, η′ forward, ζ′ up. The sphere shows the \
              vertical k = (a′, b′, c′) in body axes; the ray from the pole S through k meets the \

@@ -4,11 +4,13 @@
 
 mod central;
 mod controls;
+mod keys;
 mod lab_tools;
 mod sweeps;
 
 pub use central::central;
 pub use controls::controls;
+pub use keys::shortcuts;
 
 use crate::state::AppState;
 use attlab::model::EstimatorStatus;

@@ -1,7 +1,9 @@
-//! Drawing: the 3D body (wgpu), the Riemann sphere and the plots.
+//! Drawing: the 3D body (wgpu), the Riemann sphere, the single-axis dial and phase
+//! portrait, and the plots.
 
 pub mod body3d;
 pub mod fonts;
 pub mod mesh;
 pub mod plots;
 pub mod riemann_sphere;
+pub mod single_axis;

@@ -10,7 +10,8 @@ use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_pe
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel};
 use crate::model::{
     Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, ReproError,
-    Reproduction, SensorModel, SeriesGroup, SeriesSpec, SweepSpec, TruthModel, TruthState,
+    Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesSpec, SweepSpec, TruthModel,
+    TruthState, ViewKind,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
@@ -293,6 +294,10 @@ impl Lab for SuspendedMockup {
 
     fn presets(&self) -> &'static [Preset] {
         PRESETS
+    }
+
+    fn views(&self) -> &'static [ViewKind] {
+        SINGLE_AXIS_VIEWS
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

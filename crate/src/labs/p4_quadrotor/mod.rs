@@ -11,7 +11,7 @@ mod tuning;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning, roll_keys};
 use crate::model::{
     Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError, Reproduction,
-    SweepSpec,
+    SINGLE_AXIS_VIEWS, SweepSpec, ViewKind,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -256,6 +256,10 @@ impl Lab for QuadrotorRoll {
 
     fn presets(&self) -> &'static [Preset] {
         PRESETS
+    }
+
+    fn views(&self) -> &'static [ViewKind] {
+        SINGLE_AXIS_VIEWS
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

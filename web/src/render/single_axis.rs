@@ -1,0 +1,206 @@
+//! Views for labs that turn about one axis (papers 1 and 4), where the Riemann sphere and the
+//! w plane explain nothing: the angle on a dial (truth and every estimator as needles) and
+//! the phase portrait angle–rate, a trail per source.
+
+use egui::{Color32, Painter, Pos2, Rect, Stroke, Ui, Vec2};
+use egui_plot::{Legend, Line, Plot, Points};
+use std::collections::VecDeque;
+
+/// One source's current angle and rate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AxisSource {
+    /// Legend name.
+    pub name: String,
+    /// Colour (the source's everywhere).
+    pub color: Color32,
+    /// Angle (rad).
+    pub angle_rad: f64,
+    /// Rate about the axis (rad/s).
+    pub rate_rad_s: f64,
+}
+
+/// Points kept per trail.
+const TRAIL: usize = 900;
+
+/// The phase-portrait trails, one per source, kept by the view between frames.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PhaseTrails {
+    t_s: f64,
+    trails: Vec<(String, VecDeque<[f64; 2]>)>,
+}
+
+impl PhaseTrails {
+    /// Adds the sources' current (angle °, rate °/s) at time `t_s`; a time that went back
+    /// (a reset, another lab) starts the trails afresh.
+    pub fn push(&mut self, t_s: f64, sources: &[AxisSource]) {
+        if t_s < self.t_s || self.trails.len() != sources.len() {
+            self.trails = sources
+                .iter()
+                .map(|s| (s.name.clone(), VecDeque::new()))
+                .collect();
+        }
+        if t_s == self.t_s && self.trails.iter().any(|(_, t)| !t.is_empty()) {
+            return; // paused: nothing new
+        }
+        self.t_s = t_s;
+        for ((_, trail), s) in self.trails.iter_mut().zip(sources) {
+            let p = [s.angle_rad.to_degrees(), s.rate_rad_s.to_degrees()];
+            if p.iter().all(|v| v.is_finite()) {
+                if trail.len() == TRAIL {
+                    trail.pop_front();
+                }
+                trail.push_back(p);
+            }
+        }
+    }
+}
+
+/// The angle on a dial: a needle per source, truth drawn widest; 0° up, positive clockwise
+/// as on an instrument.
+pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 4.0, Color32::from_gray(18));
+    painter.text(
+        rect.left_top() + Vec2::new(8.0, 6.0),
+        egui::Align2::LEFT_TOP,
+        "Angle on a dial (0° up)",
+        egui::FontId::proportional(13.0),
+        Color32::from_gray(200),
+    );
+    let legend_h = 16.0 * sources.len() as f32;
+    let center = Pos2::new(rect.center().x, rect.center().y - legend_h / 2.0 + 8.0);
+    let radius = ((rect.width().min(rect.height() - legend_h - 30.0)) / 2.0 - 12.0).max(20.0);
+    painter.circle_stroke(center, radius, Stroke::new(1.5, Color32::from_gray(120)));
+    for k in 0..36 {
+        let a = f64::from(k) * 10f64.to_radians();
+        let len = if k % 9 == 0 {
+            0.14
+        } else if k % 3 == 0 {
+            0.08
+        } else {
+            0.04
+        };
+        let dir = direction(a);
+        painter.line_segment(
+            [center + dir * radius, center + dir * radius * (1.0 - len)],
+            Stroke::new(1.0, Color32::from_gray(140)),
+        );
+    }
+    for (label, a) in [
+        ("0°", 0.0),
+        ("90°", 90.0),
+        ("±180°", 180.0),
+        ("−90°", -90.0),
+    ] {
+        let pos = center + direction(f64::to_radians(a)) * (radius * 0.74);
+        painter.text(
+            pos,
+            egui::Align2::CENTER_CENTER,
+            label,
+            egui::FontId::proportional(11.0),
+            Color32::from_gray(170),
+        );
+    }
+    for (k, s) in sources.iter().enumerate().rev() {
+        if !s.angle_rad.is_finite() {
+            continue;
+        }
+        let width = if k == 0 { 4.0 } else { 2.0 };
+        needle(
+            &painter,
+            center,
+            radius * 0.92,
+            s.angle_rad,
+            Stroke::new(width, s.color),
+        );
+    }
+    painter.circle_filled(center, 4.0, Color32::from_gray(200));
+    for (k, s) in sources.iter().enumerate() {
+        let y = rect.bottom() - legend_h - 4.0 + 16.0 * k as f32;
+        let text = if s.angle_rad.is_finite() {
+            format!("{}  {:+.2}°", s.name, s.angle_rad.to_degrees())
+        } else {
+            format!("{}  —", s.name)
+        };
+        painter.text(
+            Pos2::new(rect.left() + 10.0, y),
+            egui::Align2::LEFT_TOP,
+            text,
+            egui::FontId::monospace(11.0),
+            s.color,
+        );
+    }
+}
+
+/// Unit screen vector of the angle `a` (0 up, positive clockwise).
+fn direction(a: f64) -> Vec2 {
+    Vec2::new(a.sin() as f32, -a.cos() as f32)
+}
+
+fn needle(painter: &Painter, center: Pos2, length: f32, a: f64, stroke: Stroke) {
+    painter.line_segment([center, center + direction(a) * length], stroke);
+}
+
+/// The phase portrait: rate against angle, a trail per source, the newest point dotted.
+pub fn phase_portrait(ui: &mut Ui, rect: Rect, trails: &PhaseTrails, sources: &[AxisSource]) {
+    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
+        ui.label(
+            egui::RichText::new("Phase portrait: rate against angle (the recent trail)").small(),
+        );
+        Plot::new("phase_portrait")
+            .height((rect.height() - 24.0).max(60.0))
+            .legend(Legend::default().text_style(egui::TextStyle::Small))
+            .x_axis_label("angle [°]")
+            .y_axis_label("rate [°/s]")
+            .show(ui, |plot| {
+                for ((name, trail), s) in trails.trails.iter().zip(sources) {
+                    let pts: Vec<[f64; 2]> = trail.iter().copied().collect();
+                    if let Some(last) = pts.last().copied() {
+                        plot.line(Line::new(name.clone(), pts).color(s.color).width(1.2));
+                        plot.points(
+                            Points::new(name.clone(), vec![last])
+                                .radius(3.5)
+                                .color(s.color),
+                        );
+                    }
+                }
+            });
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn source(angle: f64) -> AxisSource {
+        AxisSource {
+            name: "truth".into(),
+            color: Color32::WHITE,
+            angle_rad: angle,
+            rate_rad_s: 0.5,
+        }
+    }
+
+    #[test]
+    fn trails_grow_while_time_runs_and_restart_when_it_goes_back() {
+        let mut t = PhaseTrails::default();
+        t.push(0.1, &[source(0.1)]);
+        t.push(0.2, &[source(0.2)]);
+        t.push(0.2, &[source(0.2)]); // paused
+        assert_eq!(t.trails[0].1.len(), 2);
+        t.push(0.0, &[source(0.0)]); // reset
+        assert_eq!(t.trails[0].1.len(), 1);
+        for k in 0..2000 {
+            t.push(1.0 + f64::from(k), &[source(f64::NAN)]);
+        }
+        assert_eq!(t.trails[0].1.len(), 1, "a NaN angle adds no point");
+    }
+
+    #[test]
+    fn zero_is_up_and_a_quarter_turn_is_right() {
+        let up = direction(0.0);
+        assert!(up.x.abs() < 1e-6 && (up.y + 1.0).abs() < 1e-6);
+        let right = direction(std::f64::consts::FRAC_PI_2);
+        assert!((right.x - 1.0).abs() < 1e-6 && right.y.abs() < 1e-6);
+    }
+}
