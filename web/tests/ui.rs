@@ -234,5 +234,8 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
     expected.extend([Focus::Plots, Focus::All]);
     assert_eq!(seen, expected);
     // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
-    assert_eq!(h.state().state.sim.lab().views(), attlab::model::SINGLE_AXIS_VIEWS);
+    assert_eq!(
+        h.state().state.sim.lab().views(),
+        attlab::model::SINGLE_AXIS_VIEWS
+    );
 }

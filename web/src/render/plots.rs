@@ -7,7 +7,9 @@ use attlab::record::Recorder;
 use egui::{Color32, Ui};
 use egui_plot::{Legend, Line, LineStyle, Plot, Span};
 
-/// Colour of a source: truth white, estimators from a fixed palette by position.
+/// Colour of a source: truth white, estimators from a fixed palette by position — the same
+/// colour in the 3D ghost, the sphere, the dial, every plot and the tables. Past the first
+/// eight, hues step by the golden angle so sixteen filters stay tellable apart.
 pub fn source_color(source_index: usize) -> Color32 {
     const PALETTE: [Color32; 8] = [
         Color32::from_rgb(235, 235, 235),
@@ -19,7 +21,48 @@ pub fn source_color(source_index: usize) -> Color32 {
         Color32::from_rgb(255, 90, 90),
         Color32::from_rgb(160, 140, 255),
     ];
-    PALETTE[source_index % PALETTE.len()]
+    if let Some(c) = PALETTE.get(source_index) {
+        return *c;
+    }
+    let hue = (source_index as f32 * 0.618_034 + 0.13).fract();
+    let value = if source_index.is_multiple_of(2) {
+        0.95
+    } else {
+        0.75
+    };
+    egui::ecolor::Hsva::new(hue, 0.55, value, 1.0).into()
+}
+
+/// Colours of a figure's series: an estimator's series in its source colour when it is that
+/// source's only series in the figure; the truth's first series white; everything else
+/// (a second truth series, sensor readings, several series of one source) in colours no
+/// estimator uses, by position.
+pub fn figure_colors(specs: &[&SeriesSpec]) -> Vec<Color32> {
+    const OTHERS: [Color32; 5] = [
+        Color32::from_rgb(150, 150, 150),
+        Color32::from_rgb(90, 140, 160),
+        Color32::from_rgb(200, 170, 130),
+        Color32::from_rgb(130, 170, 120),
+        Color32::from_rgb(170, 130, 170),
+    ];
+    let count = |src: usize| specs.iter().filter(|s| s.source == src).count();
+    let mut other = 0;
+    let mut truth_seen = false;
+    specs
+        .iter()
+        .map(|s| {
+            let is_truth = s.name.starts_with("truth.");
+            if is_truth && !truth_seen {
+                truth_seen = true;
+                return source_color(0);
+            }
+            if !is_truth && s.source > 0 && count(s.source) == 1 {
+                return source_color(s.source);
+            }
+            other += 1;
+            OTHERS[(other - 1) % OTHERS.len()]
+        })
+        .collect()
 }
 
 pub use attlab::model::PlotTab as Tab;
@@ -109,15 +152,18 @@ pub fn show(
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
         t => t,
     };
-    // (series index, colour): a figure colours by position so that u and v of one source
-    // differ; a group by source.
+    // (series index, colour): by source, so an estimator has one colour everywhere; a figure
+    // that shows several series of one source tells them apart by position.
     let lines: Vec<(usize, Color32)> = match tab {
-        Tab::Figure(f) => figures[f]
-            .series
-            .iter()
-            .enumerate()
-            .filter_map(|(k, n)| rec.index_of(n).map(|i| (i, source_color(k))))
-            .collect(),
+        Tab::Figure(f) => {
+            let idx: Vec<usize> = figures[f]
+                .series
+                .iter()
+                .filter_map(|n| rec.index_of(n))
+                .collect();
+            let specs: Vec<&SeriesSpec> = idx.iter().map(|i| &rec.specs()[*i]).collect();
+            idx.iter().copied().zip(figure_colors(&specs)).collect()
+        }
         Tab::Group(g) => rec
             .specs()
             .iter()
@@ -181,4 +227,45 @@ pub fn show(
                 }
             }
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(name: &str, source: usize) -> SeriesSpec {
+        let mut s = SeriesSpec::new(name, "deg", SeriesGroup::Attitude);
+        s.source = source;
+        s
+    }
+
+    #[test]
+    fn sixteen_sources_get_sixteen_distinct_colours() {
+        let colours: Vec<Color32> = (0..17).map(source_color).collect();
+        for (i, a) in colours.iter().enumerate() {
+            for b in &colours[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+    }
+
+    #[test]
+    fn a_figure_keeps_each_estimators_colour_and_gives_the_rest_others() {
+        let specs = [
+            spec("truth.angle_deg", 0),
+            spec("truth.setpoint_deg", 0),
+            spec("sensors.accel_angle_deg", 0),
+            spec("kf.angle_deg", 1),
+            spec("cf.angle_deg", 2),
+        ];
+        let refs: Vec<&SeriesSpec> = specs.iter().collect();
+        let c = figure_colors(&refs);
+        assert_eq!(c[0], source_color(0));
+        assert_eq!(c[3], source_color(1));
+        assert_eq!(c[4], source_color(2));
+        for other in &c[1..3] {
+            assert!((0..17).all(|s| *other != source_color(s)), "{other:?}");
+        }
+        assert_ne!(c[1], c[2]);
+    }
 }
