@@ -1,5 +1,6 @@
 //! The shareable state of the app in a URL fragment:
-//! `#lab=free-rotation&seed=1&speed=1&gyro_bias_deg_s=0.1`.
+//! `#lab=free-rotation&seed=1&speed=1&gyro_bias_deg_s=0.1` (and `presenter=1` for the
+//! projector: large type, thick lines, only the controls that matter).
 //!
 //! Parsing never fails as a whole: every bad item is reported with its position and text,
 //! and everything good is kept.
@@ -19,6 +20,8 @@ pub struct UrlState {
     pub speed: f64,
     /// The lab's parameters.
     pub params: ParamValues,
+    /// Presenter mode (for a projector).
+    pub presenter: bool,
 }
 
 /// Speeds the UI offers (× real time).
@@ -44,6 +47,7 @@ impl UrlState {
             seed: 1,
             speed: 1.0,
             params: ParamValues::defaults(lab.params()),
+            presenter: false,
         }
     }
 
@@ -54,6 +58,9 @@ impl UrlState {
         out.append_pair("lab", self.lab_id)
             .append_pair("seed", &self.seed.to_string())
             .append_pair("speed", &self.speed.to_string());
+        if self.presenter {
+            out.append_pair("presenter", "1");
+        }
         if let Some(lab) = labs::find(self.lab_id) {
             for spec in lab.params() {
                 if let Ok(v) = self.params.try_get(spec.key)
@@ -128,6 +135,11 @@ impl UrlState {
                         ),
                     )),
                 },
+                "presenter" => match value.as_str() {
+                    "1" | "true" | "on" => state.presenter = true,
+                    "0" | "false" | "off" => state.presenter = false,
+                    _ => errors.push(err(*pos, item, "presenter must be 1 or 0".into())),
+                },
                 _ => {
                     if let Err(e) = state.params.set_text(lab.params(), key, value) {
                         errors.push(err(*pos, item, e.to_string()));
@@ -153,6 +165,14 @@ mod tests {
         let (back, errors) = UrlState::parse(&format!("#{}", s.encode()));
         assert!(errors.is_empty(), "{errors:?}");
         assert_eq!(back, s);
+        s.presenter = true;
+        let (back, errors) = UrlState::parse(&s.encode());
+        assert!(errors.is_empty(), "{errors:?}");
+        assert!(back.presenter);
+        let (back, errors) = UrlState::parse("presenter=maybe");
+        assert!(!back.presenter);
+        assert_eq!(errors.len(), 1);
+        assert!(errors[0].to_string().contains("presenter must be 1 or 0"));
     }
 
     #[test]

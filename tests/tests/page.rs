@@ -3,15 +3,20 @@
 //! entries or panics, and checks that a screenshot is not blank.
 //!
 //! Ignored in the normal run: `cargo xtask test` builds `dist/`, serves it and runs
-//! `cargo test -p attlab-tests --test page -- --ignored --nocapture` with `ATTLAB_PAGE_URL`.
+//! `cargo test -p attlab-tests --test page -- --ignored --nocapture` with `ATTLAB_PAGE_URL`
+//! (and `ATTLAB_DIST` for the offline check, which serves `dist/` itself so that it can cut
+//! the network: it stops its server and loads the page again).
 #![cfg(not(target_arch = "wasm32"))]
 
 use base64::Engine as _;
 use serde_json::{Value, json};
 use std::collections::HashSet;
-use std::net::TcpListener;
+use std::io::{BufRead, BufReader, Write};
+use std::net::{TcpListener, TcpStream};
 use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
@@ -223,6 +228,121 @@ fn wait_for_frames(session: &Session<'_>) -> Value {
     status
 }
 
+/// Time from the start of navigation to the first drawn frame (ms, `performance.now()` when
+/// a poll every 20 ms first sees a frame; an upper bound by at most one poll).
+fn first_frame_ms(session: &Session<'_>) -> Option<f64> {
+    let start = Instant::now();
+    while start.elapsed() < FRAME_TIMEOUT {
+        if let Ok(Value::Number(ms)) = session.execute(
+            "return window.attlabStatus && window.attlabStatus.frames >= 1 ? performance.now() : null;",
+        ) {
+            return ms.as_f64();
+        }
+        sleep(Duration::from_millis(20));
+    }
+    None
+}
+
+/// A static file server on a loopback port for `root`, which the test can stop (the
+/// network cut).
+struct StaticServer {
+    port: u16,
+    stop: Arc<AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl StaticServer {
+    fn start(root: PathBuf) -> StaticServer {
+        let listener = TcpListener::bind("127.0.0.1:0").expect("bind a loopback port");
+        let port = listener.local_addr().expect("local address").port();
+        listener
+            .set_nonblocking(true)
+            .expect("non-blocking listener");
+        let stop = Arc::new(AtomicBool::new(false));
+        let flag = stop.clone();
+        let thread = std::thread::spawn(move || {
+            while !flag.load(Ordering::SeqCst) {
+                match listener.accept() {
+                    Ok((stream, _)) => {
+                        let root = root.clone();
+                        std::thread::spawn(move || serve_one(stream, &root));
+                    }
+                    Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => {
+                        sleep(Duration::from_millis(5));
+                    }
+                    Err(_) => break,
+                }
+            }
+            // The listener is dropped here: from now on connections are refused.
+        });
+        StaticServer {
+            port,
+            stop,
+            thread: Some(thread),
+        }
+    }
+
+    fn url(&self) -> String {
+        format!("http://127.0.0.1:{}/", self.port)
+    }
+
+    /// Stops accepting; returns once the port is closed.
+    fn cut(&mut self) {
+        self.stop.store(true, Ordering::SeqCst);
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}
+
+impl Drop for StaticServer {
+    fn drop(&mut self) {
+        self.cut();
+    }
+}
+
+/// Answers one request on `stream` with a file under `root` (404 when there is none).
+fn serve_one(stream: TcpStream, root: &std::path::Path) {
+    let _ = stream.set_nonblocking(false);
+    let mut reader = BufReader::new(&stream);
+    let mut request = String::new();
+    if reader.read_line(&mut request).is_err() {
+        return;
+    }
+    let mut line = String::new();
+    while reader.read_line(&mut line).is_ok_and(|n| n > 2) {
+        line.clear();
+    }
+    let path = request.split_whitespace().nth(1).unwrap_or("/");
+    let path = path
+        .split(['?', '#'])
+        .next()
+        .unwrap_or("/")
+        .trim_start_matches('/');
+    let path = if path.is_empty() { "index.html" } else { path };
+    let file = root.join(path);
+    let inside = !path.split('/').any(|c| c == "..");
+    let (status, body) = match std::fs::read(&file) {
+        Ok(b) if inside => ("200 OK", b),
+        _ => ("404 Not Found", b"not found".to_vec()),
+    };
+    let kind = match file.extension().and_then(|e| e.to_str()) {
+        Some("html") => "text/html; charset=utf-8",
+        Some("js") => "text/javascript",
+        Some("wasm") => "application/wasm",
+        Some("json") => "application/json",
+        Some("png") => "image/png",
+        _ => "application/octet-stream",
+    };
+    let mut out = &stream;
+    let _ = write!(
+        out,
+        "HTTP/1.1 {status}\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+        body.len()
+    );
+    let _ = out.write_all(&body);
+}
+
 /// Problems with the app's own status object.
 fn status_problems(status: &Value) -> Vec<String> {
     let mut problems = Vec::new();
@@ -314,6 +434,10 @@ fn page_renders_without_errors() {
         .call("POST", "/url", Some(&json!({ "url": url })))
         .expect("navigate");
     println!("page test: loaded {url}");
+    match first_frame_ms(&session) {
+        Some(ms) => println!("page test: first frame {ms:.0} ms after navigation started"),
+        None => println!("page test: no first frame within {FRAME_TIMEOUT:?}"),
+    }
     let status = wait_for_frames(&session);
     println!("page test: attlabStatus = {status}");
     let mut problems = status_problems(&status);
@@ -380,6 +504,84 @@ fn page_renders_without_errors() {
     assert!(
         problems.is_empty(),
         "page test failed:\n  - {}",
+        problems.join("\n  - ")
+    );
+}
+
+/// The page works with the network cut after one visit: the service worker serves it.
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_DIST"]
+fn page_works_offline_after_one_visit() {
+    let dist = PathBuf::from(std::env::var("ATTLAB_DIST").expect("set ATTLAB_DIST to dist/"));
+    let mut server = StaticServer::start(dist);
+    let url = server.url();
+    let driver = Driver::start();
+    let session = Session::new(&driver);
+    session
+        .call("POST", "/url", Some(&json!({ "url": url })))
+        .expect("navigate");
+    let status = wait_for_frames(&session);
+    let mut problems = status_problems(&status);
+    // Wait until the service worker is active (its install cached the site).
+    let start = Instant::now();
+    let mut ready = false;
+    while start.elapsed() < FRAME_TIMEOUT && !ready {
+        ready = session
+            .execute("return window.attlabOfflineReady === true;")
+            .is_ok_and(|v| v == Value::Bool(true));
+        sleep(Duration::from_millis(100));
+    }
+    assert!(ready, "the service worker never became ready");
+    println!(
+        "page test (offline): service worker ready after {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+    let _ = session.console();
+    server.cut();
+    // The network is cut: nothing listens on the port any more.
+    assert!(
+        TcpStream::connect(("127.0.0.1", server.port)).is_err(),
+        "the server still answers"
+    );
+    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
+    session
+        .call(
+            "POST",
+            "/url",
+            Some(&json!({ "url": format!("{url}#lab=p4") })),
+        )
+        .expect("navigate offline");
+    let status = wait_for_frames(&session);
+    println!("page test (offline): attlabStatus = {status}");
+    problems.extend(
+        status_problems(&status)
+            .into_iter()
+            .map(|p| format!("offline: {p}")),
+    );
+    if status["lab"].as_str() != Some("p4") {
+        problems.push(format!("offline: #lab=p4 opened lab {:?}", status["lab"]));
+    }
+    match session.console() {
+        Ok(entries) => problems.extend(
+            console_problems(&entries)
+                .into_iter()
+                .map(|p| format!("offline: {p}")),
+        ),
+        Err(e) => problems.push(format!("offline: reading the console log failed: {e}")),
+    }
+    if let Ok(png_bytes) = session.screenshot() {
+        let path = out_dir().join("screenshot-offline.png");
+        std::fs::write(&path, &png_bytes).expect("save the screenshot");
+        problems.extend(
+            screenshot_problems(&png_bytes)
+                .into_iter()
+                .map(|p| format!("offline: {p}")),
+        );
+    }
+    drop(session);
+    assert!(
+        problems.is_empty(),
+        "offline page test failed:\n  - {}",
         problems.join("\n  - ")
     );
 }

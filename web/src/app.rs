@@ -17,6 +17,7 @@ pub struct AttLabApp {
     gpu_ready: bool,
     app_errors: Vec<String>,
     frames: u64,
+    zoomed_for: Option<bool>,
 }
 
 impl AttLabApp {
@@ -44,6 +45,7 @@ impl AttLabApp {
             gpu_ready: false,
             app_errors: Vec::new(),
             frames: 0,
+            zoomed_for: None,
         }
     }
 
@@ -68,6 +70,13 @@ impl AttLabApp {
         self.state.advance_sweep(SWEEP_BUDGET);
         self.state.take_picked_log();
         let mut commands: Vec<Command> = Vec::new();
+        // Presenter mode: everything larger (set on a change only, so the reader's own zoom
+        // keys keep working in between).
+        if self.zoomed_for != Some(self.state.presenter) {
+            ui.ctx()
+                .set_zoom_factor(if self.state.presenter { 1.5 } else { 1.0 });
+            self.zoomed_for = Some(self.state.presenter);
+        }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state);
         panels::controls(ui, &self.state, &mut commands);

@@ -10,6 +10,7 @@
 pub mod app;
 pub mod panels;
 pub mod platform;
+pub mod python;
 pub mod render;
 pub mod state;
 

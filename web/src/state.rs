@@ -123,6 +123,10 @@ pub enum Command {
     CopyLink,
     /// Show the next view alone over the whole central area (then the plots, then all).
     CycleFocus,
+    /// Copy a pandas snippet that loads the exported CSV and draws the current plot tab.
+    CopyPython,
+    /// Presenter mode on or off: large type, thick lines, only the controls that matter.
+    SetPresenter(bool),
 }
 
 /// What the central area shows: everything, or one view (or the plots) at full size.
@@ -175,6 +179,8 @@ pub struct AppState {
     pub plots: plots::PlotState,
     /// One view at full size, or all.
     pub focus: Focus,
+    /// Presenter mode: large type, thick lines, only the controls that matter.
+    pub presenter: bool,
     /// Which estimator the 3D ghost shows.
     pub ghost_index: usize,
     /// Messages for the user.
@@ -210,6 +216,7 @@ impl AppState {
             speed,
             plots,
             focus: Focus::All,
+            presenter: false,
             ghost_index: 0,
             messages: Vec::new(),
             stats: Stats::default(),
@@ -231,6 +238,7 @@ impl AppState {
         let (url, errors) = UrlState::parse(fragment);
         let lab = attlab::labs::find(url.lab_id).unwrap_or(attlab::labs::all()[0]);
         let mut state = Self::new(lab, url.params, url.seed, url.speed);
+        state.presenter = url.presenter;
         state.messages.extend(
             errors
                 .into_iter()
@@ -354,6 +362,13 @@ impl AppState {
             Command::SetShowOutages(on) => self.plots.show_outages = on,
             Command::CopyLink => self.clipboard = Some(format!("#{}", self.fragment())),
             Command::CycleFocus => self.focus = self.focus.next(self.sim.lab().views().len()),
+            Command::CopyPython => {
+                self.clipboard = Some(self.python_snippet());
+                self.messages.push(Message::info(
+                    "copied: a Python snippet that loads the exported CSV and draws this plot",
+                ));
+            }
+            Command::SetPresenter(on) => self.presenter = on,
         }
     }
 
@@ -453,7 +468,7 @@ impl AppState {
     fn export_csv(&mut self) {
         let mut buf = Vec::new();
         let result = self.sim.export_csv(&mut buf);
-        let name = format!("attlab-{}-seed{}.csv", self.sim.lab().id(), self.sim.seed());
+        let name = self.csv_name();
         let message = result
             .and_then(|rows| {
                 platform::save_file(&name, "text/csv", buf, self.save_dir.as_deref())
@@ -535,6 +550,41 @@ impl AppState {
         }
     }
 
+    /// The CSV file name "Export CSV" saves under.
+    pub fn csv_name(&self) -> String {
+        format!("attlab-{}-seed{}.csv", self.sim.lab().id(), self.sim.seed())
+    }
+
+    /// "Copy as Python" for the plot tab on screen.
+    pub fn python_snippet(&self) -> String {
+        let lab = self.sim.lab();
+        let available = self.sim.available_specs();
+        let header = |name: &str| {
+            available
+                .iter()
+                .find(|s| s.name == name)
+                .map(|s| s.header())
+        };
+        let (title, columns, log) = match self.plots.tab {
+            PlotTab::Figure(f) if f < lab.figures().len() => {
+                let fig = &lab.figures()[f];
+                let cols = fig.series.iter().filter_map(|n| header(n)).collect();
+                (fig.title.to_string(), cols, fig.log)
+            }
+            PlotTab::Figure(_) => (String::new(), Vec::new(), false),
+            PlotTab::Group(g) => (
+                g.title().to_string(),
+                available
+                    .iter()
+                    .filter(|s| s.group == g)
+                    .map(|s| s.header())
+                    .collect(),
+                self.plots.log_covariance && g == attlab::model::SeriesGroup::Covariance,
+            ),
+        };
+        crate::python::snippet(&self.csv_name(), &title, &columns, log)
+    }
+
     /// The shareable link fragment of the current state.
     pub fn fragment(&self) -> String {
         UrlState {
@@ -542,6 +592,7 @@ impl AppState {
             seed: self.seed,
             speed: self.speed,
             params: self.sim.params().clone(),
+            presenter: self.presenter,
         }
         .encode()
     }

@@ -239,3 +239,51 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
         attlab::model::SINGLE_AXIS_VIEWS
     );
 }
+
+/// Presenter mode from its button: the sliders go behind one click, the link says so, and
+/// the button turns it off again.
+#[test]
+fn presenter_mode_hides_the_sliders_and_goes_into_the_link() {
+    let mut h = harness("p4");
+    h.run();
+    assert!(
+        h.query_by_role_and_label(Role::Slider, "Sample rate")
+            .is_some()
+    );
+    h.get_by_label("Presenter").click();
+    h.run();
+    assert!(h.state().state.presenter);
+    assert!(
+        h.query_by_role_and_label(Role::Slider, "Sample rate")
+            .is_none(),
+        "presenter mode shows the presets, not every slider"
+    );
+    assert!(
+        h.query_by_label("γ = 0.2: noisy").is_some(),
+        "the presets stay"
+    );
+    assert!(h.state().state.fragment().contains("presenter=1"));
+    h.get_by_label("Presenter").click();
+    h.run();
+    assert!(!h.state().state.presenter);
+}
+
+/// "Copy as Python" puts a snippet for the plot on screen on the clipboard.
+#[test]
+fn copy_as_python_names_the_csv_and_the_tabs_columns() {
+    let mut h = harness("p4");
+    h.run();
+    let snippet = h.state().state.python_snippet();
+    assert!(
+        snippet.contains("pd.read_csv(\"attlab-p4-seed1.csv\")"),
+        "{snippet}"
+    );
+    // p4 opens on its first figure: truth, set-point, accelerometer angle and estimates.
+    for column in [
+        "truth.angle_deg [deg]",
+        "kf.angle_deg [deg]",
+        "sensors.accel_angle_deg [deg]",
+    ] {
+        assert!(snippet.contains(column), "{column} missing from\n{snippet}");
+    }
+}

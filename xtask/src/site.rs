@@ -19,6 +19,9 @@ const WEB_PROFILE: &str = "web";
 /// The optimisation level passed to `wasm-opt`.
 const OPT_LEVEL: &str = "-O2";
 
+/// Files of `site/` copied to the root of `dist/`.
+const SITE_FILES: &[&str] = &["sw.js", "manifest.json", "icon-192.png", "icon-512.png"];
+
 /// The `dist/` folder.
 pub fn dist_dir() -> PathBuf {
     cmd::root().join("dist")
@@ -41,6 +44,10 @@ pub fn build(optimise: bool) -> Result<PathBuf> {
         println!("xtask: --no-opt: skipping wasm-opt");
     }
     copy_file(&cmd::root().join("index.html"), &dist.join("index.html"))?;
+    // The service worker, the app manifest and its icons (offline and installable).
+    for name in SITE_FILES {
+        copy_file(&cmd::root().join("site").join(name), &dist.join(name))?;
+    }
     let assets = cmd::root().join("assets");
     if assets.is_dir() {
         copy_dir(&assets, &dist.join("assets"))?;

@@ -218,6 +218,7 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     println!("xtask: serving {} at {}", dist.display(), server.url());
     let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture");
     page.env("ATTLAB_PAGE_URL", server.url());
+    page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
     suite.tests("page (headless Chromium)", page)
 }

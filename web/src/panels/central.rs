@@ -60,6 +60,7 @@ fn draw_plots(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         app.sim.lab().figures(),
         app.sim.lab().outages(),
         &app.plots,
+        if app.presenter { 3.0 } else { 1.4 },
     );
 }
 

@@ -18,6 +18,17 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ui.separator();
                 run_controls(ui, app, commands);
                 ui.separator();
+                if app.presenter {
+                    // For the projector: the presets carry the lesson; the sliders wait
+                    // behind one click.
+                    presets(ui, app, commands);
+                    egui::CollapsingHeader::new("All parameters")
+                        .default_open(false)
+                        .show(ui, |ui| parameters(ui, app, commands));
+                    super::lab_tools::accuracy(ui, app, commands);
+                    messages(ui, app, commands);
+                    return;
+                }
                 parameters(ui, app, commands);
                 ui.separator();
                 super::lab_tools::accuracy(ui, app, commands);
@@ -69,6 +80,13 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         {
             commands.push(Command::Reset);
         }
+        if ui
+            .selectable_label(app.presenter, "Presenter")
+            .on_hover_text("For a projector: large type, thick lines, the presets only (also `presenter=1` in the link)")
+            .clicked()
+        {
+            commands.push(Command::SetPresenter(!app.presenter));
+        }
     });
     ui.horizontal(|ui| {
         let label = ui.label("Seed");
@@ -103,13 +121,7 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     }
 }
 
-fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    ui.horizontal(|ui| {
-        ui.strong("Parameters");
-        if ui.small_button("defaults").clicked() {
-            commands.push(Command::RestoreDefaults);
-        }
-    });
+fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let presets = app.sim.lab().presets();
     if !presets.is_empty() {
         ui.horizontal_wrapped(|ui| {
@@ -127,6 +139,18 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 }
             }
         });
+    }
+}
+
+fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    ui.horizontal(|ui| {
+        ui.strong("Parameters");
+        if ui.small_button("defaults").clicked() {
+            commands.push(Command::RestoreDefaults);
+        }
+    });
+    if !app.presenter {
+        presets(ui, app, commands);
     }
     for spec in app.sim.lab().params() {
         let value = app.sim.params().get(spec.key);
@@ -223,6 +247,13 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         }
         if ui.button("Copy link").on_hover_text("A link that restores lab, seed, speed and parameters").clicked() {
             commands.push(Command::CopyLink);
+        }
+        if ui
+            .button("Copy as Python")
+            .on_hover_text("A pandas + matplotlib snippet that loads the exported CSV and draws the plot tab on screen")
+            .clicked()
+        {
+            commands.push(Command::CopyPython);
         }
     });
     if app.sim.lab().output_file(app.sim.params()).is_some()

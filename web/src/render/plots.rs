@@ -147,6 +147,7 @@ pub fn show(
     figures: &[Figure],
     outages: &[Outage],
     state: &PlotState,
+    line_width: f32,
 ) {
     let tab = match state.tab {
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
@@ -203,7 +204,11 @@ pub fn show(
                     label = format!("log10 {label}");
                 }
                 for piece in Recorder::split_at_gaps(&pts) {
-                    plot.line(Line::new(label.clone(), piece).color(color).width(1.4));
+                    plot.line(
+                        Line::new(label.clone(), piece)
+                            .color(color)
+                            .width(line_width),
+                    );
                 }
                 // ±3σ from the variance the series names (never from its name).
                 let band = spec.band.as_ref().filter(|_| state.show_bands && !log);

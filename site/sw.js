@@ -1,0 +1,46 @@
+// Attitude Lab's service worker: the page works offline after one visit.
+//
+// Network first, cache as the fallback: a reachable server always gives the newest build
+// (and refreshes the cache); without a network the last build seen is served. Only
+// same-origin GET requests are handled. The core files are cached at install, so the first
+// visit alone is enough.
+const CACHE = 'attitude-lab-v1';
+const CORE = [
+  './',
+  './index.html',
+  './manifest.json',
+  './icon-192.png',
+  './icon-512.png',
+  './pkg/attlab_web.js',
+  './pkg/attlab_web_bg.wasm',
+];
+
+self.addEventListener('install', (event) => {
+  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(CORE)).then(() => self.skipWaiting()));
+});
+
+self.addEventListener('activate', (event) => {
+  event.waitUntil(
+    caches.keys()
+      .then((keys) => Promise.all(keys.filter((k) => k !== CACHE).map((k) => caches.delete(k))))
+      .then(() => self.clients.claim()),
+  );
+});
+
+self.addEventListener('fetch', (event) => {
+  const request = event.request;
+  if (request.method !== 'GET' || new URL(request.url).origin !== self.location.origin) return;
+  event.respondWith(
+    fetch(request)
+      .then((response) => {
+        if (response.ok) {
+          const copy = response.clone();
+          caches.open(CACHE).then((cache) => cache.put(request, copy));
+        }
+        return response;
+      })
+      .catch(() =>
+        caches.match(request, { ignoreSearch: true }).then((hit) => hit || caches.match('./index.html')),
+      ),
+  );
+});
