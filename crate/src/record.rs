@@ -287,6 +287,19 @@ impl Recorder {
             .collect()
     }
 
+    /// The newest `rows` (at most) full-rate values of series `index`, oldest first: a
+    /// per-frame trail without copying the whole window.
+    pub fn recent_tail(&self, index: usize, rows: usize) -> Vec<f64> {
+        if index >= self.specs.len() {
+            return Vec::new();
+        }
+        let take = rows.min(self.held);
+        let first = (self.head + self.window - take) % self.window;
+        (0..take)
+            .map(|k| self.recent[self.slot(index, (first + k) % self.window)])
+            .collect()
+    }
+
     /// (t, y) points of series `y` over the whole run, about `max_points` of them: the older
     /// history as bucket extremes (in the order they happened), the recent rows decimated the
     /// same way. A bucket that saw a missing value adds a `[t, NaN]` gap marker, so lines can
@@ -304,8 +317,10 @@ impl Recorder {
             b.flags = flags(at_min <= at_max, b.flags);
             old.push((self.filling[0], b));
         }
-        let t = self.recent_vec(0);
-        let v = self.recent_vec(y);
+        // The recent rows are read in place (a copy of two whole windows per line per frame
+        // would raise the page's memory high-water mark).
+        let first = (self.head + self.window - self.held) % self.window;
+        let at = |s: usize, k: usize| self.recent[self.slot(s, (first + k) % self.window)];
         // Share the points between the history and the recent rows by the rows they cover.
         let old_rows = self.total_rows - self.held as u64;
         let old_share = if self.total_rows == 0 {
@@ -337,8 +352,9 @@ impl Recorder {
             }
         }
         decimate_into(
-            &t,
-            &v,
+            self.held,
+            |k| at(0, k),
+            |k| at(y, k),
             max_points.saturating_sub(out.len()).max(2),
             &mut out,
         );
@@ -358,34 +374,46 @@ impl Recorder {
 /// Appends (t, y) of full-rate rows to `out`, at most about `max_points`: rows are grouped
 /// into buckets and each keeps its minimum and maximum y, so spikes survive; a bucket with a
 /// missing y adds a gap marker.
-fn decimate_into(t: &[f64], y: &[f64], max_points: usize, out: &mut Vec<[f64; 2]>) {
-    let n = t.len().min(y.len());
+fn decimate_into(
+    n: usize,
+    t: impl Fn(usize) -> f64,
+    y: impl Fn(usize) -> f64,
+    max_points: usize,
+    out: &mut Vec<[f64; 2]>,
+) {
     let per = n.div_ceil((max_points / 2).max(1)).max(1);
     let mut start = 0;
     while start < n {
         let end = (start + per).min(n);
-        let (mut lo, mut hi, mut gap): (Option<usize>, Option<usize>, Option<usize>) =
-            (None, None, None);
+        // (row, value) of the bucket's minimum and maximum, and its first gap.
+        let mut lo: Option<(usize, f64)> = None;
+        let mut hi: Option<(usize, f64)> = None;
+        let mut gap: Option<usize> = None;
         for i in start..end {
-            let v = y[i];
+            let v = y(i);
             if !v.is_finite() {
                 gap = gap.or(Some(i));
                 continue;
             }
-            if lo.is_none_or(|j| v < y[j]) {
-                lo = Some(i);
+            if lo.is_none_or(|(_, m)| v < m) {
+                lo = Some((i, v));
             }
-            if hi.is_none_or(|j| v > y[j]) {
-                hi = Some(i);
+            if hi.is_none_or(|(_, m)| v > m) {
+                hi = Some((i, v));
             }
         }
-        let mut pick: Vec<usize> = lo.into_iter().chain(hi).chain(gap).collect();
+        let mut pick: Vec<usize> = lo
+            .map(|p| p.0)
+            .into_iter()
+            .chain(hi.map(|p| p.0))
+            .chain(gap)
+            .collect();
         pick.sort_unstable();
         pick.dedup();
-        out.extend(
-            pick.into_iter()
-                .map(|i| [t[i], if y[i].is_finite() { y[i] } else { f64::NAN }]),
-        );
+        out.extend(pick.into_iter().map(|i| {
+            let v = y(i);
+            [t(i), if v.is_finite() { v } else { f64::NAN }]
+        }));
         start = end;
     }
 }
@@ -476,6 +504,13 @@ mod tests {
             .map(|i| 2.0 * i as f64)
             .collect();
         assert_eq!(r.recent_vec(1), expected);
+        // A tail is the end of the same rows; asking for more than is held gives them all.
+        assert_eq!(
+            r.recent_tail(1, 10),
+            expected[expected.len() - 10..].to_vec()
+        );
+        assert_eq!(r.recent_tail(1, 10 * window), expected);
+        assert!(r.recent_tail(9, 10).is_empty());
         assert_eq!(r.last(0), Some((window + 6) as f64));
         assert_eq!(r.last(7), None);
     }

@@ -99,6 +99,7 @@ impl AttLabApp {
             frames: self.frames,
             lab: self.state.sim.lab().id(),
             sim_steps: self.state.sim.steps(),
+            recorder_bytes: self.state.sim.recorder().memory_bytes(),
             errors: &self.app_errors,
         });
     }

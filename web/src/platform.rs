@@ -17,6 +17,21 @@ pub fn initial_fragment() -> String {
     }
 }
 
+/// The URL fragment now (without `#`): the page's address bar, where a reader may paste a
+/// link into the open tab; `None` on the desktop.
+pub fn current_fragment() -> Option<String> {
+    #[cfg(target_arch = "wasm32")]
+    {
+        web_sys::window()
+            .and_then(|w| w.location().hash().ok())
+            .map(|h| h.trim_start_matches('#').to_string())
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        None
+    }
+}
+
 /// Replaces the URL fragment without adding a history entry (no-op on the desktop).
 pub fn set_fragment(fragment: &str) {
     #[cfg(target_arch = "wasm32")]
@@ -36,6 +51,8 @@ pub struct Status<'a> {
     pub lab: &'a str,
     /// Simulation steps since reset.
     pub sim_steps: u64,
+    /// Bytes the recorder holds (its fixed budget).
+    pub recorder_bytes: usize,
     /// Application errors (not user-input messages).
     pub errors: &'a [String],
 }
@@ -61,6 +78,18 @@ pub fn publish_status(status: &Status<'_>) {
             &JsValue::from_f64(status.sim_steps as f64),
         );
         let _ = Reflect::set(&o, &"errors".into(), &errors);
+        let _ = Reflect::set(
+            &o,
+            &"recorderBytes".into(),
+            &JsValue::from_f64(status.recorder_bytes as f64),
+        );
+        // The wasm linear memory (it only grows): what the soak watches.
+        let memory = wasm_bindgen::memory();
+        if let Ok(buffer) = Reflect::get(&memory, &"buffer".into())
+            && let Ok(len) = Reflect::get(&buffer, &"byteLength".into())
+        {
+            let _ = Reflect::set(&o, &"wasmBytes".into(), &len);
+        }
         let _ = Reflect::set(&w, &"attlabStatus".into(), &o);
     }
     #[cfg(not(target_arch = "wasm32"))]

@@ -203,6 +203,7 @@ pub struct AppState {
     last_frame: Option<Instant>,
     step_debt: f64,
     last_fragment: String,
+    last_seen_fragment: String,
 }
 
 impl AppState {
@@ -230,6 +231,7 @@ impl AppState {
             last_frame: None,
             step_debt: 0.0,
             last_fragment: String::new(),
+            last_seen_fragment: String::new(),
         }
     }
 
@@ -247,12 +249,28 @@ impl AppState {
         state
     }
 
+    /// Loads lab, seed, speed, presenter mode and parameters from a link's fragment; its
+    /// bad items become messages, the messages already shown stay.
+    pub fn load_fragment(&mut self, fragment: &str) {
+        self.sim.release_recorder();
+        self.sweep = None;
+        let mut next = Self::from_fragment(fragment);
+        let mut kept = std::mem::take(&mut self.messages);
+        kept.append(&mut next.messages);
+        next.messages = kept;
+        next.save_dir = self.save_dir.take();
+        next.file_slot = std::mem::take(&mut self.file_slot);
+        *self = next;
+    }
+
     /// Carries out one command: the only place the app's state changes.
     pub fn apply(&mut self, command: Command) {
         match command {
             Command::SelectLab(lab) => {
                 self.plots = plots::PlotState::for_lab(lab);
                 self.focus = Focus::All;
+                self.sim.release_recorder();
+                self.sweep = None;
                 self.sim = simulation(
                     lab,
                     ParamValues::defaults(lab.params()),
@@ -597,11 +615,21 @@ impl AppState {
         .encode()
     }
 
-    /// Writes the current state into the URL when it changed.
+    /// Writes the current state into the URL when it changed — or, when the reader changed
+    /// the URL (a link pasted into the open tab), loads what it asks for.
     pub fn sync_url(&mut self) {
+        // Compared with what the address bar said right after our own last write, so a
+        // browser that spells our fragment differently cannot make us reload every frame.
+        if let Some(now) = platform::current_fragment()
+            && !self.last_fragment.is_empty()
+            && now != self.last_seen_fragment
+        {
+            self.load_fragment(&now);
+        }
         let fragment = self.fragment();
         if fragment != self.last_fragment {
             platform::set_fragment(&fragment);
+            self.last_seen_fragment = platform::current_fragment().unwrap_or_default();
             self.last_fragment = fragment;
         }
     }

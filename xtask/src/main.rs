@@ -30,11 +30,13 @@ commands:
   test                          run every check and test suite (what CI runs)
   bench                         time every lab natively (attlab bench) and in headless
                                 Chromium (wasm criterion bench of the labs' timing items)
+  soak [--minutes M]            run the page through every lab at top speed in headless
+                                Chromium for M minutes (default 10), sampling its memory
 
 --no-opt skips wasm-opt (faster build, bigger wasm).";
 
 /// A parsed command line.
-#[derive(Debug, PartialEq, Eq)]
+#[derive(Debug, PartialEq)]
 enum Task {
     /// Build and serve.
     Serve {
@@ -52,6 +54,11 @@ enum Task {
     Test,
     /// Native and wasm timings (never part of `test`: these machines are noisy).
     Bench,
+    /// The page through every lab for this many minutes.
+    Soak {
+        /// Minutes.
+        minutes: f64,
+    },
     /// Print usage.
     Help,
 }
@@ -63,10 +70,19 @@ fn parse(args: &[String]) -> Result<Task, String> {
     };
     let mut port = DEFAULT_PORT;
     let mut optimise = true;
+    let mut minutes = 10.0;
     let mut iter = rest.iter();
     while let Some(arg) = iter.next() {
         match arg.as_str() {
             "--no-opt" if command != "test" => optimise = false,
+            "--minutes" if command == "soak" => {
+                let value = iter.next().ok_or("--minutes needs a value")?;
+                minutes = value
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|m| *m > 0.0 && m.is_finite())
+                    .ok_or(format!("bad minutes `{value}` (a positive number)"))?;
+            }
             "--port" if command == "serve" => {
                 let value = iter.next().ok_or("--port needs a value")?;
                 port = value.parse().map_err(|_| format!("bad port `{value}`"))?;
@@ -85,6 +101,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
         "dist" => Ok(Task::Dist { optimise }),
         "test" => Ok(Task::Test),
         "bench" => Ok(Task::Bench),
+        "soak" => Ok(Task::Soak { minutes }),
         "help" | "--help" | "-h" => Ok(Task::Help),
         other => Err(format!("unknown command `{other}`")),
     }
@@ -107,6 +124,13 @@ fn run(task: Task) -> cmd::Result<()> {
         Task::Dist { optimise } => site::build(optimise).map(|_| ()),
         Task::Test => suite::run(),
         Task::Bench => bench(),
+        Task::Soak { minutes } => {
+            tools::ensure_browser()?;
+            let dist = site::build(true)?;
+            let server = serve::start(&dist, 0)?;
+            println!("xtask: soak of {minutes} min against {}", server.url());
+            cmd::run(&mut suite::soak_command(&server.url(), minutes))
+        }
         Task::Help => {
             println!("{USAGE}");
             Ok(())
@@ -169,6 +193,11 @@ mod tests {
         assert_eq!(parse(&args(&[])), Ok(Task::Help));
         assert_eq!(parse(&args(&["test"])), Ok(Task::Test));
         assert_eq!(parse(&args(&["bench"])), Ok(Task::Bench));
+        assert_eq!(
+            parse(&args(&["soak", "--minutes", "3"])),
+            Ok(Task::Soak { minutes: 3.0 })
+        );
+        assert!(parse(&args(&["soak", "--minutes", "-1"])).is_err());
         assert_eq!(
             parse(&args(&["dist", "--no-opt"])),
             Ok(Task::Dist { optimise: false })

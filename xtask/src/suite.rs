@@ -216,11 +216,27 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let dist = suite.step("build site (dist/)", || site::build(true))?;
     let server = suite.step("serve dist/", || serve::start(&dist, 0))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
-    let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture");
+    let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture --skip soak");
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    suite.tests("page (headless Chromium)", page)
+    suite.tests("page (headless Chromium)", page)?;
+    suite.tests(
+        &format!("soak ({CI_SOAK_MINUTES} min, headless Chromium)"),
+        soak_command(&server.url(), CI_SOAK_MINUTES),
+    )
+}
+
+/// Minutes of the soak inside `cargo xtask test`.
+const CI_SOAK_MINUTES: f64 = 2.0;
+
+/// The page test's soak against `url` for `minutes`.
+pub fn soak_command(url: &str, minutes: f64) -> Command {
+    let mut soak = cargo("test -p attlab-tests --test page -- --ignored --nocapture --exact soak");
+    soak.env("ATTLAB_PAGE_URL", url);
+    soak.env("ATTLAB_SOAK_MINUTES", minutes.to_string());
+    soak.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    soak
 }
 
 #[cfg(test)]

@@ -105,7 +105,13 @@ impl Simulation {
     /// Starts `lab` with `params` (already validated) and `seed`, recording what the page
     /// shows first ([`SimOptions::page`]) in the default memory budget.
     pub fn new(lab: &'static dyn Lab, params: ParamValues, seed: u64) -> Self {
-        let standard = match Self::with_options(lab, params, seed, SimOptions::default()) {
+        // Built only to learn the series the lab has: the smallest recorder will do (a
+        // second full budget here would raise the page's high-water mark for good).
+        let probe = SimOptions {
+            budget_bytes: 0,
+            ..SimOptions::default()
+        };
+        let standard = match Self::with_options(lab, params, seed, probe) {
             Ok(sim) => sim,
             // The standard selection names no series, so it cannot be unknown.
             Err(e) => unreachable!("{e}"),
@@ -202,6 +208,12 @@ impl Simulation {
         let truth = sim.run.truth.state();
         sim.record(&truth);
         Ok(sim)
+    }
+
+    /// Gives the recorder's memory back (an empty recorder of the same series): for a
+    /// simulation about to be replaced, so the old and the new budget are never held at once.
+    pub fn release_recorder(&mut self) {
+        self.recorder = Recorder::with_window(Vec::new(), 2);
     }
 
     /// The log being replayed, if this is a replay.

@@ -292,9 +292,7 @@ const TRAIL_POINTS: usize = 600;
 /// The last [`TRAIL_ROWS`] full-rate values of series `j`, thinned to [`TRAIL_POINTS`]
 /// (always keeping the newest).
 fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
-    let all = rec.recent_vec(j);
-    let start = all.len().saturating_sub(TRAIL_ROWS);
-    let tail = &all[start..];
+    let tail = rec.recent_tail(j, TRAIL_ROWS);
     let stride = (tail.len() / TRAIL_POINTS).max(1);
     let mut out: Vec<f64> = tail.iter().step_by(stride).copied().collect();
     if let Some(last) = tail.last()
