@@ -502,6 +502,40 @@ fn page_renders_without_errors() {
             Err(e) => problems.push(format!("#lab={id}: taking a screenshot failed: {e}")),
         }
     }
+    // Presenter mode from its link: frames, no console error, and a screenshot.
+    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
+    match session.call(
+        "POST",
+        "/url",
+        Some(&json!({ "url": format!("{base}#lab=p3&presenter=1") })),
+    ) {
+        Ok(_) => {
+            let status = wait_for_frames(&session);
+            problems.extend(
+                status_problems(&status)
+                    .into_iter()
+                    .map(|p| format!("presenter: {p}")),
+            );
+            if let Ok(entries) = session.console() {
+                problems.extend(
+                    console_problems(&entries)
+                        .into_iter()
+                        .map(|p| format!("presenter: {p}")),
+                );
+            }
+            if let Ok(png_bytes) = session.screenshot() {
+                let path = out_dir().join("screenshot-presenter.png");
+                std::fs::write(&path, &png_bytes).expect("save the screenshot");
+                println!("page test: screenshot saved to {}", path.display());
+                problems.extend(
+                    screenshot_problems(&png_bytes)
+                        .into_iter()
+                        .map(|p| format!("presenter: {p}")),
+                );
+            }
+        }
+        Err(e) => problems.push(format!("presenter: navigate failed: {e}")),
+    }
     drop(session);
     assert!(
         problems.is_empty(),

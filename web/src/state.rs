@@ -123,6 +123,8 @@ pub enum Command {
     CopyLink,
     /// Show the next view alone over the whole central area (then the plots, then all).
     CycleFocus,
+    /// Hide (or show again) the source with this index (1 + estimator index) everywhere.
+    ToggleSource(usize),
     /// Copy a pandas snippet that loads the exported CSV and draws the current plot tab.
     CopyPython,
     /// Presenter mode on or off: large type, thick lines, only the controls that matter.
@@ -179,6 +181,8 @@ pub struct AppState {
     pub plots: plots::PlotState,
     /// One view at full size, or all.
     pub focus: Focus,
+    /// Sources (1 + estimator index) hidden in every view and plot.
+    pub hidden: Vec<usize>,
     /// Presenter mode: large type, thick lines, only the controls that matter.
     pub presenter: bool,
     /// Which estimator the 3D ghost shows.
@@ -217,6 +221,7 @@ impl AppState {
             speed,
             plots,
             focus: Focus::All,
+            hidden: Vec::new(),
             presenter: false,
             ghost_index: 0,
             messages: Vec::new(),
@@ -269,6 +274,7 @@ impl AppState {
             Command::SelectLab(lab) => {
                 self.plots = plots::PlotState::for_lab(lab);
                 self.focus = Focus::All;
+                self.hidden.clear();
                 self.sim.release_recorder();
                 self.sweep = None;
                 self.sim = simulation(
@@ -380,6 +386,12 @@ impl AppState {
             Command::SetShowOutages(on) => self.plots.show_outages = on,
             Command::CopyLink => self.clipboard = Some(format!("#{}", self.fragment())),
             Command::CycleFocus => self.focus = self.focus.next(self.sim.lab().views().len()),
+            Command::ToggleSource(i) => match self.hidden.iter().position(|h| *h == i) {
+                Some(k) => {
+                    self.hidden.remove(k);
+                }
+                None => self.hidden.push(i),
+            },
             Command::CopyPython => {
                 self.clipboard = Some(self.python_snippet());
                 self.messages.push(Message::info(

@@ -287,3 +287,20 @@ fn copy_as_python_names_the_csv_and_the_tabs_columns() {
         assert!(snippet.contains(column), "{column} missing from\n{snippet}");
     }
 }
+
+/// One click on an estimator's chip hides it everywhere; a second shows it again.
+#[test]
+fn an_estimator_chip_hides_and_shows_it() {
+    let mut h = harness("p4");
+    h.run();
+    h.get_by_label_contains("● cf").click();
+    h.run();
+    assert_eq!(
+        h.state().state.hidden,
+        vec![2],
+        "cf is the second estimator: source 2"
+    );
+    h.get_by_label_contains("● cf").click();
+    h.run();
+    assert!(h.state().state.hidden.is_empty());
+}

@@ -53,6 +53,7 @@ pub fn central(
 
 /// The plot tabs and the selected plot.
 fn draw_plots(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    estimator_legend(ui, app, commands);
     plot_tabs(ui, app, commands);
     plots::show(
         ui,
@@ -61,6 +62,7 @@ fn draw_plots(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         app.sim.lab().outages(),
         &app.plots,
         if app.presenter { 3.0 } else { 1.4 },
+        &app.hidden,
     );
 }
 
@@ -106,17 +108,29 @@ fn draw_view(
                 }
             });
         }
-        ViewKind::Dial => single_axis::dial(ui, rect, &axis_sources(app)),
+        ViewKind::Dial => {
+            let (sources, shown) = axis_sources(app);
+            let visible: Vec<_> = sources
+                .into_iter()
+                .zip(shown)
+                .filter(|(_, v)| *v)
+                .map(|(s, _)| s)
+                .collect();
+            single_axis::dial(ui, rect, &visible);
+        }
         ViewKind::PhasePortrait => {
-            let sources = axis_sources(app);
+            // Trails are kept for hidden sources too, so showing one again loses nothing.
+            let (sources, shown) = axis_sources(app);
             view.trails.push(app.sim.t_s(), &sources);
-            single_axis::phase_portrait(ui, rect, &view.trails, &sources);
+            single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown);
         }
     }
 }
 
-/// Truth and every single-axis estimator: angle and rate about the axis, in source colours.
-fn axis_sources(app: &AppState) -> Vec<single_axis::AxisSource> {
+/// Truth and every single-axis estimator: angle and rate about the axis, in source colours,
+/// and whether each is shown.
+fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
+    let mut shown = vec![true];
     let truth = app.sim.truth();
     let mut out = vec![single_axis::AxisSource {
         name: "truth".into(),
@@ -132,6 +146,7 @@ fn axis_sources(app: &AppState) -> Vec<single_axis::AxisSource> {
         .enumerate()
     {
         if let Some(angle) = est.angle_rad {
+            shown.push(!app.hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
                 name: e.id().to_string(),
                 color: plots::source_color(i + 1),
@@ -140,7 +155,38 @@ fn axis_sources(app: &AppState) -> Vec<single_axis::AxisSource> {
             });
         }
     }
-    out
+    (out, shown)
+}
+
+/// One chip per estimator in its colour: a click hides it (or shows it again) in every
+/// view and plot.
+fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label(egui::RichText::new("Estimators:").small());
+        for (i, e) in app.sim.estimators().iter().enumerate() {
+            let source = i + 1;
+            let shown = !app.hidden.contains(&source);
+            let color = if shown {
+                plots::source_color(source)
+            } else {
+                egui::Color32::from_gray(90)
+            };
+            let text = egui::RichText::new(format!("● {}", e.id()))
+                .small()
+                .color(color);
+            if ui
+                .selectable_label(shown, text)
+                .on_hover_text(format!(
+                    "{} — click to {} it everywhere",
+                    e.label(),
+                    if shown { "hide" } else { "show" }
+                ))
+                .clicked()
+            {
+                commands.push(Command::ToggleSource(source));
+            }
+        }
+    });
 }
 
 /// The tab row and the options of the selected tab.
@@ -253,6 +299,9 @@ fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
     );
     let mut out = Vec::new();
     for (i, (src, label)) in names.iter().enumerate() {
+        if app.hidden.contains(&i) {
+            continue;
+        }
         let col = |q: &str| {
             rec.index_of(&format!("{src}.{q}"))
                 .map(|j| recent_tail(rec, j))

@@ -8,38 +8,43 @@ use egui::{Color32, RichText, Ui};
 
 /// Draws the left panel and collects commands.
 pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    egui::Panel::left("controls")
-        .resizable(true)
-        .default_size(300.0)
-        .show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| {
-                ui.heading("Attitude Lab");
-                lab_picker(ui, app, commands);
-                ui.separator();
-                run_controls(ui, app, commands);
-                ui.separator();
-                if app.presenter {
-                    // For the projector: the presets carry the lesson; the sliders wait
-                    // behind one click.
-                    presets(ui, app, commands);
-                    egui::CollapsingHeader::new("All parameters")
-                        .default_open(false)
-                        .show(ui, |ui| parameters(ui, app, commands));
-                    super::lab_tools::accuracy(ui, app, commands);
-                    messages(ui, app, commands);
-                    return;
-                }
-                parameters(ui, app, commands);
-                ui.separator();
+    // Presenter mode: a narrow panel, so the views keep the projector's width.
+    let panel = if app.presenter {
+        egui::Panel::left("controls_presenter").exact_size(230.0)
+    } else {
+        egui::Panel::left("controls")
+            .resizable(true)
+            .default_size(300.0)
+    };
+    panel.show(ui, |ui| {
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            ui.heading("Attitude Lab");
+            lab_picker(ui, app, commands);
+            ui.separator();
+            run_controls(ui, app, commands);
+            ui.separator();
+            if app.presenter {
+                // For the projector: the presets carry the lesson; the sliders wait
+                // behind one click.
+                presets(ui, app, commands);
+                egui::CollapsingHeader::new("All parameters")
+                    .default_open(false)
+                    .show(ui, |ui| parameters(ui, app, commands));
                 super::lab_tools::accuracy(ui, app, commands);
-                super::sweeps::sweeps(ui, app, commands);
-                super::lab_tools::laboratory_mode(ui, app, commands);
-                outputs(ui, app, commands);
                 messages(ui, app, commands);
-                ui.separator();
-                explanation(ui, app);
-            });
+                return;
+            }
+            parameters(ui, app, commands);
+            ui.separator();
+            super::lab_tools::accuracy(ui, app, commands);
+            super::sweeps::sweeps(ui, app, commands);
+            super::lab_tools::laboratory_mode(ui, app, commands);
+            outputs(ui, app, commands);
+            messages(ui, app, commands);
+            ui.separator();
+            explanation(ui, app);
         });
+    });
 }
 
 fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
@@ -62,7 +67,7 @@ fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let label = if app.playing { "Pause" } else { "▶ Play" };
         if ui.button(label).clicked() {
             commands.push(Command::SetPlaying(!app.playing));

@@ -34,9 +34,9 @@ pub fn source_color(source_index: usize) -> Color32 {
 }
 
 /// Colours of a figure's series: an estimator's series in its source colour when it is that
-/// source's only series in the figure; the truth's first series white; everything else
-/// (a second truth series, sensor readings, several series of one source) in colours no
-/// estimator uses, by position.
+/// source's only series in the figure; several series of one estimator (its x, y, z) in the
+/// bright palette by position, so they stay apart; the truth's first series white; a second
+/// truth series and sensor readings in muted colours no estimator uses.
 pub fn figure_colors(specs: &[&SeriesSpec]) -> Vec<Color32> {
     const OTHERS: [Color32; 5] = [
         Color32::from_rgb(150, 150, 150),
@@ -50,14 +50,18 @@ pub fn figure_colors(specs: &[&SeriesSpec]) -> Vec<Color32> {
     let mut truth_seen = false;
     specs
         .iter()
-        .map(|s| {
+        .enumerate()
+        .map(|(position, s)| {
             let is_truth = s.name.starts_with("truth.");
             if is_truth && !truth_seen {
                 truth_seen = true;
                 return source_color(0);
             }
-            if !is_truth && s.source > 0 && count(s.source) == 1 {
-                return source_color(s.source);
+            if !is_truth && s.source > 0 {
+                if count(s.source) == 1 {
+                    return source_color(s.source);
+                }
+                return source_color(position + 1);
             }
             other += 1;
             OTHERS[(other - 1) % OTHERS.len()]
@@ -148,6 +152,7 @@ pub fn show(
     outages: &[Outage],
     state: &PlotState,
     line_width: f32,
+    hidden: &[usize],
 ) {
     let tab = match state.tab {
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
@@ -195,6 +200,9 @@ pub fn show(
             }
             for (i, color) in lines {
                 let spec = &rec.specs()[i];
+                if spec.source > 0 && hidden.contains(&spec.source) {
+                    continue;
+                }
                 let mut pts = rec.plot_points(i, MAX_POINTS);
                 let mut label = spec.header();
                 if log {
@@ -272,5 +280,14 @@ mod tests {
             assert!((0..17).all(|s| *other != source_color(s)), "{other:?}");
         }
         assert_ne!(c[1], c[2]);
+        // One filter's three axes: three different bright colours.
+        let axes = [
+            spec("st.err_x_deg", 3),
+            spec("st.err_y_deg", 3),
+            spec("st.err_z_deg", 3),
+        ];
+        let refs: Vec<&SeriesSpec> = axes.iter().collect();
+        let c = figure_colors(&refs);
+        assert!(c[0] != c[1] && c[1] != c[2] && c[0] != c[2], "{c:?}");
     }
 }

@@ -141,8 +141,15 @@ fn needle(painter: &Painter, center: Pos2, length: f32, a: f64, stroke: Stroke) 
     painter.line_segment([center, center + direction(a) * length], stroke);
 }
 
-/// The phase portrait: rate against angle, a trail per source, the newest point dotted.
-pub fn phase_portrait(ui: &mut Ui, rect: Rect, trails: &PhaseTrails, sources: &[AxisSource]) {
+/// The phase portrait: rate against angle, a trail per source (those `shown`), the newest
+/// point dotted.
+pub fn phase_portrait(
+    ui: &mut Ui,
+    rect: Rect,
+    trails: &PhaseTrails,
+    sources: &[AxisSource],
+    shown: &[bool],
+) {
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         ui.label(
             egui::RichText::new("Phase portrait: rate against angle (the recent trail)").small(),
@@ -153,7 +160,13 @@ pub fn phase_portrait(ui: &mut Ui, rect: Rect, trails: &PhaseTrails, sources: &[
             .x_axis_label("angle [°]")
             .y_axis_label("rate [°/s]")
             .show(ui, |plot| {
-                for ((name, trail), s) in trails.trails.iter().zip(sources) {
+                for (((name, trail), s), _) in trails
+                    .trails
+                    .iter()
+                    .zip(sources)
+                    .zip(shown)
+                    .filter(|(_, v)| **v)
+                {
                     let pts: Vec<[f64; 2]> = trail.iter().copied().collect();
                     if let Some(last) = pts.last().copied() {
                         plot.line(Line::new(name.clone(), pts).color(s.color).width(1.2));
