@@ -425,6 +425,30 @@ fn screenshot_problems(png_bytes: &[u8]) -> Vec<String> {
     problems
 }
 
+/// The console's problems since the last read and the screenshot's (saved as
+/// `target/page-test/{file}`), each prefixed with `tag`; a console or screenshot that
+/// cannot be read is a problem too.
+fn console_and_screenshot(session: &Session<'_>, tag: &str, file: &str) -> Vec<String> {
+    let mut problems = Vec::new();
+    match session.console() {
+        Ok(entries) => problems.extend(console_problems(&entries)),
+        Err(e) => problems.push(format!("reading the console log failed: {e}")),
+    }
+    match session.screenshot() {
+        Ok(png_bytes) => {
+            let path = out_dir().join(file);
+            std::fs::write(&path, &png_bytes).expect("save the screenshot");
+            println!("page test: screenshot saved to {}", path.display());
+            problems.extend(screenshot_problems(&png_bytes));
+        }
+        Err(e) => problems.push(format!("taking a screenshot failed: {e}")),
+    }
+    problems
+        .into_iter()
+        .map(|p| format!("{tag}: {p}"))
+        .collect()
+}
+
 /// Loads the page, waits for frames, and checks status, console and screenshot.
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
@@ -443,19 +467,11 @@ fn page_renders_without_errors() {
     let status = wait_for_frames(&session);
     println!("page test: attlabStatus = {status}");
     let mut problems = status_problems(&status);
-    match session.console() {
-        Ok(entries) => problems.extend(console_problems(&entries)),
-        Err(e) => problems.push(format!("reading the console log failed: {e}")),
-    }
-    match session.screenshot() {
-        Ok(png_bytes) => {
-            let path = out_dir().join("screenshot.png");
-            std::fs::write(&path, &png_bytes).expect("save the screenshot");
-            println!("page test: screenshot saved to {}", path.display());
-            problems.extend(screenshot_problems(&png_bytes));
-        }
-        Err(e) => problems.push(format!("taking a screenshot failed: {e}")),
-    }
+    problems.extend(console_and_screenshot(
+        &session,
+        "first load",
+        "screenshot.png",
+    ));
     // Every lab by its URL: the first frames, the console and a screenshot of each.
     let base = url.split('#').next().unwrap_or(&url).to_string();
     for lab in attlab::labs::all() {
@@ -480,27 +496,11 @@ fn page_renders_without_errors() {
         if status["lab"].as_str() != Some(id) {
             problems.push(format!("#lab={id} opened lab {:?}", status["lab"]));
         }
-        match session.console() {
-            Ok(entries) => problems.extend(
-                console_problems(&entries)
-                    .into_iter()
-                    .map(|p| format!("#lab={id}: {p}")),
-            ),
-            Err(e) => problems.push(format!("#lab={id}: reading the console log failed: {e}")),
-        }
-        match session.screenshot() {
-            Ok(png_bytes) => {
-                let path = out_dir().join(format!("screenshot-{id}.png"));
-                std::fs::write(&path, &png_bytes).expect("save the screenshot");
-                println!("page test: screenshot saved to {}", path.display());
-                problems.extend(
-                    screenshot_problems(&png_bytes)
-                        .into_iter()
-                        .map(|p| format!("#lab={id}: {p}")),
-                );
-            }
-            Err(e) => problems.push(format!("#lab={id}: taking a screenshot failed: {e}")),
-        }
+        problems.extend(console_and_screenshot(
+            &session,
+            &format!("#lab={id}"),
+            &format!("screenshot-{id}.png"),
+        ));
     }
     // Presenter mode from its link: frames, no console error, and a screenshot.
     let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
@@ -516,23 +516,11 @@ fn page_renders_without_errors() {
                     .into_iter()
                     .map(|p| format!("presenter: {p}")),
             );
-            if let Ok(entries) = session.console() {
-                problems.extend(
-                    console_problems(&entries)
-                        .into_iter()
-                        .map(|p| format!("presenter: {p}")),
-                );
-            }
-            if let Ok(png_bytes) = session.screenshot() {
-                let path = out_dir().join("screenshot-presenter.png");
-                std::fs::write(&path, &png_bytes).expect("save the screenshot");
-                println!("page test: screenshot saved to {}", path.display());
-                problems.extend(
-                    screenshot_problems(&png_bytes)
-                        .into_iter()
-                        .map(|p| format!("presenter: {p}")),
-                );
-            }
+            problems.extend(console_and_screenshot(
+                &session,
+                "presenter",
+                "screenshot-presenter.png",
+            ));
         }
         Err(e) => problems.push(format!("presenter: navigate failed: {e}")),
     }
@@ -597,23 +585,11 @@ fn page_works_offline_after_one_visit() {
     if status["lab"].as_str() != Some("p4") {
         problems.push(format!("offline: #lab=p4 opened lab {:?}", status["lab"]));
     }
-    match session.console() {
-        Ok(entries) => problems.extend(
-            console_problems(&entries)
-                .into_iter()
-                .map(|p| format!("offline: {p}")),
-        ),
-        Err(e) => problems.push(format!("offline: reading the console log failed: {e}")),
-    }
-    if let Ok(png_bytes) = session.screenshot() {
-        let path = out_dir().join("screenshot-offline.png");
-        std::fs::write(&path, &png_bytes).expect("save the screenshot");
-        problems.extend(
-            screenshot_problems(&png_bytes)
-                .into_iter()
-                .map(|p| format!("offline: {p}")),
-        );
-    }
+    problems.extend(console_and_screenshot(
+        &session,
+        "offline",
+        "screenshot-offline.png",
+    ));
     drop(session);
     assert!(
         problems.is_empty(),

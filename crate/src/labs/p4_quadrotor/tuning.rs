@@ -48,16 +48,13 @@ pub const TABLE1: SweepScoring = SweepScoring {
 
 /// Scoring of the Q landscape: the heat map shows the first objective, J(0.5, 0.5).
 const LANDSCAPE: SweepScoring = SweepScoring {
-    names: SCORE_NAMES,
-    help: HELP,
-    series: SCORED,
-    score: score_run,
     objectives: &[
         ("J(α = 0.5, β = 0.5)", &[0.5, 0.5, 0.0, 0.0]),
         ("MSE", &[1.0, 0.0, 0.0, 0.0]),
         ("t_tr", &[0.0, 1.0, 0.0, 0.0]),
     ],
     overlay: Some(gamma_lines),
+    ..TABLE1
 };
 
 /// Scoring on a recorded log, where there is no truth: θ̂ against the accelerometer angle
