@@ -3,6 +3,7 @@
 //! - `cargo xtask serve [--port 8080] [--no-opt]`: build the site into `dist/` and serve it on
 //!   `127.0.0.1:PORT`.
 //! - `cargo xtask dist [--no-opt]`: build the site into `dist/` only.
+//! - `cargo xtask size`: the wasm raw, gzipped and brotli'd, and a twiggy profile by crate.
 //! - `cargo xtask test`: fmt, clippy (native and wasm), native tests, browser tests, then the
 //!   page test against the built site; ends with a summary and `N passed, M failed`.
 //!
@@ -12,6 +13,7 @@
 mod cmd;
 mod serve;
 mod site;
+mod size;
 mod suite;
 mod tools;
 mod wasm;
@@ -32,6 +34,8 @@ commands:
                                 Chromium (wasm criterion bench of the labs' timing items)
   soak [--minutes M]            run the page through every lab at top speed in headless
                                 Chromium for M minutes (default 10), sampling its memory
+  size                          build dist/, print the wasm raw, gzipped and brotli'd, and
+                                a twiggy profile of it by crate
 
 --no-opt skips wasm-opt (faster build, bigger wasm).";
 
@@ -59,6 +63,8 @@ enum Task {
         /// Minutes.
         minutes: f64,
     },
+    /// The wasm's sizes and a twiggy profile by crate.
+    Size,
     /// Print usage.
     Help,
 }
@@ -102,6 +108,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
         "test" => Ok(Task::Test),
         "bench" => Ok(Task::Bench),
         "soak" => Ok(Task::Soak { minutes }),
+        "size" => Ok(Task::Size),
         "help" | "--help" | "-h" => Ok(Task::Help),
         other => Err(format!("unknown command `{other}`")),
     }
@@ -131,6 +138,7 @@ fn run(task: Task) -> cmd::Result<()> {
             println!("xtask: soak of {minutes} min against {}", server.url());
             cmd::run(&mut suite::soak_command(&server.url(), minutes))
         }
+        Task::Size => size::run(),
         Task::Help => {
             println!("{USAGE}");
             Ok(())

@@ -57,6 +57,14 @@ pub fn build(optimise: bool) -> Result<PathBuf> {
     Ok(dist)
 }
 
+/// rustc's wasm for the page, before wasm-bindgen (it still has its function names).
+pub fn raw_wasm() -> PathBuf {
+    cmd::target_dir()
+        .join(tools::WASM_TARGET)
+        .join(WEB_PROFILE)
+        .join(format!("{WEB_LIB}.wasm"))
+}
+
 /// `cargo build --profile web --target wasm32-unknown-unknown -p attlab-web`.
 fn build_wasm() -> Result<PathBuf> {
     let mut build = cmd::cargo();
@@ -69,10 +77,7 @@ fn build_wasm() -> Result<PathBuf> {
     ]);
     build.args(["-p", WEB_PACKAGE, "--lib"]);
     cmd::run(&mut build)?;
-    let wasm = cmd::target_dir()
-        .join(tools::WASM_TARGET)
-        .join(WEB_PROFILE)
-        .join(format!("{WEB_LIB}.wasm"));
+    let wasm = raw_wasm();
     if wasm.is_file() {
         Ok(wasm)
     } else {
@@ -163,14 +168,28 @@ fn gzip_len(bytes: &[u8]) -> Result<usize> {
     Ok(gz.finish()?.len())
 }
 
-/// Prints the size of `wasm`, raw and gzipped at the best compression level.
+/// Length of `bytes` brotli-compressed at quality 11 with a 4-MiB window (what a host that
+/// precompresses static files serves).
+fn brotli_len(bytes: &[u8]) -> Result<usize> {
+    let mut out = Vec::new();
+    let params = brotli::enc::BrotliEncoderParams {
+        quality: 11,
+        lgwin: 22,
+        ..Default::default()
+    };
+    brotli::BrotliCompress(&mut &bytes[..], &mut out, &params)?;
+    Ok(out.len())
+}
+
+/// Prints the size of `wasm`, raw, gzipped at the best level and brotli'd at quality 11.
 fn report_size(wasm: &Path) -> Result<()> {
     let bytes = read(wasm)?;
     println!(
-        "xtask: {}: {} raw, {} gzipped",
+        "xtask: {}: {} raw, {} gzipped, {} brotli",
         wasm.file_name().unwrap_or_default().to_string_lossy(),
         human(bytes.len()),
-        human(gzip_len(&bytes)?)
+        human(gzip_len(&bytes)?),
+        human(brotli_len(&bytes)?)
     );
     Ok(())
 }

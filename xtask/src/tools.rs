@@ -87,6 +87,24 @@ fn ensure_wasm_bindgen() -> Result<()> {
     cmd::run(&mut install)
 }
 
+/// The `twiggy` version `cargo xtask size` uses.
+pub const TWIGGY_VERSION: &str = "0.8.0";
+
+/// `cargo install twiggy --version 0.8.0` unless `twiggy --version` reports it (only
+/// `cargo xtask size` needs it).
+pub fn ensure_twiggy() -> Result<()> {
+    let have = cmd::probe(cmd::new("twiggy").arg("--version"));
+    if have.as_deref().is_some_and(|v| v.contains(TWIGGY_VERSION)) {
+        return Ok(());
+    }
+    println!("xtask: twiggy {TWIGGY_VERSION} needed; installing (a minute or two)");
+    let mut install = cmd::cargo();
+    install
+        .args(["install", "twiggy", "--version", TWIGGY_VERSION])
+        .stdin(Stdio::null());
+    cmd::run(&mut install)
+}
+
 /// `npm install --prefix .tools binaryen@132` unless `.tools` already has that `wasm-opt`.
 fn ensure_binaryen() -> Result<()> {
     let wanted = format!("version {BINARYEN_VERSION}");

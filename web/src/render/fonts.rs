@@ -1,25 +1,161 @@
-//! Fonts: egui's default proportional font lacks several symbols the labs use (combining
-//! accents as in φ̇, ϑ, ᵀ, primes, arrows, ▶ ✕ ⟲); a 60-KB subset of DejaVu Sans
-//! (`assets/fonts/`, made by its `subset.sh`) is added as the fallback after it.
+//! Fonts: the app ships its own subsets instead of egui's bundled fonts (eframe's
+//! `default_fonts` feature is off; the whole Ubuntu-Light and Hack files were 0.67 MB of the
+//! wasm). `assets/fonts/subset.py` cuts them:
+//! - `AttLabSans` (Ubuntu-Light: Latin, Greek, punctuation, super/subscripts),
+//! - `AttLabMono` (Hack, the same ranges),
+//! - `DejaVuSans-symbols`: what the labs' labels use beyond those — combining accents as in φ̇,
+//!   ϑ, ᵀ, primes, arrows, maths, ▶ ✕ ⟲ — as the fallback of both families.
+//!
+//! In the browser, a character none of them has (a CJK column name in an imported log) is still
+//! drawn by eframe's canvas glyph fallback; on the desktop it shows as a box.
 
 use std::sync::Arc;
 
-/// The subset font.
+/// The proportional font (a subset of Ubuntu-Light).
+const SANS: &[u8] = include_bytes!("../../../assets/fonts/AttLabSans.ttf");
+/// The monospace font (a subset of Hack).
+const MONO: &[u8] = include_bytes!("../../../assets/fonts/AttLabMono.ttf");
+/// The symbols fallback (a subset of DejaVu Sans).
 const SYMBOLS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans-symbols.ttf");
 
-/// Installs the fallback font on `ctx` (both families).
-pub fn install(ctx: &egui::Context) {
-    let mut fonts = egui::FontDefinitions::default();
-    fonts.font_data.insert(
-        "dejavu-symbols".to_owned(),
-        Arc::new(egui::FontData::from_static(SYMBOLS)),
-    );
-    for family in [egui::FontFamily::Proportional, egui::FontFamily::Monospace] {
-        fonts
-            .families
-            .entry(family)
-            .or_default()
-            .push("dejavu-symbols".to_owned());
+/// The app's font set: each family's fonts in fallback order.
+pub fn definitions() -> egui::FontDefinitions {
+    let mut fonts = egui::FontDefinitions::empty();
+    for (name, bytes) in [("sans", SANS), ("mono", MONO), ("symbols", SYMBOLS)] {
+        fonts.font_data.insert(
+            name.to_owned(),
+            Arc::new(egui::FontData::from_static(bytes)),
+        );
     }
-    ctx.set_fonts(fonts);
+    let chain = |names: &[&str]| names.iter().map(|n| (*n).to_owned()).collect::<Vec<_>>();
+    fonts
+        .families
+        .insert(egui::FontFamily::Proportional, chain(&["sans", "symbols"]));
+    fonts.families.insert(
+        egui::FontFamily::Monospace,
+        chain(&["mono", "sans", "symbols"]),
+    );
+    fonts
+}
+
+/// Installs the app's fonts on `ctx`.
+pub fn install(ctx: &egui::Context) {
+    ctx.set_fonts(definitions());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeMap;
+    use std::path::Path;
+
+    /// Every non-ASCII character inside a string or char literal of `src`, with the first
+    /// place it appears. Comments (`//…`) are skipped; the scan is line-based, which is
+    /// enough for this code base (no multi-line string literals hold symbols).
+    fn literal_chars(src: &str, file: &str, out: &mut BTreeMap<char, String>) {
+        for (n, line) in src.lines().enumerate() {
+            if line.trim_start().starts_with("//") {
+                continue;
+            }
+            let mut in_str = false;
+            let mut escaped = false;
+            let mut prev = ' ';
+            for c in line.chars() {
+                if !in_str && c == '/' && prev == '/' {
+                    break;
+                }
+                if in_str {
+                    if escaped {
+                        escaped = false;
+                    } else if c == '\\' {
+                        escaped = true;
+                    } else if c == '"' {
+                        in_str = false;
+                    } else if !c.is_ascii() {
+                        out.entry(c).or_insert_with(|| format!("{file}:{}", n + 1));
+                    }
+                } else if c == '"' {
+                    in_str = true;
+                } else if !c.is_ascii() {
+                    // Char literals ('▶') count too.
+                    out.entry(c).or_insert_with(|| format!("{file}:{}", n + 1));
+                }
+                prev = c;
+            }
+        }
+    }
+
+    fn scan(dir: &Path, out: &mut BTreeMap<char, String>) {
+        for entry in std::fs::read_dir(dir).expect("source folder") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                scan(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).expect("source file");
+                literal_chars(&text, &path.display().to_string(), out);
+            }
+        }
+    }
+
+    /// A label that uses a character none of the subsets has would show as a box on the
+    /// desktop (and lean on the browser's fonts in the page): regenerate the subsets with
+    /// `assets/fonts/subset.py` after adding its range there.
+    #[test]
+    fn every_label_has_a_glyph() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let mut chars = BTreeMap::new();
+        for dir in ["web/src", "crate/src"] {
+            scan(&root.join(dir), &mut chars);
+        }
+        assert!(
+            chars.contains_key(&'ϑ') && chars.contains_key(&'▶'),
+            "the scan found neither ϑ (p3's labels) nor ▶ (the run button): {} characters",
+            chars.len()
+        );
+        let ctx = egui::Context::default();
+        install(&ctx);
+        ctx.run_ui(egui::RawInput::default(), |_| {})
+            .textures_delta
+            .clear();
+        let missing: Vec<String> = ctx.fonts_mut(|fonts| {
+            chars
+                .iter()
+                .filter(|(c, _)| !c.is_control())
+                .filter(|(c, _)| {
+                    [
+                        egui::FontId::proportional(14.0),
+                        egui::FontId::monospace(14.0),
+                    ]
+                    .iter()
+                    .any(|id| !fonts.has_glyph(id, **c))
+                })
+                .map(|(c, at)| format!("{c:?} U+{:04X} at {at}", *c as u32))
+                .collect()
+        });
+        assert!(missing.is_empty(), "no glyph for: {missing:#?}");
+    }
+
+    /// The subsets keep what a number, a unit or a Greek symbol needs.
+    #[test]
+    fn text_ranges_are_covered() {
+        let ctx = egui::Context::default();
+        install(&ctx);
+        ctx.run_ui(egui::RawInput::default(), |_| {})
+            .textures_delta
+            .clear();
+        let sample =
+            "0123456789 ABCxyz °±×÷µ·² αβγδθσφψωΔΣΦΩ –—‘’“”…′″ ⁻¹ ₀₁ →←↑↓ ≈≤≥∞√∑∫ φ̇ ϑ ᵀ ▶✕⟲";
+        for family in [
+            egui::FontId::proportional(14.0),
+            egui::FontId::monospace(14.0),
+        ] {
+            let lacking: Vec<char> = ctx.fonts_mut(|f| {
+                sample
+                    .chars()
+                    .filter(|c| !c.is_whitespace() && !f.has_glyph(&family, *c))
+                    .collect()
+            });
+            assert!(lacking.is_empty(), "{family:?} lacks {lacking:?}");
+        }
+    }
 }
