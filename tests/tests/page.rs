@@ -524,12 +524,79 @@ fn page_renders_without_errors() {
         }
         Err(e) => problems.push(format!("presenter: navigate failed: {e}")),
     }
+    problems.extend(png_export_problems(&session, &base));
     drop(session);
     assert!(
         problems.is_empty(),
         "page test failed:\n  - {}",
         problems.join("\n  - ")
     );
+}
+
+/// Presses `key` (KeyboardEvent `key` and `code`) on the app's canvas, focusing it first
+/// (eframe reads keys only while its canvas has the focus).
+fn press_key(session: &Session<'_>, key: &str, code: &str) -> Result<(), String> {
+    session.execute(
+        "const c = document.querySelector('canvas'); c.focus(); \
+         c.dispatchEvent(new FocusEvent('focus'));",
+    )?;
+    sleep(Duration::from_millis(300));
+    session.execute(&format!(
+        "const c = document.querySelector('canvas'); \
+         for (const type of ['keydown', 'keyup']) {{ \
+           c.dispatchEvent(new KeyboardEvent(type, {{ key: '{key}', code: '{code}', bubbles: true }})); \
+         }}"
+    ))?;
+    Ok(())
+}
+
+/// Key p on p1 saves a PNG of every plot tab: the status reports a plots picture taller
+/// than one tab (the tabs are stacked) within 30 s.
+fn png_export_problems(session: &Session<'_>, base: &str) -> Vec<String> {
+    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
+    if let Err(e) = session.call(
+        "POST",
+        "/url",
+        Some(&json!({ "url": format!("{base}#lab=p1") })),
+    ) {
+        return vec![format!("png: navigate failed: {e}")];
+    }
+    let status = wait_for_frames(session);
+    let mut problems: Vec<String> = status_problems(&status)
+        .into_iter()
+        .map(|p| format!("png: {p}"))
+        .collect();
+    if let Err(e) = press_key(session, "p", "KeyP") {
+        problems.push(format!("png: pressing p failed: {e}"));
+        return problems;
+    }
+    let start = Instant::now();
+    let mut png = Value::Null;
+    while start.elapsed() < Duration::from_secs(30) && png.is_null() {
+        sleep(Duration::from_millis(250));
+        if let Ok(Value::String(text)) = session.execute(STATUS_SCRIPT) {
+            let status: Value = serde_json::from_str(&text).unwrap_or(Value::Null);
+            png = status["lastPng"].clone();
+        }
+    }
+    println!("page test: PNG export: {png}");
+    let name = png["name"].as_str().unwrap_or_default();
+    let (w, h, n) = (
+        png["width"].as_f64().unwrap_or(0.0),
+        png["height"].as_f64().unwrap_or(0.0),
+        png["bytes"].as_f64().unwrap_or(0.0),
+    );
+    if !name.starts_with("attlab-p1-") || !name.ends_with("-plots.png") {
+        problems.push(format!(
+            "png: no plots PNG within 30 s of key p (lastPng = {png})"
+        ));
+    } else if w < 300.0 || h < 2.0 * 150.0 || n < 5000.0 {
+        problems.push(format!(
+            "png: {name} is {w}×{h} pixels, {n} bytes: not several stacked plot tabs"
+        ));
+    }
+    problems.extend(console_and_screenshot(session, "png", "screenshot-png.png"));
+    problems
 }
 
 /// The page works with the network cut after one visit: the service worker serves it.

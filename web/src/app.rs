@@ -1,11 +1,12 @@
 //! The eframe glue: each frame advances the simulation within a time budget, lets the
 //! panels draw the state and collect commands, then applies the commands in one place.
 
+use crate::export::{Capture, Regions, Step};
 use crate::panels;
 use crate::platform;
 use crate::render::body3d;
-use crate::state::{AppState, Command, SWEEP_BUDGET, View};
-use attlab::model::{Lab, ParamValues};
+use crate::state::{AppState, Command, Message, PngTarget, SWEEP_BUDGET, View};
+use attlab::model::{Lab, ParamValues, ViewKind};
 use web_time::Instant;
 
 /// The app: the state, the widgets' view, and what only the frame loop needs.
@@ -18,6 +19,12 @@ pub struct AttLabApp {
     app_errors: Vec<String>,
     frames: u64,
     zoomed_for: Option<bool>,
+    /// A PNG capture in progress.
+    capture: Option<Capture>,
+    /// Where the central area drew each part in the last frame.
+    regions: Regions,
+    /// The last PNG saved: name, width, height, bytes (published for the page test).
+    last_png: Option<(String, usize, usize, usize)>,
 }
 
 impl AttLabApp {
@@ -46,6 +53,9 @@ impl AttLabApp {
             app_errors: Vec::new(),
             frames: 0,
             zoomed_for: None,
+            capture: None,
+            regions: Regions::default(),
+            last_png: None,
         }
     }
 
@@ -64,9 +74,30 @@ impl AttLabApp {
         self.frames
     }
 
+    /// The PNG capture in progress, for a test standing in for the renderer
+    /// ([`Capture::deliver`]).
+    pub fn capture_mut(&mut self) -> Option<&mut Capture> {
+        self.capture.as_mut()
+    }
+
+    /// The last PNG saved: name, width, height and size in bytes.
+    pub fn last_png(&self) -> Option<&(String, usize, usize, usize)> {
+        self.last_png.as_ref()
+    }
+
     /// One frame of UI: draw, collect commands, apply them.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
-        self.state.advance(Instant::now());
+        match &self.capture {
+            Some(capture) => {
+                // Every part of a capture shows the same instant.
+                self.state.hold(Instant::now());
+                if self.state.plots.tab != capture.tab() {
+                    self.state.apply(Command::SelectTab(capture.tab()));
+                }
+            }
+            None => self.state.advance(Instant::now()),
+        }
+        self.state.capturing = self.capture.is_some();
         self.state.advance_sweep(SWEEP_BUDGET);
         self.state.take_picked_log();
         let mut commands: Vec<Command> = Vec::new();
@@ -80,16 +111,19 @@ impl AttLabApp {
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state);
         panels::controls(ui, &self.state, &mut commands);
+        self.regions = Regions::default();
         panels::central(
             ui,
             &self.state,
             &mut self.view,
+            &mut self.regions,
             self.gpu_ready,
             &mut commands,
         );
         for c in commands {
             self.state.apply(c);
         }
+        self.run_capture(ui.ctx());
         if let Some(text) = self.state.clipboard.take() {
             ui.ctx().copy_text(text);
         }
@@ -101,7 +135,74 @@ impl AttLabApp {
             sim_steps: self.state.sim.steps(),
             recorder_bytes: self.state.sim.recorder().memory_bytes(),
             errors: &self.app_errors,
+            last_png: self.last_png.as_ref(),
         });
+    }
+
+    /// Starts a PNG capture the panels asked for, or moves the running one on; a finished
+    /// picture is saved like the CSV (a download in the page, a file on the desktop).
+    fn run_capture(&mut self, ctx: &egui::Context) {
+        if let Some(target) = self.state.png_request.take() {
+            if self.capture.is_some() {
+                self.state
+                    .messages
+                    .push(Message::info("a PNG is being made already: one at a time"));
+            } else {
+                let tabs = panels::tabs(&self.state);
+                self.capture = Some(Capture::new(target, tabs, self.state.plots.tab));
+            }
+        }
+        let Some(capture) = self.capture.as_mut() else {
+            return;
+        };
+        let Step::Done(result) = capture.after_frame(ctx, &self.regions) else {
+            return;
+        };
+        let target = capture.target();
+        let restore = capture.restore_tab();
+        self.capture = None;
+        self.state.capturing = false;
+        if self.state.plots.tab != restore {
+            self.state.apply(Command::SelectTab(restore));
+        }
+        let name = self.png_name(target);
+        let message = result.and_then(|png| {
+            let (w, h, n) = (png.width, png.height, png.bytes.len());
+            let saved = platform::save_file(
+                &name,
+                "image/png",
+                png.bytes,
+                self.state.save_dir.as_deref(),
+            )?;
+            self.last_png = Some((name.clone(), w, h, n));
+            Ok(format!("{saved} ({w}×{h} pixels)"))
+        });
+        self.state.messages.push(match message {
+            Ok(m) => Message::info(m),
+            Err(e) => Message::error(format!("PNG export failed: {e}")),
+        });
+    }
+
+    /// `attlab-<lab>-seed<seed>-t<time>s-<what>.png`.
+    fn png_name(&self, target: PngTarget) -> String {
+        let lab = self.state.sim.lab();
+        let what = match target {
+            // A lab with a diagram of its own draws it where the w plane would be.
+            PngTarget::View(k) => match lab.views().get(k) {
+                Some(ViewKind::WPlane) if !lab.diagrams(self.state.sim.params()).is_empty() => {
+                    "diagram".to_string()
+                }
+                Some(v) => v.slug().to_string(),
+                None => format!("view{k}"),
+            },
+            PngTarget::Plots => "plots".to_string(),
+        };
+        format!(
+            "attlab-{}-seed{}-t{:.0}s-{what}.png",
+            lab.id(),
+            self.state.sim.seed(),
+            self.state.sim.t_s()
+        )
     }
 }
 

@@ -4,10 +4,11 @@
 //! (see [`start`]) and as a desktop window (`cargo run -p attlab-web --release`).
 //!
 //! Dependencies point one way: `app` (the frame loop) → `panels` (read the state, emit
-//! commands) → `state` (the state and the one place that applies commands) → `render`
-//! (drawing) and `platform` (browser/desktop differences).
+//! commands) → `export` (PNG capture over frames) → `state` (the state and the one place
+//! that applies commands) → `render` (drawing) and `platform` (browser/desktop differences).
 
 pub mod app;
+pub mod export;
 pub mod panels;
 pub mod platform;
 pub mod python;

@@ -55,6 +55,8 @@ pub struct Status<'a> {
     pub recorder_bytes: usize,
     /// Application errors (not user-input messages).
     pub errors: &'a [String],
+    /// The last PNG saved: name, width, height, bytes.
+    pub last_png: Option<&'a (String, usize, usize, usize)>,
 }
 
 /// Publishes the status (browser only).
@@ -78,6 +80,14 @@ pub fn publish_status(status: &Status<'_>) {
             &JsValue::from_f64(status.sim_steps as f64),
         );
         let _ = Reflect::set(&o, &"errors".into(), &errors);
+        if let Some((name, w, h, n)) = status.last_png {
+            let png = Object::new();
+            let _ = Reflect::set(&png, &"name".into(), &JsValue::from_str(name));
+            let _ = Reflect::set(&png, &"width".into(), &JsValue::from_f64(*w as f64));
+            let _ = Reflect::set(&png, &"height".into(), &JsValue::from_f64(*h as f64));
+            let _ = Reflect::set(&png, &"bytes".into(), &JsValue::from_f64(*n as f64));
+            let _ = Reflect::set(&o, &"lastPng".into(), &png);
+        }
         let _ = Reflect::set(
             &o,
             &"recorderBytes".into(),

@@ -129,6 +129,17 @@ pub enum Command {
     CopyPython,
     /// Presenter mode on or off: large type, thick lines, only the controls that matter.
     SetPresenter(bool),
+    /// Save a PNG of a view or of every plot tab (taken by the app over the next frames).
+    ExportPng(PngTarget),
+}
+
+/// What a PNG export shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PngTarget {
+    /// The lab's view with this index (in `Lab::views()`).
+    View(usize),
+    /// Every plot tab, one below the other.
+    Plots,
 }
 
 /// What the central area shows: everything, or one view (or the plots) at full size.
@@ -201,6 +212,10 @@ pub struct AppState {
     pub replaying: Option<(String, usize)>,
     /// Text for the clipboard, taken by the app after the frame.
     pub clipboard: Option<String>,
+    /// A PNG export asked for, taken by the app after the frame.
+    pub png_request: Option<PngTarget>,
+    /// A PNG capture is running: the views hide their buttons and the simulation holds.
+    pub capturing: bool,
     /// Where exports go without a dialog (desktop scripting and tests); `None` asks.
     pub save_dir: Option<std::path::PathBuf>,
     file_slot: platform::FileSlot,
@@ -231,6 +246,8 @@ impl AppState {
             imu_scales: ImuScales::default(),
             replaying: None,
             clipboard: None,
+            png_request: None,
+            capturing: false,
             save_dir: None,
             file_slot: platform::FileSlot::default(),
             last_frame: None,
@@ -399,6 +416,7 @@ impl AppState {
                 ));
             }
             Command::SetPresenter(on) => self.presenter = on,
+            Command::ExportPng(target) => self.png_request = Some(target),
         }
     }
 
@@ -546,6 +564,12 @@ impl AppState {
             Message::info,
         );
         self.messages.push(message);
+    }
+
+    /// A frame that leaves the simulation where it is (a PNG capture in progress): the
+    /// next [`Self::advance`] does not catch up on the time spent.
+    pub fn hold(&mut self, now: Instant) {
+        self.last_frame = Some(now);
     }
 
     /// Advances the simulation by the wall-clock time since the last frame × speed, within

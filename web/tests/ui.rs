@@ -22,6 +22,39 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 
+/// A harness for `lab_id` whose exports go to a fresh folder named after `tag`.
+fn harness_saving(lab_id: &str, tag: &str) -> (Harness<'static, AttLabApp>, std::path::PathBuf) {
+    let dir = std::env::temp_dir().join(format!("attlab-ui-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut h = harness(lab_id);
+    h.state_mut().state.save_dir = Some(dir.clone());
+    (h, dir)
+}
+
+/// Hands `image` to every screenshot the app asks for, as a renderer would, until its
+/// capture ends (at most `frames` frames); `each_frame` sees the app after every frame.
+fn run_capture(
+    h: &mut Harness<'static, AttLabApp>,
+    image: &egui::ColorImage,
+    frames: usize,
+    mut each_frame: impl FnMut(&AttLabApp),
+) {
+    for _ in 0..frames {
+        h.step();
+        let app = h.state_mut();
+        if let Some(c) = app.capture_mut()
+            && c.waiting()
+        {
+            c.deliver(image.clone());
+        }
+        each_frame(h.state());
+        if h.state_mut().capture_mut().is_none() {
+            return;
+        }
+    }
+    panic!("the capture did not end within {frames} frames");
+}
+
 #[test]
 fn switching_the_lab_from_the_picker() {
     let mut h = harness("free-rotation");
@@ -73,10 +106,7 @@ fn reset_restarts_at_zero() {
 
 #[test]
 fn export_writes_every_sample_of_the_run() {
-    let dir = std::env::temp_dir().join(format!("attlab-ui-export-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let mut h = harness("p1");
-    h.state_mut().state.save_dir = Some(dir.clone());
+    let (mut h, dir) = harness_saving("p1", "export");
     for _ in 0..200 {
         h.state_mut().state.sim.step();
     }
@@ -303,4 +333,112 @@ fn an_estimator_chip_hides_and_shows_it() {
     h.get_by_label_contains("● cf").click();
     h.run();
     assert!(h.state().state.hidden.is_empty());
+}
+
+/// Key p saves every plot tab in one PNG: each tab is shown in turn (the simulation holds
+/// still), captured and cut to the plot area, the tab the user had comes back, and the file
+/// is a PNG as tall as the tabs stacked. The harness has no renderer, so the test hands
+/// over the screenshots a renderer would (a frame-sized image whose pixels name their row).
+#[test]
+fn key_p_saves_every_plot_tab_stacked_in_one_png() {
+    let (mut h, dir) = harness_saving("p1", "png");
+    for _ in 0..100 {
+        h.state_mut().state.sim.step();
+    }
+    h.run();
+    let start_tab = h.state().state.plots.tab;
+    let all_tabs = attlab_web::panels::tabs(&h.state().state);
+    assert!(all_tabs.len() >= 3, "p1 has several plot tabs");
+    h.state_mut().state.playing = true;
+    h.key_press(egui::Key::P);
+    let (w, hgt) = (1400usize, 900usize);
+    let frame_image = egui::ColorImage::new(
+        [w, hgt],
+        (0..hgt)
+            .flat_map(|y| std::iter::repeat_n(egui::Color32::from_rgb(200, (y % 256) as u8, 9), w))
+            .collect(),
+    );
+    // The frame that reads the key still runs the simulation; the capture starts after it.
+    h.step();
+    assert!(
+        h.state_mut().capture_mut().is_some(),
+        "key p starts a capture"
+    );
+    let mut seen = vec![h.state().state.plots.tab];
+    let steps = h.state().state.sim.steps();
+    run_capture(&mut h, &frame_image, 200, |app| {
+        if seen.last() != Some(&app.state.plots.tab) {
+            seen.push(app.state.plots.tab);
+        }
+    });
+    let app = h.state();
+    assert_eq!(
+        app.state.sim.steps(),
+        steps,
+        "the simulation holds during the capture"
+    );
+    assert_eq!(app.state.plots.tab, start_tab, "the user's tab comes back");
+    // The user's tab, every tab in order, the user's tab again (a tab already on screen is
+    // not shown twice in a row).
+    let mut expected = vec![start_tab];
+    expected.extend(all_tabs.iter().copied());
+    expected.push(start_tab);
+    expected.dedup();
+    assert_eq!(seen, expected);
+    let (name, pw, ph, _) = app.last_png().cloned().expect("a PNG was saved");
+    assert!(
+        name.starts_with("attlab-p1-seed1-t") && name.ends_with("-plots.png"),
+        "{name}"
+    );
+    let bytes = std::fs::read(dir.join(&name)).expect("the file is on disk");
+    let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
+        .read_info()
+        .expect("a PNG");
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).expect("one frame");
+    assert_eq!((info.width as usize, info.height as usize), (pw, ph));
+    // One crop of the plot area per tab, stacked with gaps: taller than n crops of 100 px.
+    assert!(
+        ph > all_tabs.len() * 100,
+        "{pw}×{ph} for {} tabs",
+        all_tabs.len()
+    );
+    assert!(pw > 500 && pw <= w, "width {pw}");
+    // The top-left pixel comes from the frame (red 200), not from the padding.
+    assert_eq!(buf[0], 200, "top-left pixel {:?}", &buf[0..4]);
+    assert!(
+        app.state
+            .messages
+            .iter()
+            .any(|m| !m.is_error && m.text.contains("pixels")),
+        "a message says where the PNG went"
+    );
+}
+
+/// A view's own PNG button shows while the pointer is over the view and saves that view
+/// alone: p1's dial, cut to the dial's rect.
+#[test]
+fn a_views_png_button_saves_that_view() {
+    let (mut h, dir) = harness_saving("p1", "png-view");
+    h.run();
+    assert!(
+        h.query_by_label("PNG").is_none(),
+        "no view button without the pointer over a view"
+    );
+    // p1's top row: the body, the dial, the phase portrait; the dial is right of centre.
+    h.event(egui::Event::PointerMoved(egui::pos2(950.0, 200.0)));
+    h.run();
+    h.get_by_label("PNG").click();
+    let frame_image =
+        egui::ColorImage::new([1400, 900], vec![egui::Color32::from_gray(99); 1400 * 900]);
+    run_capture(&mut h, &frame_image, 50, |_| {});
+    let (name, w, hgt, _) = h.state().last_png().cloned().expect("a PNG was saved");
+    assert!(name.ends_with("-dial.png"), "{name}");
+    assert!(dir.join(&name).is_file());
+    // One view of three in a 1400-pixel window: narrower than a third of it, as tall as the
+    // top row.
+    assert!(
+        (100..1400 / 3).contains(&w) && (200..700).contains(&hgt),
+        "{w}×{hgt}"
+    );
 }

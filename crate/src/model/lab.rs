@@ -374,6 +374,19 @@ pub enum ViewKind {
     PhasePortrait,
 }
 
+impl ViewKind {
+    /// A short lower-case name (file names, test output).
+    pub fn slug(self) -> &'static str {
+        match self {
+            Self::Body3d => "body3d",
+            Self::Sphere => "sphere",
+            Self::WPlane => "wplane",
+            Self::Dial => "dial",
+            Self::PhasePortrait => "phase-portrait",
+        }
+    }
+}
+
 /// The views of a lab that does not say otherwise.
 pub const DEFAULT_VIEWS: &[ViewKind] = &[ViewKind::Body3d, ViewKind::Sphere, ViewKind::WPlane];
 

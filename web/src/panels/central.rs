@@ -2,19 +2,21 @@
 //! plane or the lab's diagram; for a single-axis lab a dial and the phase portrait), the plot
 //! tabs and plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
+use crate::export::Regions;
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
-use crate::state::{AppState, Command, Focus, View};
+use crate::state::{AppState, Command, Focus, PngTarget, View};
 use attlab::math::{WzAttitude, WzChart};
 use attlab::model::{SeriesGroup, StateKind, ViewKind};
 use attlab::record::Recorder;
 use egui::{Pos2, Rect, Ui, Vec2};
 use nalgebra::Vector3;
 
-/// Draws the central panel.
+/// Draws the central panel and notes in `regions` where each part went (for PNG export).
 pub fn central(
     ui: &mut Ui,
     app: &AppState,
     view: &mut View,
+    regions: &mut Regions,
     gpu_ready: bool,
     commands: &mut Vec<Command>,
 ) {
@@ -24,11 +26,13 @@ pub fn central(
         match app.focus {
             Focus::View(k) if k < kinds.len() => {
                 draw_view(ui, app, view, kinds[k], full, gpu_ready);
+                png_button(ui, app, k, full, commands);
+                regions.views.push((k, full));
                 return;
             }
             Focus::Plots => {
                 ui.scope_builder(egui::UiBuilder::new().max_rect(full), |ui| {
-                    draw_plots(ui, app, commands);
+                    draw_plots(ui, app, regions, commands);
                 });
                 return;
             }
@@ -38,22 +42,44 @@ pub fn central(
         let top = Rect::from_min_size(full.min, Vec2::new(full.width(), top_h));
         let total: f32 = kinds.iter().map(|k| weight(*k)).sum();
         let mut x = top.min.x;
-        for kind in kinds {
+        for (k, kind) in kinds.iter().enumerate() {
             let w = top.width() * weight(*kind) / total.max(1.0);
             let rect = Rect::from_min_size(Pos2::new(x, top.min.y), Vec2::new(w - 4.0, top_h));
             x += w;
             draw_view(ui, app, view, *kind, rect, gpu_ready);
+            png_button(ui, app, k, rect, commands);
+            regions.views.push((k, rect));
         }
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
         ui.scope_builder(egui::UiBuilder::new().max_rect(bottom), |ui| {
-            draw_plots(ui, app, commands);
+            draw_plots(ui, app, regions, commands);
         });
     });
 }
 
-/// The plot tabs and the selected plot.
-fn draw_plots(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+/// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
+/// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
+/// the picture).
+fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut Vec<Command>) {
+    if app.capturing || !ui.rect_contains_pointer(rect) {
+        return;
+    }
+    let size = Vec2::new(38.0, 18.0);
+    let at = Rect::from_min_size(rect.max - size - Vec2::splat(4.0), size);
+    let button = egui::Button::new(egui::RichText::new("PNG").small());
+    if ui
+        .put(at, button)
+        .on_hover_text("Save this view as a PNG (key p while it is shown alone)")
+        .clicked()
+    {
+        commands.push(Command::ExportPng(PngTarget::View(k)));
+    }
+}
+
+/// The plot tabs and the selected plot; the tab row and the plot are the PNG export's area.
+fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut Vec<Command>) {
     estimator_legend(ui, app, commands);
+    regions.plots = Some(ui.available_rect_before_wrap());
     plot_tabs(ui, app, commands);
     plots::show(
         ui,

@@ -1,7 +1,7 @@
 //! The left panel: lab picker, run controls, parameter sliders generated from the lab's
 //! parameter specs, export and the explanation.
 
-use crate::state::{AppState, Command};
+use crate::state::{AppState, Command, PngTarget};
 use attlab::labs;
 use attlab::model::{ParamKind, ParamSpec, Scale};
 use egui::{Color32, RichText, Ui};
@@ -259,6 +259,13 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .clicked()
         {
             commands.push(Command::CopyPython);
+        }
+        if ui
+            .add_enabled(!app.capturing, egui::Button::new("PNG of the plots"))
+            .on_hover_text("Every plot tab at this instant, one below the other, in one PNG (key p). A view shows its own PNG button when the pointer is over it.")
+            .clicked()
+        {
+            commands.push(Command::ExportPng(PngTarget::Plots));
         }
     });
     if app.sim.lab().output_file(app.sim.params()).is_some()

@@ -1,14 +1,15 @@
 //! Keyboard shortcuts (listed in the help): space pause/resume, r reset, s single step,
-//! ←/→ the previous/next plot tab, f one view at full size (each view, the plots, all).
+//! ←/→ the previous/next plot tab, f one view at full size (each view, the plots, all),
+//! p a PNG (of the view shown alone, else of every plot tab).
 //! Ignored while a text field has the keyboard.
 
 use crate::render::plots;
-use crate::state::{AppState, Command};
+use crate::state::{AppState, Command, Focus, PngTarget};
 use attlab::model::PlotTab;
 use egui::Key;
 
 /// The shortcuts, for the help.
-pub const HELP: &str = "Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next; the plots; all)";
+pub const HELP: &str = "Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next; the plots; all) · p save a PNG (the view shown alone, else every plot tab)";
 
 /// Turns this frame's key presses into commands.
 pub fn shortcuts(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command>) {
@@ -30,6 +31,12 @@ pub fn shortcuts(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command
     }
     if pressed(Key::F) {
         commands.push(Command::CycleFocus);
+    }
+    if pressed(Key::P) {
+        commands.push(Command::ExportPng(match app.focus {
+            Focus::View(k) => PngTarget::View(k),
+            Focus::All | Focus::Plots => PngTarget::Plots,
+        }));
     }
     for (key, delta) in [(Key::ArrowLeft, -1), (Key::ArrowRight, 1)] {
         if pressed(key)

@@ -10,7 +10,7 @@ mod sweeps;
 
 pub use central::central;
 pub use controls::controls;
-pub use keys::shortcuts;
+pub use keys::{shortcuts, tabs};
 
 use crate::state::AppState;
 use attlab::model::EstimatorStatus;
