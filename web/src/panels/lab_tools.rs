@@ -38,9 +38,13 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ui.end_row();
                 for (i, r) in rows.iter().enumerate() {
                     let selected = app.ghost_index == i;
-                    if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
-                        commands.push(Command::SetGhost(i));
-                    }
+                    // Row i is estimator i (source i + 1): its colour, as in every plot.
+                    ui.horizontal(|ui| {
+                        ui.label(egui::RichText::new("●").small().color(source_color(i + 1)));
+                        if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
+                            commands.push(Command::SetGhost(i));
+                        }
+                    });
                     for text in [
                         cell(r.att_sigma_deg),
                         cell(r.att_p_deg),
