@@ -434,9 +434,8 @@ impl AppState {
             return;
         }
         let started = Instant::now();
-        match self.sim.reselected(selection) {
-            Ok(sim) => {
-                self.sim = sim;
+        match self.sim.reselect(selection) {
+            Ok(()) => {
                 let ms = started.elapsed().as_secs_f64() * 1e3;
                 if ms > 200.0 {
                     self.messages.push(Message::info(format!(
@@ -678,12 +677,14 @@ pub fn view_selection(sim: &Simulation, tab: PlotTab) -> Selection {
 
 /// A simulation recording what `tab` shows.
 fn simulation(lab: &'static dyn Lab, params: ParamValues, seed: u64, tab: PlotTab) -> Simulation {
-    let sim = Simulation::new(lab, params, seed);
+    let mut sim = Simulation::new(lab, params, seed);
     if tab == default_tab(lab) {
         return sim;
     }
-    // At t = 0 the re-run is immediate.
-    sim.reselected(view_selection(&sim, tab)).unwrap_or(sim)
+    // At t = 0 the re-run is immediate; on an error the run records the default tab's series.
+    let selection = view_selection(&sim, tab);
+    let _ = sim.reselect(selection);
+    sim
 }
 
 /// A new random seed from the operating system (the browser's crypto in the page).

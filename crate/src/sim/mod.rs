@@ -501,6 +501,30 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// [`Self::reselected`] in place, holding one recorder's memory at a time: this run's
+    /// recorder goes first (the re-run rebuilds every series), which keeps the page's
+    /// high-water mark down on a lab with many series. On an error the run goes on recording
+    /// what it did (re-run again, or from now on if that fails too) and the error is returned.
+    pub fn reselect(&mut self, selection: Selection) -> Result<(), String> {
+        let specs = self.recorder.specs().to_vec();
+        self.release_recorder();
+        match self.reselected(selection) {
+            Ok(sim) => {
+                *self = sim;
+                Ok(())
+            }
+            Err(e) => {
+                match self.reselected(self.options.selection.clone()) {
+                    Ok(sim) => *self = sim,
+                    Err(_) => {
+                        self.recorder = Recorder::with_budget(specs, self.options.budget_bytes);
+                    }
+                }
+                Err(e)
+            }
+        }
+    }
+
     /// Writes every sample of every series of the run so far as CSV (see
     /// [`Simulation::rerun`]); returns the number of rows.
     pub fn export_csv<W: std::io::Write>(&self, out: W) -> Result<u64, String> {
