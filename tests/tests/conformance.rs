@@ -381,3 +381,32 @@ fn reselect_in_place_equals_a_reselected_copy() {
         }
     }
 }
+
+/// A diagram point that names an estimator names one the lab runs (it takes that
+/// estimator's colour in the page and hides with it); p5's eigenvalue points all do.
+#[test]
+fn diagram_points_name_estimators_the_lab_runs() {
+    let mut named = 0;
+    for lab in labs::all() {
+        let params = ParamValues::defaults(lab.params());
+        let sim = Simulation::new(*lab, params.clone(), 1);
+        let ids: Vec<&str> = sim.estimators().iter().map(|e| e.id()).collect();
+        for d in lab.diagrams(&params) {
+            for p in &d.points {
+                if let Some(id) = p.source {
+                    assert!(
+                        ids.contains(&id),
+                        "{}: `{}` names `{id}`, not in {ids:?}",
+                        lab.id(),
+                        p.label
+                    );
+                    named += 1;
+                }
+            }
+        }
+    }
+    assert!(
+        named >= 6,
+        "p5's six eigenvalues name their filters ({named} do)"
+    );
+}

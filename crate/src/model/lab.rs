@@ -402,7 +402,19 @@ pub struct Diagram {
     /// Draw the unit circle.
     pub unit_circle: bool,
     /// Labelled points.
-    pub points: Vec<(String, [f64; 2])>,
+    pub points: Vec<DiagramPoint>,
+}
+
+/// One labelled point of a [`Diagram`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct DiagramPoint {
+    /// Legend text.
+    pub label: String,
+    /// Position (x, y).
+    pub xy: [f64; 2],
+    /// Id of the estimator the point belongs to (it takes that estimator's colour and hides
+    /// with it), if any.
+    pub source: Option<&'static str>,
 }
 
 /// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).

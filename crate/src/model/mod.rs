@@ -17,9 +17,10 @@ pub use estimate::{
     Onboard, Outputs, STATUS_OK, StateInfo, StateKind,
 };
 pub use lab::{
-    AccuracyTable, BodyShape, DEFAULT_VIEWS, Diagram, Figure, Lab, LabRun, OrbitPicture, Outage,
-    OutputFile, OverlayFn, Preset, SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ScoreFn,
-    SensorModel, SweepAxis, SweepScoring, SweepSpec, TimingItem, TruthModel, TruthState, ViewKind,
+    AccuracyTable, BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, Lab, LabRun,
+    OrbitPicture, Outage, OutputFile, OverlayFn, Preset, SINGLE_AXIS_VIEWS, SceneExtras,
+    SceneVector, ScoreFn, SensorModel, SweepAxis, SweepScoring, SweepSpec, TimingItem, TruthModel,
+    TruthState, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};

@@ -125,7 +125,7 @@ fn draw_view(
             let diagrams = app.sim.lab().diagrams(app.sim.params());
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
-                    Some(d) => super::lab_tools::diagram(ui, d),
+                    Some(d) => super::lab_tools::diagram(ui, app, d),
                     None => {
                         let mut tracks = tracks(app);
                         attach_ellipses(app, &mut tracks);

@@ -63,8 +63,8 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit
-/// circle), filling `ui`, with its title above.
-pub fn diagram(ui: &mut Ui, d: &attlab::model::Diagram) {
+/// circle), filling `ui`, with its title above; a point of an estimator in its colour.
+pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
     ui.label(egui::RichText::new(&d.title).small());
     let height = (ui.available_height() - 4.0).max(80.0);
     Plot::new(("diagram_plot", d.title.as_str()))
@@ -85,11 +85,20 @@ pub fn diagram(ui: &mut Ui, d: &attlab::model::Diagram) {
                     .collect();
                 plot.line(Line::new("|λ| = 1", circle).color(egui::Color32::GRAY));
             }
-            for (k, (label, p)) in d.points.iter().enumerate() {
+            for p in &d.points {
+                // A point of an estimator takes its colour and hides with it.
+                let source = p
+                    .source
+                    .and_then(|id| app.sim.estimators().iter().position(|e| e.id() == id))
+                    .map(|i| i + 1);
+                if source.is_some_and(|s| app.hidden.contains(&s)) {
+                    continue;
+                }
+                let color = source.map_or(egui::Color32::LIGHT_GRAY, source_color);
                 plot.points(
-                    Points::new(label.clone(), vec![*p])
+                    Points::new(p.label.clone(), vec![p.xy])
                         .radius(5.0)
-                        .color(source_color(k / 2 + 1)),
+                        .color(color),
                 );
             }
         });

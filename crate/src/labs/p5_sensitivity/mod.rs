@@ -12,8 +12,9 @@ use crate::estimators::{
 };
 use crate::math::{ANGLE_SEQUENCES, quaternion_from_sequence};
 use crate::model::{
-    Diagram, Estimator, Figure, Lab, LabRun, Measurements, OutputFile, ParamSpec, ParamValues,
-    Preset, ReproError, Reproduction, SensorModel, SeriesGroup, SeriesSpec, TruthModel, TruthState,
+    Diagram, DiagramPoint, Estimator, Figure, Lab, LabRun, Measurements, OutputFile, ParamSpec,
+    ParamValues, Preset, ReproError, Reproduction, SensorModel, SeriesGroup, SeriesSpec,
+    TruthModel, TruthState,
 };
 use crate::sensors::WhiteNoise;
 use nalgebra::{UnitQuaternion, Vector3};
@@ -422,13 +423,19 @@ impl Lab for SensitivityLab {
     fn diagrams(&self, p: &ParamValues) -> Vec<Diagram> {
         let (dt, eps) = (p.get("interval_s"), p.get("eps"));
         let mut points = Vec::new();
-        for (name, method) in [
-            ("(9)", Method::Plain),
-            ("(10)", Method::Regularised),
-            ("(11) and variant", Method::Reintegrate),
+        // Each point takes the colour of the filter whose update it linearises (the
+        // re-integrating variant's for "(11) and variant", Method::Reintegrate).
+        for (name, method, source) in [
+            ("(9)", Method::Plain, "gn9"),
+            ("(10)", Method::Regularised, "lm10"),
+            ("(11) and variant", Method::Reintegrate, "reint"),
         ] {
             for (k, l) in linearised_eigenvalues(method, dt, eps).iter().enumerate() {
-                points.push((format!("{name} λ{}", k + 1), [l.re, l.im]));
+                points.push(DiagramPoint {
+                    label: format!("{name} λ{}", k + 1),
+                    xy: [l.re, l.im],
+                    source: Some(source),
+                });
             }
         }
         vec![Diagram {
