@@ -19,6 +19,14 @@ pub const DEFAULT_BUDGET_BYTES: usize = 16 << 20;
 /// Buckets of older history kept per series (pairs merge when they run out).
 const MAX_BUCKETS: usize = 1024;
 
+/// Bytes of a budget left for the small per-series arrays (the bucket being filled and
+/// where its extremes were); the rest is one block of exactly the same size for every
+/// recorder of that budget, so the block a lab switch frees is the one the next lab reuses
+/// (the page's wasm memory never shrinks: blocks of different sizes would leave holes).
+const SMALL_RESERVE_BYTES: usize = 64 << 10;
+/// f64 slots per bucket in the store (min, max, flags).
+const BUCKET_SLOTS: usize = 3;
+
 /// Fewest full-rate rows kept, whatever the budget.
 const MIN_RECENT_ROWS: usize = 256;
 
@@ -78,15 +86,17 @@ pub struct Recorder {
     specs: Vec<SeriesSpec>,
     /// Full-rate rows in the ring (per series), a multiple of [`BLOCK`].
     window: usize,
-    /// Ring in blocks of [`BLOCK`] rows, series-major inside a block:
-    /// `recent[(slot / BLOCK) * n * BLOCK + s * BLOCK + slot % BLOCK]`.
+    /// One allocation for the ring and the older history. The ring comes first, in blocks
+    /// of [`BLOCK`] rows, series-major inside a block:
+    /// `recent[(slot / BLOCK) * n * BLOCK + s * BLOCK + slot % BLOCK]`; then the history,
+    /// bucket `b` of series `s` at `hist0 + (s * MAX_BUCKETS + b) * BUCKET_SLOTS`.
     recent: Vec<f64>,
+    /// Where the history starts in `recent` (`n * window`).
+    hist0: usize,
     /// Next slot to write.
     head: usize,
     /// Rows in the ring.
     held: usize,
-    /// Older history: `buckets[s * MAX_BUCKETS + b]`.
-    buckets: Vec<Bucket>,
     /// Completed buckets.
     bucket_count: usize,
     /// Rows per completed bucket.
@@ -103,20 +113,39 @@ impl Recorder {
     /// A recorder for `specs` (series 0 = time) using about `budget_bytes` of memory.
     pub fn with_budget(specs: Vec<SeriesSpec>, budget_bytes: usize) -> Self {
         let n = specs.len().max(1);
-        let history_bytes = (MAX_BUCKETS + 1) * std::mem::size_of::<Bucket>() + 16;
-        let per_series = budget_bytes / n;
-        let window =
-            (per_series.saturating_sub(history_bytes) / 8 / BLOCK * BLOCK).max(MIN_RECENT_ROWS);
-        Self::with_window(specs, window)
+        let small = n * (std::mem::size_of::<Bucket>() + 16);
+        // The store's size is the same for every recorder of this budget unless the
+        // series are too many for the reserve.
+        let store = budget_bytes.saturating_sub(small.max(SMALL_RESERVE_BYTES)) / 8;
+        let history = n * MAX_BUCKETS * BUCKET_SLOTS;
+        let window = (store.saturating_sub(history) / n / BLOCK * BLOCK).max(MIN_RECENT_ROWS);
+        Self::build(specs, window, store)
     }
 
     /// A recorder keeping `window` rows at full rate (and the min/max history before them).
     pub fn with_window(specs: Vec<SeriesSpec>, window: usize) -> Self {
+        Self::build(specs, window, 0)
+    }
+
+    /// A recorder keeping `window` rows, its store allocated with room for at least
+    /// `capacity` values (one block of a fixed size, see [`SMALL_RESERVE_BYTES`]).
+    fn build(specs: Vec<SeriesSpec>, window: usize, capacity: usize) -> Self {
         let n = specs.len();
         let window = window.max(2).div_ceil(BLOCK) * BLOCK;
+        let hist0 = n * window;
+        let len = hist0 + n * MAX_BUCKETS * BUCKET_SLOTS;
+        let mut recent = Vec::with_capacity(len.max(capacity));
+        recent.resize(hist0, f64::NAN);
+        for _ in 0..n * MAX_BUCKETS {
+            recent.extend([
+                Bucket::EMPTY.min,
+                Bucket::EMPTY.max,
+                f64::from(Bucket::EMPTY.flags),
+            ]);
+        }
         Self {
-            recent: vec![f64::NAN; n * window],
-            buckets: vec![Bucket::EMPTY; n * MAX_BUCKETS],
+            recent,
+            hist0,
             filling: vec![Bucket::EMPTY; n],
             filling_at: vec![(0, 0); n],
             specs,
@@ -209,7 +238,7 @@ impl Recorder {
                         self.halve_series(s);
                     }
                     b.flags = flags(at.0 <= at.1, b.flags);
-                    self.buckets[s * MAX_BUCKETS + j] = b;
+                    self.set_bucket(s * MAX_BUCKETS + j, b);
                     b = Bucket::EMPTY;
                     at = (0, 0);
                     n = 0;
@@ -228,12 +257,30 @@ impl Recorder {
     fn halve_series(&mut self, s: usize) {
         let base = s * MAX_BUCKETS;
         for j in 0..MAX_BUCKETS / 2 {
-            let merged = Bucket::merge(self.buckets[base + 2 * j], self.buckets[base + 2 * j + 1]);
-            self.buckets[base + j] = merged;
+            let merged = Bucket::merge(self.bucket(base + 2 * j), self.bucket(base + 2 * j + 1));
+            self.set_bucket(base + j, merged);
         }
         for j in MAX_BUCKETS / 2..MAX_BUCKETS {
-            self.buckets[base + j] = Bucket::EMPTY;
+            self.set_bucket(base + j, Bucket::EMPTY);
         }
+    }
+
+    /// History bucket `i` (`s * MAX_BUCKETS + b`).
+    fn bucket(&self, i: usize) -> Bucket {
+        let k = self.hist0 + i * BUCKET_SLOTS;
+        Bucket {
+            min: self.recent[k],
+            max: self.recent[k + 1],
+            // Stored as a small whole number: exact.
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            flags: self.recent[k + 2] as u8,
+        }
+    }
+
+    /// Sets history bucket `i`.
+    fn set_bucket(&mut self, i: usize, b: Bucket) {
+        let k = self.hist0 + i * BUCKET_SLOTS;
+        self.recent[k..k + BUCKET_SLOTS].copy_from_slice(&[b.min, b.max, f64::from(b.flags)]);
     }
 
     /// Rows held at full rate now (between the window less one block and the window, once
@@ -264,8 +311,8 @@ impl Recorder {
 
     /// Bytes the recorder holds (fixed at creation: it does not grow with the run).
     pub fn memory_bytes(&self) -> usize {
-        self.recent.len() * 8
-            + (self.buckets.len() + self.filling.len()) * std::mem::size_of::<Bucket>()
+        self.recent.capacity() * 8
+            + self.filling.len() * std::mem::size_of::<Bucket>()
             + self.filling_at.len() * 16
     }
 
@@ -309,7 +356,7 @@ impl Recorder {
             return Vec::new();
         }
         let mut old: Vec<(Bucket, Bucket)> = (0..self.bucket_count)
-            .map(|j| (self.buckets[j], self.buckets[y * MAX_BUCKETS + j]))
+            .map(|j| (self.bucket(j), self.bucket(y * MAX_BUCKETS + j)))
             .collect();
         if self.filling_rows > 0 {
             let mut b = self.filling[y];
@@ -487,6 +534,33 @@ mod tests {
         }
         let pieces = Recorder::split_at_gaps(&r.plot_points(1, 4000));
         assert_eq!(pieces.len(), 3, "{pieces:?}");
+    }
+
+    /// Recorders of one budget hold one block of the same size whatever their series (a
+    /// lab switch frees exactly what the next lab needs), within the budget.
+    #[test]
+    fn one_budget_one_block_size() {
+        let specs = |n: usize| -> Vec<SeriesSpec> {
+            (0..n)
+                .map(|i| SeriesSpec::new(format!("s{i}"), "", crate::model::SeriesGroup::Lab))
+                .collect()
+        };
+        let budget = DEFAULT_BUDGET_BYTES;
+        let blocks: Vec<usize> = [3, 36, 110]
+            .iter()
+            .map(|n| {
+                let r = Recorder::with_budget(specs(*n), budget);
+                assert!(
+                    r.memory_bytes() <= budget,
+                    "{n} series: {}",
+                    r.memory_bytes()
+                );
+                assert!(r.window() >= MIN_RECENT_ROWS);
+                r.recent.capacity()
+            })
+            .collect();
+        assert!(blocks.iter().all(|b| *b == blocks[0]), "{blocks:?}");
+        assert_eq!(blocks[0], (budget - SMALL_RESERVE_BYTES) / 8);
     }
 
     #[test]
