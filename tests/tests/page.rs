@@ -168,6 +168,14 @@ impl<'a> Session<'a> {
             .call(method, &format!("/session/{}{path}", self.id), body)
     }
 
+    /// Loads `url` afresh: leaves the page first, since a change of the fragment alone
+    /// does not reload it.
+    fn open(&self, url: &str) -> Result<(), String> {
+        let _ = self.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
+        self.call("POST", "/url", Some(&json!({ "url": url })))
+            .map(|_| ())
+    }
+
     /// Runs a synchronous script and returns its result.
     fn execute(&self, script: &str) -> Result<Value, String> {
         self.call(
@@ -484,13 +492,7 @@ fn page_renders_without_errors() {
     let base = url.split('#').next().unwrap_or(&url).to_string();
     for lab in attlab::labs::all() {
         let id = lab.id();
-        // A fragment-only change does not reload: leave the page first.
-        let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
-        if let Err(e) = session.call(
-            "POST",
-            "/url",
-            Some(&json!({ "url": format!("{base}#lab={id}") })),
-        ) {
+        if let Err(e) = session.open(&format!("{base}#lab={id}")) {
             problems.push(format!("{id}: navigate failed: {e}"));
             continue;
         }
@@ -511,12 +513,7 @@ fn page_renders_without_errors() {
         ));
     }
     // Presenter mode from its link: frames, no console error, and a screenshot.
-    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
-    match session.call(
-        "POST",
-        "/url",
-        Some(&json!({ "url": format!("{base}#lab=p3&presenter=1") })),
-    ) {
+    match session.open(&format!("{base}#lab=p3&presenter=1")) {
         Ok(_) => {
             let status = wait_for_frames(&session);
             problems.extend(
@@ -561,12 +558,7 @@ fn press_key(session: &Session<'_>, key: &str, code: &str) -> Result<(), String>
 /// Key p on p1 saves a PNG of every plot tab: the status reports a plots picture taller
 /// than one tab (the tabs are stacked) within 30 s.
 fn png_export_problems(session: &Session<'_>, base: &str) -> Vec<String> {
-    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
-    if let Err(e) = session.call(
-        "POST",
-        "/url",
-        Some(&json!({ "url": format!("{base}#lab=p1") })),
-    ) {
+    if let Err(e) = session.open(&format!("{base}#lab=p1")) {
         return vec![format!("png: navigate failed: {e}")];
     }
     let status = wait_for_frames(session);
@@ -642,13 +634,8 @@ fn page_works_offline_after_one_visit() {
         TcpStream::connect(("127.0.0.1", server.port)).is_err(),
         "the server still answers"
     );
-    let _ = session.call("POST", "/url", Some(&json!({ "url": "about:blank" })));
     session
-        .call(
-            "POST",
-            "/url",
-            Some(&json!({ "url": format!("{url}#lab=p4") })),
-        )
+        .open(&format!("{url}#lab=p4"))
         .expect("navigate offline");
     let status = wait_for_frames(&session);
     println!("page test (offline): attlabStatus = {status}");
@@ -709,11 +696,7 @@ fn soak() {
     let session = Session::new(&driver);
     let first = labs[0].id();
     session
-        .call(
-            "POST",
-            "/url",
-            Some(&json!({ "url": format!("{base}#lab={first}&speed=1000") })),
-        )
+        .open(&format!("{base}#lab={first}&speed=1000"))
         .expect("navigate");
     let status = wait_for_frames(&session);
     let mut problems = status_problems(&status);
