@@ -87,6 +87,17 @@ impl AttLabApp {
 
     /// One frame of UI: draw, collect commands, apply them.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
+        // A lab switched (or a link loaded) during a capture: its tabs are gone.
+        if self
+            .capture
+            .as_ref()
+            .is_some_and(|c| panels::tabs(&self.state) != c.lab_tabs())
+        {
+            self.capture = None;
+            self.state
+                .messages
+                .push(Message::error("PNG export stopped: the lab changed"));
+        }
         match &self.capture {
             Some(capture) => {
                 // Every part of a capture shows the same instant.

@@ -64,6 +64,8 @@ type Slot = Arc<Mutex<Option<Arc<ColorImage>>>>;
 /// One capture in progress.
 pub struct Capture {
     target: PngTarget,
+    /// The tabs of the lab the capture started on.
+    tabs: Vec<PlotTab>,
     /// Plot tabs still to capture, next first.
     queue: std::collections::VecDeque<PlotTab>,
     /// The tab to show while capturing (None: leave it).
@@ -79,12 +81,13 @@ impl Capture {
     /// A capture of `target`; for the plots, of every tab in `tabs`, coming back to `current`.
     pub fn new(target: PngTarget, tabs: Vec<PlotTab>, current: PlotTab) -> Self {
         let mut queue: std::collections::VecDeque<PlotTab> = match target {
-            PngTarget::Plots => tabs.into(),
+            PngTarget::Plots => tabs.clone().into(),
             PngTarget::View(_) => Default::default(),
         };
         let showing = queue.pop_front();
         Self {
             target,
+            tabs,
             queue,
             showing,
             restore: current,
@@ -97,6 +100,11 @@ impl Capture {
     /// What is being captured.
     pub fn target(&self) -> PngTarget {
         self.target
+    }
+
+    /// The plot tabs of the lab the capture started on.
+    pub fn lab_tabs(&self) -> &[PlotTab] {
+        &self.tabs
     }
 
     /// The plot tab to draw this frame.

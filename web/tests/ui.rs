@@ -442,3 +442,33 @@ fn a_views_png_button_saves_that_view() {
         "{w}×{hgt}"
     );
 }
+
+/// Switching the lab while the plots are being captured stops the capture with a message
+/// and leaves the new lab on its own first tab (no old tab index carried over).
+#[test]
+fn switching_the_lab_stops_a_png_capture() {
+    let mut h = harness("p2");
+    h.run();
+    h.key_press(egui::Key::P);
+    h.step();
+    assert!(
+        h.state_mut().capture_mut().is_some(),
+        "key p starts a capture"
+    );
+    let free = labs::find("free-rotation").expect("registered");
+    h.state_mut()
+        .state
+        .apply(attlab_web::state::Command::SelectLab(free));
+    h.run();
+    let app = h.state_mut();
+    assert!(app.capture_mut().is_none(), "the capture stopped");
+    assert!(
+        app.state
+            .messages
+            .iter()
+            .any(|m| m.is_error && m.text.contains("the lab changed")),
+        "a message says why"
+    );
+    assert_eq!(app.state.sim.lab().id(), "free-rotation");
+    assert!(attlab_web::panels::tabs(&app.state).contains(&app.state.plots.tab));
+}
