@@ -190,7 +190,7 @@ pub fn crop(image: &ColorImage, rect: Rect, pixels_per_point: f32) -> ColorImage
     ColorImage::new([cw, ch], pixels)
 }
 
-/// `parts` one below the other, [`GAP_PX`] apart, padded on the right to the widest.
+/// `parts` one below the other, `GAP_PX` (8 px) apart, padded on the right to the widest.
 pub fn stack(parts: &[ColorImage]) -> ColorImage {
     let width = parts.iter().map(|p| p.size[0]).max().unwrap_or(0);
     let height =

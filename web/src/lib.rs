@@ -1,7 +1,7 @@
 //! # Attitude Lab app
 //!
 //! The eframe front end (wgpu renderer) of Attitude Lab. The same code runs in the browser
-//! (see [`start`]) and as a desktop window (`cargo run -p attlab-web --release`).
+//! (see `start`, built for wasm32 only) and as a desktop window (`cargo run -p attlab-web --release`).
 //!
 //! Dependencies point one way: `app` (the frame loop) → `panels` (read the state, emit
 //! commands) → `export` (PNG capture over frames) → `state` (the state and the one place

@@ -203,6 +203,10 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
         tools::WASM_TARGET
     );
     suite.check("clippy (wasm)", cargo(&wasm_clippy))?;
+    // A stale intra-doc link or a broken doc comment fails the run.
+    let mut doc = cargo("doc --workspace --no-deps");
+    doc.env("RUSTDOCFLAGS", "-D warnings");
+    suite.check("cargo doc", doc)?;
     suite.tests("test (native)", cargo("test --workspace --no-fail-fast"))?;
     let mut browser = cargo(&format!(
         "test --target {} -p attlab-tests",

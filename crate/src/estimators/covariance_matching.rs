@@ -21,7 +21,7 @@
 //! * [`AdaptMode::LiteralReset`] — Table 2.3 read literally: q = x̂⁺ − Φx̂⁻ = K r (the
 //!   correction of each update) and P := Q_N. It collapses: with Q = 0 between updates the
 //!   rate variance obeys c⁺ = c⁻ − c⁻²/S and E[(K r)²_φ̇] = c⁻²/S = c⁻ − c⁺, so the sum over a
-//!   window telescopes, E[Q_N,cc] = (c₀ − c_N)/N < c₀/N: every window shrinks P at least N-fold.
+//!   window telescopes, E\[Q_N,cc\] = (c₀ − c_N)/N < c₀/N: every window shrinks P at least N-fold.
 //! * [`AdaptMode::RateProcessNoise`] — the φ̇φ̇ element of the K r sample covariance as
 //!   process noise for the next window, added to P before every update (classic covariance
 //!   matching; this project's earlier default). Feeding the whole 2×2 matrix back lets rate

@@ -104,7 +104,8 @@ pub const SWEEPS: &[SweepSpec] = &[
     .scoring(&LANDSCAPE),
 ];
 
-/// MSE, t_tr, offset and noise of one run; `columns` are [`SCORED`]'s.
+/// MSE, t_tr, offset and noise of one run; `columns` are those of `SCORED` (the KF's angle,
+/// its error and its rate error).
 pub fn score_run(p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, String> {
     let [angle, err_angle, err_rate] = columns else {
         return Err(format!("expected 3 series, got {}", columns.len()));
