@@ -19,9 +19,7 @@ mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
-pub use mekf::{
-    Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops, tabletsat_inertia,
-};
+pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops};
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
 pub use quaternion_integration::QuaternionIntegration;
 pub use roll_kf::{

@@ -14,7 +14,7 @@ use crate::model::{
     AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, Outage, ParamSpec, ParamValues,
     Preset, ReproError, Reproduction, SweepSpec, TimingItem,
 };
-use nalgebra::{SMatrix, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use sensors::{FIELD_MODELS, STAR_READINGS, Sensors};
@@ -25,6 +25,11 @@ pub use reproduce::{FilterAccuracy, accuracy};
 
 /// The paper-2 lab.
 pub struct TabletSat;
+
+/// Inertia of TabletSat-Aurora in body axes (paper 2, §1), kg·m²: the truth's and every
+/// filter's dynamics model.
+pub const INERTIA_KG_M2: Matrix3<f64> =
+    Matrix3::new(0.519, 0.002, 0.005, 0.002, 0.579, 0.009, 0.005, 0.009, 0.71);
 
 const PARAMS: &[ParamSpec] = &[
     // Orbit (applies at reset).
@@ -432,6 +437,7 @@ impl Lab for TabletSat {
             states: StateSet::AttRateGyroBias,
             disturbance: false,
             constant_gain_after_s: None,
+            inertia_kg_m2: INERTIA_KG_M2,
         };
         let fresh = Mekf::<9>::new(
             cfg,

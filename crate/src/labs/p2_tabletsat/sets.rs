@@ -40,6 +40,7 @@ const fn cfg(
         states,
         disturbance: false,
         constant_gain_after_s: None,
+        inertia_kg_m2: super::INERTIA_KG_M2,
     }
 }
 

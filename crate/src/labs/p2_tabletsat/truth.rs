@@ -3,7 +3,6 @@
 //! disturbance torque (eqs. 6–7).
 
 use crate::dynamics::{CircularOrbit, Epoch};
-use crate::estimators::tabletsat_inertia;
 use crate::model::{ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rand::Rng;
@@ -63,7 +62,7 @@ impl Spacecraft {
     /// axis, the rate off the orbital rate by its rate error.
     pub fn new(p: &ParamValues, rng: &mut ChaCha8Rng) -> Self {
         let (orbit, _) = orbit_of(p);
-        let j = tabletsat_inertia();
+        let j = super::INERTIA_KG_M2;
         let axis = random_unit(rng);
         let q = UnitQuaternion::from_scaled_axis(axis * p.get("init_att_err_deg").to_radians());
         let w_rel = random_unit(rng) * p.get("init_rate_err_deg_s").to_radians();

@@ -1,0 +1,443 @@
+//! Paper 2's attitude EKFs (Ivanov, Ivlev, Karpenko, Ovchinnikov, Keldysh preprint 2014-64)
+//! as one multiplicative EKF whose state and measurement rows are assembled from data: the
+//! twelve sensor sets of Table 2, the gyro-bias and magnetometer-bias augmentations, the
+//! reduced [λ, Δω] variant, the parallel disturbance filter of §3.2 and the constant-gain
+//! filter of §3.3 are configurations of this one file, not copies.
+//!
+//! * Attitude: `q_orbit_from_body` (Λ of the paper is its conjugate: orbital → body). The
+//!   error state δλ is the vector part of δq = q̂⁻¹ ⊗ q (half the rotation angle, as the
+//!   paper's λ); after each update the error is folded into q̂ and reset.
+//! * Dynamics (eqs. 6–7): J ω̇ = M_gg − ω × (Jω + h) − ḣ (+ d), Λ̇ = ½ Λ ∘ ω_rel with
+//!   ω_rel = ω − A ω_orb. The wheel momentum h and torque ḣ are known inputs (the wheels are
+//!   measured), so the control law need not be modelled; d is the disturbance estimate of the
+//!   parallel filter (zero otherwise). Unlike the paper's F, which carries the control gains
+//!   −J⁻¹K_λ and −J⁻¹K_ω, F here carries the gyroscopic terms the wheels really apply:
+//!   F = [[−[ω×], ½E], [J⁻¹ k F_g, J⁻¹([(Jω+h)×] − [ω×]J)]] with k = 6μ/r³ and
+//!   F_g = [η×]J[η×] − [(Jη)×][η×] (the paper's gravity-gradient block).
+//! * Measurements (Table 2's H): star tracker δλ = vec(q̂⁻¹ ⊗ q_st) with H = [E 0];
+//!   gyro ω̃ = ω + Δω with H = [0 E (E)]; magnetometer b = A b₀ (+ Δb) with
+//!   H = [2[b̂×] 0 (E)]; sun sensor s = A s₀ with H = [2[ŝ×] 0]. The 2 makes δλ half-angle
+//!   consistent. Rows are processed one scalar at a time (diagonal R), so any set is the
+//!   same code and the step has no heap.
+//! * Q = diag(q_Λ²·E, q_ω²·E, q_bias²·E) per prediction step, the paper's tuning knobs.
+
+use super::kf::KalmanState;
+use crate::math::symmetrize;
+use crate::model::{
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Onboard, ParamValues,
+    StateInfo,
+};
+use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
+use states::states_of;
+
+mod predict;
+mod states;
+#[cfg(test)]
+mod tests;
+mod update;
+
+/// Which sensors a filter uses (Table 2's z).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SensorSet {
+    /// Star tracker.
+    pub star: bool,
+    /// Gyro.
+    pub gyro: bool,
+    /// Magnetometer.
+    pub mag: bool,
+    /// Sun sensors.
+    pub sun: bool,
+}
+
+/// What the state holds (Table 2's x).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StateSet {
+    /// [λ, ω].
+    AttRate,
+    /// [λ, ω, Δω]: gyro bias.
+    AttRateGyroBias,
+    /// [λ, ω, Δb]: magnetometer bias.
+    AttRateMagBias,
+    /// [λ, Δω]: the reduced variant — ω is the gyro reading less the bias, no dynamics.
+    AttGyroBias,
+}
+
+impl StateSet {
+    /// Number of states.
+    pub const fn dim(self) -> usize {
+        match self {
+            Self::AttRate | Self::AttGyroBias => 6,
+            Self::AttRateGyroBias | Self::AttRateMagBias => 9,
+        }
+    }
+
+    fn omega(self) -> Option<usize> {
+        (self != Self::AttGyroBias).then_some(3)
+    }
+
+    fn gyro_bias(self) -> Option<usize> {
+        match self {
+            Self::AttRateGyroBias => Some(6),
+            Self::AttGyroBias => Some(3),
+            _ => None,
+        }
+    }
+
+    fn mag_bias(self) -> Option<usize> {
+        (self == Self::AttRateMagBias).then_some(6)
+    }
+}
+
+/// One filter of the lab: its sensors, states and mode.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MekfConfig {
+    /// Series id, e.g. `st-gyro`.
+    pub id: &'static str,
+    /// Legend label.
+    pub label: &'static str,
+    /// Sensors used.
+    pub sensors: SensorSet,
+    /// States.
+    pub states: StateSet,
+    /// Runs the parallel disturbance filter of §3.2.
+    pub disturbance: bool,
+    /// Freezes the gain at this time (s) and stops propagating P (§3.3).
+    pub constant_gain_after_s: Option<f64>,
+    /// The body's inertia tensor J in body axes (kg·m²), of the dynamics model (eqs. 6–7).
+    pub inertia_kg_m2: Matrix3<f64>,
+}
+
+/// Noise levels and tuning, from the lab's parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MekfTuning {
+    /// q_Λ per prediction step (λ units).
+    pub q_att: f64,
+    /// q_ω per prediction step (rad/s).
+    pub q_rate: f64,
+    /// q of a bias state per step (rad/s or nT).
+    pub q_bias: f64,
+    /// σ of one star-tracker quaternion vector component (δλ units).
+    pub star_sigma: f64,
+    /// Gyro σ per sample (rad/s).
+    pub gyro_sigma_rad_s: f64,
+    /// Magnetometer σ per axis (nT).
+    pub mag_sigma_nt: f64,
+    /// Sun-sensor σ per axis of the unit vector (rad).
+    pub sun_sigma_rad: f64,
+    /// Fading factor α of the disturbance filter (P_d ← P_d/α per update).
+    pub alpha: f64,
+    /// R_d as a multiple of the innovation variance of each row.
+    pub rd_scale: f64,
+}
+
+/// One update's scalar rows: (residual at the prior, H row, R), at most [`MAX_ROWS`].
+type Rows<const N: usize> = [(f64, SVector<f64, N>, f64); MAX_ROWS];
+
+/// How a lab turns its parameters and a filter's base (q_Λ, q_ω, q_bias) into a tuning.
+pub type Retune = fn(&ParamValues, [f64; 3]) -> MekfTuning;
+
+/// Floating-point operations of one [`Mekf`] step with `n` states that processes `rows`
+/// scalar measurement rows, counted from the code (a multiply-add is two; a square root or
+/// division one):
+/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 367, Φ = E + F·dt 2n², ΦPΦᵀ
+///   2(2n³ − n²), + Q and symmetrise 3n²: 1207 + 4n³ + 3n²;
+/// * each scalar row — the gain and innovation variance in the filter (4n² + 3n) and the
+///   Joseph update of [`KalmanState::update_scalar`] (PHᵀ 2n² − n, S and K 4n, x 2n,
+///   E − KH 2n², (E − KH)P(E − KH)ᵀ 2(2n³ − n²), KRKᵀ + add 2n² + n, symmetrise 2n²):
+///   4n³ + 10n² + 9n + 2;
+/// * assembling the rows ≈ 200, folding the correction ≈ 55, publishing P 2n², the
+///   positive-definiteness check (scaling 3n² + 2n, Cholesky ≈ n³/3).
+pub const fn full_step_flops(n: u64, rows: u64) -> u64 {
+    let predict = 1207 + 4 * n * n * n + 3 * n * n;
+    let row = 4 * n * n * n + 10 * n * n + 9 * n + 2;
+    let tail = 200 + 55 + 2 * n * n + 3 * n * n + 2 * n + n * n * n / 3;
+    predict + rows * row + tail
+}
+
+/// `[v×]`.
+fn skew(v: &Vector3<f64>) -> Matrix3<f64> {
+    v.cross_matrix()
+}
+
+/// The parallel disturbance filter (§3.2): d̂ (1/s²) with covariance P_d.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Disturbance {
+    d: Vector3<f64>,
+    p: Matrix3<f64>,
+}
+
+/// Initial variance of the disturbance estimate (1/s⁴): σ 1e-5 s⁻², several times the
+/// paper's d ≈ 1e-6 s⁻².
+const DIST_P0: f64 = 1e-10;
+
+/// Largest variance of the disturbance estimate (1/s⁴): σ 1e-3 s⁻², far above any torque a
+/// microsatellite meets.
+const DIST_P_MAX: f64 = 1e-6;
+
+/// Whether `p` is positive semi-definite to rounding in its own units: the correlation
+/// matrix D^-½ P D^-½ plus 1e-9·E has a Cholesky factor. (Its smallest eigenvalue is then
+/// above −1e-9 of the largest variance.)
+fn positive_semidefinite<const N: usize>(p: &SMatrix<f64, N, N>) -> bool {
+    let d = p.diagonal();
+    if d.iter().any(|v| *v < 0.0) {
+        return false;
+    }
+    let inv = d.map(|v| if v > 0.0 { 1.0 / v.sqrt() } else { 0.0 });
+    let c = SMatrix::<f64, N, N>::from_fn(|i, j| p[(i, j)] * inv[i] * inv[j])
+        + SMatrix::<f64, N, N>::identity() * 1e-9;
+    c.cholesky().is_some()
+}
+
+/// Sun–field angle (deg) below which a vector-only set is flagged unobservable.
+const DEGENERATE_DEG: f64 = 2.0;
+
+/// Attitude σ (rotation, rad) above which a filter has lost the attitude: diverged.
+const LOST_RAD: f64 = std::f64::consts::FRAC_PI_4;
+
+/// Measurement rows per update, at most: star 3, gyro 3, magnetometer 3, sun 3.
+const MAX_ROWS: usize = 12;
+
+/// Paper 2's multiplicative EKF with `N` states.
+#[derive(Clone, Debug)]
+pub struct Mekf<const N: usize> {
+    cfg: MekfConfig,
+    tuning: MekfTuning,
+    j: Matrix3<f64>,
+    j_inv: Matrix3<f64>,
+    q: UnitQuaternion<f64>,
+    omega: Vector3<f64>,
+    gyro_bias: Vector3<f64>,
+    mag_bias: Vector3<f64>,
+    p: SMatrix<f64, N, N>,
+    published: SMatrix<f64, N, N>,
+    dist: Option<Disturbance>,
+    /// ∂(x − x̂)/∂d: how a constant error in d̂ shows in the prior error, through the model
+    /// and this filter's own corrections (the disturbance filter's H_d = H·S).
+    dist_sens: SMatrix<f64, N, 3>,
+    gains: Option<[Option<SVector<f64, N>>; MAX_ROWS]>,
+    last_gyro: Option<Vector3<f64>>,
+    retune: Option<(Retune, [f64; 3])>,
+    unobservable_axis: Option<Vector3<f64>>,
+    t_s: f64,
+    nis: [f64; 2],
+    status: EstimatorStatus,
+}
+
+impl<const N: usize> Mekf<N> {
+    /// A filter of `cfg` starting at `q0` with rate `omega0` and covariance `p0`; `N` must
+    /// be `cfg.states.dim()`.
+    pub fn new(
+        cfg: MekfConfig,
+        tuning: MekfTuning,
+        q0: UnitQuaternion<f64>,
+        omega0: Vector3<f64>,
+        p0: SMatrix<f64, N, N>,
+    ) -> Self {
+        debug_assert_eq!(N, cfg.states.dim(), "{}", cfg.id);
+        let j = cfg.inertia_kg_m2;
+        let mut f = Self {
+            cfg,
+            tuning,
+            j,
+            j_inv: j.try_inverse().unwrap_or_else(Matrix3::identity),
+            q: q0,
+            omega: omega0,
+            gyro_bias: Vector3::zeros(),
+            mag_bias: Vector3::zeros(),
+            p: p0,
+            published: p0,
+            dist: cfg.disturbance.then_some(Disturbance {
+                d: Vector3::zeros(),
+                p: Matrix3::identity() * DIST_P0,
+            }),
+            dist_sens: SMatrix::zeros(),
+            gains: None,
+            last_gyro: None,
+            retune: None,
+            unobservable_axis: None,
+            t_s: 0.0,
+            nis: [0.0; 2],
+            status: EstimatorStatus::Ok,
+        };
+        f.publish();
+        f
+    }
+
+    /// Re-derives the tuning from the lab's parameters on every live change: `f(params, q)`
+    /// with this filter's base `q` = (q_Λ, q_ω, q_bias).
+    #[must_use]
+    pub fn with_retune(mut self, f: Retune, q: [f64; 3]) -> Self {
+        self.retune = Some((f, q));
+        self
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &MekfConfig {
+        &self.cfg
+    }
+
+    /// The covariance (δλ units for the attitude).
+    pub fn p(&self) -> &SMatrix<f64, N, N> {
+        &self.p
+    }
+
+    /// The disturbance estimate (1/s²), if the filter runs one.
+    pub fn disturbance(&self) -> Option<Vector3<f64>> {
+        self.dist.map(|d| d.d)
+    }
+}
+
+impl<const N: usize> Estimator for Mekf<N> {
+    fn id(&self) -> &'static str {
+        self.cfg.id
+    }
+
+    fn label(&self) -> &'static str {
+        self.cfg.label
+    }
+
+    fn unobservable_axis_body(&self) -> Option<Vector3<f64>> {
+        self.unobservable_axis
+    }
+
+    fn apply_params(&mut self, params: &ParamValues) {
+        if let Some((f, q)) = self.retune {
+            self.tuning = f(params, q);
+        }
+    }
+
+    fn step(&mut self, m: &Measurements, dt_s: f64) {
+        if matches!(self.status, EstimatorStatus::Diverged(_)) {
+            return;
+        }
+        let Some(ob) = m.onboard else { return };
+        if let Some(g) = m.gyro_body_rad_s {
+            self.last_gyro = Some(g);
+        }
+        self.t_s += dt_s;
+        self.predict(&ob, dt_s);
+        if let Some(d) = &mut self.dist {
+            d.p /= self.tuning.alpha.clamp(1e-3, 1.0).powf(dt_s);
+            // Fading without information (a sensor out) would grow P_d without bound.
+            let peak = d.p.diagonal().max();
+            if peak > DIST_P_MAX {
+                d.p *= DIST_P_MAX / peak;
+            }
+        }
+        self.update(m, &ob);
+        self.publish();
+        let finite = self
+            .q
+            .coords
+            .iter()
+            .chain(self.omega.iter())
+            .chain(self.p.iter())
+            .all(|v| v.is_finite());
+        let att_sigma = 2.0
+            * (0..3)
+                .map(|i| self.p[(i, i)])
+                .fold(0.0_f64, f64::max)
+                .sqrt();
+        if !finite {
+            self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+        } else if !positive_semidefinite(&self.p) {
+            self.status = EstimatorStatus::Diverged(
+                "the covariance lost positive definiteness: R is too small beside P for double precision".into(),
+            );
+        } else if att_sigma > LOST_RAD {
+            self.status = EstimatorStatus::Diverged(format!(
+                "attitude σ {:.0}° (over {:.0}°): the filter has lost the attitude",
+                att_sigma.to_degrees(),
+                LOST_RAD.to_degrees()
+            ));
+        }
+    }
+
+    fn estimate(&self) -> Estimate {
+        Estimate {
+            attitude: Attitude::Quaternion(self.q),
+            rate_body_rad_s: Some(self.rate()),
+            angle_rad: None,
+        }
+    }
+
+    fn status(&self) -> &EstimatorStatus {
+        &self.status
+    }
+
+    fn covariance_states(&self) -> &'static [StateInfo] {
+        states_of(self.cfg.states)
+    }
+
+    fn covariance(&self) -> Option<Covariance<'_>> {
+        Some(Covariance {
+            states: states_of(self.cfg.states),
+            matrix: self.published.as_slice(),
+        })
+    }
+
+    fn extra_names(&self) -> &'static [&'static str] {
+        const NIS: [&str; 2] = ["nis", "nis_dof"];
+        const GB: [&str; 5] = [
+            "nis",
+            "nis_dof",
+            "gbias_x_deg_s",
+            "gbias_y_deg_s",
+            "gbias_z_deg_s",
+        ];
+        const MB: [&str; 5] = ["nis", "nis_dof", "mbias_x_nt", "mbias_y_nt", "mbias_z_nt"];
+        const D: [&str; 5] = ["nis", "nis_dof", "d_x_s2", "d_y_s2", "d_z_s2"];
+        const GB_D: [&str; 8] = [
+            "nis",
+            "nis_dof",
+            "gbias_x_deg_s",
+            "gbias_y_deg_s",
+            "gbias_z_deg_s",
+            "d_x_s2",
+            "d_y_s2",
+            "d_z_s2",
+        ];
+        const MB_D: [&str; 8] = [
+            "nis",
+            "nis_dof",
+            "mbias_x_nt",
+            "mbias_y_nt",
+            "mbias_z_nt",
+            "d_x_s2",
+            "d_y_s2",
+            "d_z_s2",
+        ];
+        let st = self.cfg.states;
+        match (
+            st.gyro_bias().is_some(),
+            st.mag_bias().is_some(),
+            self.dist.is_some(),
+        ) {
+            (true, _, false) => &GB,
+            (_, true, false) => &MB,
+            (true, _, true) => &GB_D,
+            (_, true, true) => &MB_D,
+            (false, false, true) => &D,
+            (false, false, false) => &NIS,
+        }
+    }
+
+    fn extras(&self, out: &mut [f64]) {
+        out[0] = self.nis[0];
+        out[1] = self.nis[1];
+        let mut k = 2;
+        let mut put = |v: Vector3<f64>| {
+            out[k..k + 3].copy_from_slice(v.as_slice());
+            k += 3;
+        };
+        if self.cfg.states.gyro_bias().is_some() {
+            put(self.gyro_bias.map(f64::to_degrees));
+        }
+        if self.cfg.states.mag_bias().is_some() {
+            put(self.mag_bias);
+        }
+        if let Some(d) = self.dist {
+            put(d.d);
+        }
+    }
+}

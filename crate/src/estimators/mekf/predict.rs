@@ -1,0 +1,122 @@
+//! The prediction of [`Mekf`]: the dynamics of eqs. 6–7 integrated by RK4 and the
+//! covariance propagated through their Jacobian.
+
+use super::*;
+
+impl<const N: usize> Mekf<N> {
+    /// The body rate used now: the state, or the gyro less the bias (reduced variant).
+    pub(super) fn rate(&self) -> Vector3<f64> {
+        match self.cfg.states.omega() {
+            Some(_) => self.omega,
+            None => self.last_gyro.map_or(self.omega, |g| g - self.gyro_bias),
+        }
+    }
+
+    /// q̇ and ω̇ of the model at (q, ω).
+    pub(super) fn derivative(
+        &self,
+        q: &UnitQuaternion<f64>,
+        omega: &Vector3<f64>,
+        ob: &Onboard,
+    ) -> (nalgebra::Quaternion<f64>, Vector3<f64>) {
+        let w_rel = omega - q.inverse_transform_vector(&ob.frame_rate_orbit_rad_s);
+        let q_dot = q.into_inner() * nalgebra::Quaternion::from_imag(w_rel) * 0.5;
+        let eta = q.inverse_transform_vector(&Vector3::z());
+        let m_gg = eta.cross(&(self.j * eta)) * ob.gravity_gradient_coeff;
+        let h = ob.wheel_momentum_body;
+        let d = self.dist.map_or(Vector3::zeros(), |d| d.d);
+        let w_dot =
+            self.j_inv * (m_gg - omega.cross(&(self.j * omega + h)) - ob.wheel_torque_body) + d;
+        (q_dot, w_dot)
+    }
+
+    pub(super) fn predict(&mut self, ob: &Onboard, dt: f64) {
+        let has_omega = self.cfg.states.omega().is_some();
+        let (q0, w0) = (self.q, self.rate());
+        // RK4 of (q, ω); the reduced variant holds ω at the gyro reading.
+        let step = |q: &UnitQuaternion<f64>, w: &Vector3<f64>| {
+            let (qd, wd) = self.derivative(q, w, ob);
+            (qd, if has_omega { wd } else { Vector3::zeros() })
+        };
+        let add = |q: &UnitQuaternion<f64>, dq: &nalgebra::Quaternion<f64>, h: f64| {
+            UnitQuaternion::new_normalize(q.into_inner() + dq * h)
+        };
+        let (k1q, k1w) = step(&q0, &w0);
+        let (k2q, k2w) = step(&add(&q0, &k1q, dt / 2.0), &(w0 + k1w * dt / 2.0));
+        let (k3q, k3w) = step(&add(&q0, &k2q, dt / 2.0), &(w0 + k2w * dt / 2.0));
+        let (k4q, k4w) = step(&add(&q0, &k3q, dt), &(w0 + k3w * dt));
+        self.q = add(&q0, &((k1q + k2q * 2.0 + k3q * 2.0 + k4q) / 6.0), dt);
+        if has_omega {
+            self.omega = w0 + (k1w + k2w * 2.0 + k3w * 2.0 + k4w) * (dt / 6.0);
+        }
+        if self.gains.is_some() {
+            return; // constant gain: no covariance propagation (§3.3)
+        }
+        let f = self.jacobian(&w0, ob);
+        let phi = SMatrix::<f64, N, N>::identity() + f * dt;
+        let t = self.tuning;
+        let mut q = SMatrix::<f64, N, N>::zeros();
+        let gyro_att = if has_omega {
+            0.0
+        } else {
+            (t.gyro_sigma_rad_s * dt / 2.0).powi(2)
+        };
+        for i in 0..3 {
+            q[(i, i)] = t.q_att * t.q_att + gyro_att;
+        }
+        if let Some(o) = self.cfg.states.omega() {
+            for i in 0..3 {
+                q[(o + i, o + i)] = t.q_rate * t.q_rate;
+            }
+        }
+        for b in [self.cfg.states.gyro_bias(), self.cfg.states.mag_bias()]
+            .into_iter()
+            .flatten()
+        {
+            for i in 0..3 {
+                q[(b + i, b + i)] = t.q_bias * t.q_bias;
+            }
+        }
+        self.p = symmetrize(&(phi * self.p * phi.transpose() + q));
+        if self.dist.is_some() {
+            // A constant d moves δω by d·dt and δλ (half angle) by d·dt²/4 per step.
+            let mut gamma = SMatrix::<f64, N, 3>::zeros();
+            if let Some(o) = self.cfg.states.omega() {
+                for i in 0..3 {
+                    gamma[(i, i)] = dt * dt / 4.0;
+                    gamma[(o + i, i)] = dt;
+                }
+            }
+            self.dist_sens = phi * self.dist_sens + gamma;
+        }
+    }
+
+    /// F = ∂f/∂x at the estimate (see the module documentation).
+    pub(super) fn jacobian(&self, w: &Vector3<f64>, ob: &Onboard) -> SMatrix<f64, N, N> {
+        let mut f = SMatrix::<f64, N, N>::zeros();
+        f.fixed_view_mut::<3, 3>(0, 0).copy_from(&(-skew(w)));
+        match self.cfg.states.omega() {
+            Some(o) => {
+                f.fixed_view_mut::<3, 3>(0, o)
+                    .copy_from(&(Matrix3::identity() * 0.5));
+                let eta = self.q.inverse_transform_vector(&Vector3::z());
+                let (se, sje) = (skew(&eta), skew(&(self.j * eta)));
+                let fg = se * self.j * se - sje * se;
+                let k = 2.0 * ob.gravity_gradient_coeff;
+                f.fixed_view_mut::<3, 3>(o, 0)
+                    .copy_from(&(self.j_inv * fg * k));
+                let h = ob.wheel_momentum_body;
+                let gyro = skew(&(self.j * w + h)) - skew(w) * self.j;
+                f.fixed_view_mut::<3, 3>(o, o)
+                    .copy_from(&(self.j_inv * gyro));
+            }
+            None => {
+                if let Some(b) = self.cfg.states.gyro_bias() {
+                    f.fixed_view_mut::<3, 3>(0, b)
+                        .copy_from(&(Matrix3::identity() * -0.5));
+                }
+            }
+        }
+        f
+    }
+}
