@@ -8,20 +8,22 @@
 
 mod estimate;
 mod lab;
+mod page;
 mod params;
 mod report;
 mod series;
+mod study;
 
 pub use estimate::{
     Attitude, ControlInput, Covariance, Estimate, Estimator, EstimatorStatus, Measurements,
     Onboard, Outputs, STATUS_OK, StateInfo, StateKind,
 };
-pub use lab::{
-    AccuracyTable, BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, Lab, LabRun,
-    OrbitPicture, Outage, OutputFile, OverlayFn, Preset, SINGLE_AXIS_VIEWS, SceneExtras,
-    SceneVector, ScoreFn, SensorModel, SweepAxis, SweepScoring, SweepSpec, TimingItem, TruthModel,
-    TruthState, ViewKind,
+pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};
+pub use page::{
+    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage,
+    SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};
 pub use series::{PlotTab, SeriesGroup, SeriesSpec};
+pub use study::{OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem};

@@ -1,0 +1,149 @@
+//! What a lab shows, as data: the views of the page's top row, the body the 3D view draws,
+//! what the sensors add to it, the paper's figures as plot tabs, the outages the plots shade
+//! and the diagrams beside them. The page (web/) draws from these; the core never reads them
+//! to simulate.
+
+use nalgebra::Vector3;
+
+/// A reference direction drawn from the body in the 3D view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneVector {
+    /// Short label at its tip.
+    pub label: &'static str,
+    /// Unit direction in the reference frame.
+    pub dir_ref: Vector3<f64>,
+    /// Colour (sRGB).
+    pub rgb: [u8; 3],
+}
+
+/// Where a satellite is on its orbit, for a small picture of the Earth beside the body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrbitPicture {
+    /// Position (ECI, m).
+    pub position_eci_m: Vector3<f64>,
+    /// Unit orbit normal (ECI).
+    pub normal_eci: Vector3<f64>,
+    /// Unit sun direction (ECI).
+    pub sun_eci: Vector3<f64>,
+    /// In the Earth's shadow.
+    pub eclipse: bool,
+    /// Earth radius (m).
+    pub earth_radius_m: f64,
+}
+
+/// What a lab's sensors add to the 3D view.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SceneExtras {
+    /// Reference directions (sun, field, nadir …).
+    pub vectors: Vec<SceneVector>,
+    /// The orbit, if the lab flies one.
+    pub orbit: Option<OrbitPicture>,
+}
+
+/// The body the 3D view draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BodyShape {
+    /// A box with two panels.
+    #[default]
+    Box,
+    /// A hexagonal prism (TabletSat).
+    HexPrism,
+}
+
+/// A named set of series plotted together, e.g. a figure of the paper.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Figure {
+    /// Tab title, e.g. "Fig. 8: v and vᵃ".
+    pub title: &'static str,
+    /// Series names (as recorded) drawn in it.
+    pub series: &'static [&'static str],
+    /// Draw log10 of the values (covariance elements spanning decades).
+    pub log: bool,
+}
+
+impl Figure {
+    /// A figure on a linear axis.
+    pub const fn new(title: &'static str, series: &'static [&'static str]) -> Self {
+        Self {
+            title,
+            series,
+            log: false,
+        }
+    }
+
+    /// The same on a log10 axis.
+    pub const fn log(self) -> Self {
+        Self { log: true, ..self }
+    }
+}
+
+/// A sensor outage a lab's plots shade: the intervals where a recorded 0/1 series equals
+/// `out_when` (e.g. paper 2's eclipse, or the star tracker unavailable).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outage {
+    /// The 0/1 series.
+    pub series: &'static str,
+    /// Its value during the outage.
+    pub out_when: f64,
+    /// What the shading is called in the legend.
+    pub label: &'static str,
+}
+
+/// A view the page's top row shows, left to right, as the lab declares (each lab shows what
+/// explains it: a body turning about one axis has no use for the Riemann sphere).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewKind {
+    /// The body in 3D with the estimate as a ghost.
+    Body3d,
+    /// The Riemann sphere: the vertical in body axes.
+    Sphere,
+    /// The complex plane of w (or the lab's diagram, when it has one).
+    WPlane,
+    /// A single-axis angle on a dial, a needle per source.
+    Dial,
+    /// Rate against angle, a trail per source.
+    PhasePortrait,
+}
+
+impl ViewKind {
+    /// A short lower-case name (file names, test output).
+    pub fn slug(self) -> &'static str {
+        match self {
+            Self::Body3d => "body3d",
+            Self::Sphere => "sphere",
+            Self::WPlane => "wplane",
+            Self::Dial => "dial",
+            Self::PhasePortrait => "phase-portrait",
+        }
+    }
+}
+
+/// The views of a lab that does not say otherwise.
+pub const DEFAULT_VIEWS: &[ViewKind] = &[ViewKind::Body3d, ViewKind::Sphere, ViewKind::WPlane];
+
+/// The views of a lab whose body turns about one axis.
+pub const SINGLE_AXIS_VIEWS: &[ViewKind] =
+    &[ViewKind::Body3d, ViewKind::Dial, ViewKind::PhasePortrait];
+
+/// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagram {
+    /// Title.
+    pub title: String,
+    /// Draw the unit circle.
+    pub unit_circle: bool,
+    /// Labelled points.
+    pub points: Vec<DiagramPoint>,
+}
+
+/// One labelled point of a [`Diagram`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct DiagramPoint {
+    /// Legend text.
+    pub label: String,
+    /// Position (x, y).
+    pub xy: [f64; 2],
+    /// Id of the estimator the point belongs to (it takes that estimator's colour and hides
+    /// with it), if any.
+    pub source: Option<&'static str>,
+}
