@@ -1,0 +1,156 @@
+//! `attlab bench` and the timing table of `attlab reproduce`: nanoseconds per step of the
+//! loop against its estimators alone (measured here, never in tests).
+
+use super::run::all_series;
+use attlab::labs;
+use attlab::model::{Lab, ParamValues};
+use attlab::sim::{SimOptions, Simulation};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::io::Write;
+use std::time::Instant;
+
+/// Times the lab's timing items and prints each against the first (the cost comparison).
+pub(super) fn print_timings(lab: &'static dyn Lab, reps: usize) {
+    let mut items = lab.timing_items();
+    if items.is_empty() {
+        return;
+    }
+    println!("cost (native, release build, {reps} repetitions each; measured, not a test):");
+    let mut base = None;
+    for item in &mut items {
+        for _ in 0..reps / 10 {
+            (item.run)();
+        }
+        let t0 = Instant::now();
+        for _ in 0..reps {
+            (item.run)();
+        }
+        let ns = t0.elapsed().as_nanos() as f64 / reps as f64;
+        let b = *base.get_or_insert(ns);
+        let flops = item.flops.map_or(String::new(), |f| {
+            format!("   {f} FLOP counted, {:.1} FLOP/ns", f as f64 / ns)
+        });
+        println!(
+            "  {:<40} {:>8.1} ns   ×{:.2} of the first{flops}",
+            item.name,
+            ns,
+            ns / b
+        );
+    }
+    println!();
+}
+
+/// Nanoseconds per call of `f`: the best of five batches of `n / 5` calls after a
+/// warm-up (the least disturbed measurement on a shared machine).
+fn time_ns(n: usize, mut f: impl FnMut()) -> f64 {
+    for _ in 0..n / 10 {
+        f();
+    }
+    let batch = (n / 5).max(1);
+    (0..5)
+        .map(|_| {
+            let t0 = Instant::now();
+            for _ in 0..batch {
+                f();
+            }
+            t0.elapsed().as_nanos() as f64 / batch as f64
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+pub(super) fn bench(steps: usize, only: Option<&'static dyn Lab>) {
+    println!(
+        "{:<14} {:<38} {:>10} {:>10}",
+        "lab", "item", "ns/step", "note"
+    );
+    let selected: Vec<&'static dyn Lab> = only.map_or_else(|| labs::all().to_vec(), |l| vec![l]);
+    for lab in &selected {
+        let params = ParamValues::defaults(lab.params());
+        let mut sim = Simulation::new(*lab, params.clone(), 1);
+        let step_ns = time_ns(steps, || sim.step());
+        let memory = sim.recorder().memory_bytes();
+        let series = sim.specs().len();
+        let mut all = Simulation::with_options(*lab, params.clone(), 1, all_series())
+            .map_err(|e| e.to_string());
+        let all_ns = match &mut all {
+            Ok(sim) => time_ns(steps, || sim.step()),
+            Err(_) => f64::NAN,
+        };
+        let mut bare = Simulation::with_options(*lab, params.clone(), 1, SimOptions::named(&[]))
+            .map_err(|e| e.to_string());
+        let bare_ns = match &mut bare {
+            Ok(sim) => time_ns(steps, || sim.step()),
+            Err(_) => f64::NAN,
+        };
+
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let mut run = lab.build(&params, &mut rng);
+        let dt = lab.dt_s(&params);
+        let trace = run.measurement_trace(dt, steps, &mut rng);
+        let mut sum = 0.0;
+        let mut lines = Vec::new();
+        for est in &mut run.estimators {
+            // Best of five chunks of the trace, like the simulation step.
+            let ns = trace
+                .chunks(trace.len().div_ceil(5).max(1))
+                .map(|chunk| {
+                    let t0 = Instant::now();
+                    for m in chunk {
+                        est.step(m, dt);
+                    }
+                    t0.elapsed().as_nanos() as f64 / chunk.len() as f64
+                })
+                .fold(f64::INFINITY, f64::min);
+            std::hint::black_box(est.estimate());
+            sum += ns;
+            lines.push((format!("estimator {}", est.id()), ns));
+        }
+        let aim = 2.0 * sum + 500.0;
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            lab.id(),
+            format!("simulation step (page: {series} series)"),
+            step_ns,
+            if step_ns <= aim {
+                "within aim"
+            } else {
+                "OVER AIM"
+            }
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0}",
+            "", "simulation step (every series)", all_ns
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0}",
+            "", "simulation step (time only)", bare_ns
+        );
+        for (name, ns) in lines {
+            println!("{:<14} {:<38} {:>10.0}", "", name, ns);
+        }
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            "",
+            "sum of estimator steps",
+            sum,
+            format!("×{:.2}", step_ns / sum.max(1.0))
+        );
+        println!(
+            "{:<14} {:<38} {:>10.0} {:>10}",
+            "",
+            "aim: 2 × sum + 500 ns",
+            aim,
+            format!("{:.2} of aim", step_ns / aim)
+        );
+        println!(
+            "{:<14} {:<38} {:>10.1} {:>10}",
+            "",
+            "recorder memory (MiB, fixed)",
+            memory as f64 / (1 << 20) as f64,
+            format!("{} rows full rate", sim.recorder().window())
+        );
+        print_timings(*lab, steps * 10);
+    }
+    let _ = std::io::stdout().flush();
+}

@@ -1,0 +1,291 @@
+//! The CLI proper (native only).
+
+use attlab::analysis::fuzz::{self, FuzzConfig};
+use attlab::analysis::readme;
+use attlab::labs;
+use attlab::model::{Lab, ParamKind, Reproduction};
+use clap::{Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+mod bench;
+mod run;
+
+use bench::{bench, print_timings};
+use run::{LogUnits, replay, run};
+
+/// Attitude Lab, headless: reproduce the papers, run a lab to CSV, time the estimators.
+#[derive(Parser, Debug)]
+#[command(name = "attlab", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// List the labs and their parameters.
+    Labs,
+    /// Run a lab's paper scenarios and print measured numbers beside the paper's: each row
+    /// is a measurement, or a check that matches or (declared, with the reason) differs.
+    Reproduce {
+        /// Lab id, or `all`.
+        lab: String,
+        /// Also write the tables as JSON to this file.
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Print the tables as Markdown instead of plain text.
+        #[arg(long)]
+        markdown: bool,
+        /// Rewrite the tables between the `<!-- reproduce:ID -->` markers of this README.
+        #[arg(long)]
+        readme: Option<PathBuf>,
+    },
+    /// Run random parameter sets of every lab and check what must always hold (no panic,
+    /// finite estimates or a diverged status, symmetric PSD covariances, fixed memory).
+    Fuzz {
+        /// Parameter sets, spread over the labs.
+        #[arg(long, default_value_t = 1000)]
+        sets: usize,
+        /// Steps per set.
+        #[arg(long, default_value_t = 2000)]
+        steps: usize,
+        /// Seed of the parameter draws.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
+    /// Run a lab and write every recorded series to CSV (plus a JSON sidecar).
+    Run {
+        /// Lab id (see `attlab labs`).
+        #[arg(long)]
+        lab: String,
+        /// RNG seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Simulated time (s); default: the lab's.
+        #[arg(long)]
+        duration: Option<f64>,
+        /// Output CSV file; the sidecar is the same name with `.json`.
+        #[arg(long)]
+        csv: PathBuf,
+        /// Parameter override `key=value` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// A named preset of the lab (see `attlab labs`), applied before `--set`.
+        #[arg(long)]
+        preset: Option<String>,
+        /// Write every series even for a lab whose paper defines its own output file.
+        #[arg(long)]
+        all_series: bool,
+    },
+    /// Run a lab's estimators on a recorded log and write the series: a gyro log (CSV: time,
+    /// rate; p1) or an Arduino MPU-6050 log (CSV: time, ax, ay, az, gx, gy, gz; p4).
+    Replay {
+        /// Lab id (p1 for a gyro log, p4 for an IMU log).
+        #[arg(long)]
+        lab: String,
+        /// The log file.
+        #[arg(long)]
+        log: PathBuf,
+        /// Gyro logs: unit of the rate column, deg_s, mdeg_s or rad_s.
+        #[arg(long, default_value = "deg_s")]
+        rate_unit: String,
+        /// Unit of the time column, s or ms (default: s for a gyro log, ms — Arduino
+        /// millis() — for an IMU log).
+        #[arg(long)]
+        time_unit: Option<String>,
+        /// IMU logs: accelerometer columns in counts of ±2/4/8/16 g (counts2 … counts16; the
+        /// chip's power-on counts2 by default), g or mps2.
+        #[arg(long, default_value = "counts2")]
+        accel_unit: String,
+        /// IMU logs: gyro columns in counts of ±250/500/1000/2000 °/s (counts250 …; the
+        /// power-on counts250 by default), deg_s or rad_s.
+        #[arg(long, default_value = "counts250")]
+        gyro_unit: String,
+        /// Output CSV file.
+        #[arg(long)]
+        csv: PathBuf,
+        /// Parameter override `key=value` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
+    /// Time one simulation step of every lab and one step of every estimator.
+    Bench {
+        /// Steps to time per item.
+        #[arg(long, default_value_t = 20_000)]
+        steps: usize,
+        /// Only this lab.
+        #[arg(long)]
+        lab: Option<String>,
+    },
+}
+
+/// Entry point: parse, dispatch, map errors to a message and exit code 2.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Labs => {
+            list_labs();
+            Ok(true)
+        }
+        Command::Reproduce {
+            lab,
+            json,
+            markdown,
+            readme,
+        } => reproduce(&lab, json.as_deref(), markdown, readme.as_deref()),
+        Command::Fuzz { sets, steps, seed } => Ok(run_fuzz(sets, steps, seed)),
+        Command::Run {
+            lab,
+            seed,
+            duration,
+            csv,
+            set,
+            preset,
+            all_series,
+        } => run(
+            &lab,
+            seed,
+            duration,
+            &csv,
+            preset.as_deref(),
+            &set,
+            all_series,
+        )
+        .map(|()| true),
+        Command::Replay {
+            lab,
+            log,
+            rate_unit,
+            time_unit,
+            accel_unit,
+            gyro_unit,
+            csv,
+            set,
+        } => replay(
+            &lab,
+            &log,
+            LogUnits {
+                rate: &rate_unit,
+                time: time_unit.as_deref(),
+                accel: &accel_unit,
+                gyro: &gyro_unit,
+            },
+            &csv,
+            &set,
+        )
+        .map(|()| true),
+        Command::Bench { steps, lab } => match lab.as_deref().map(find_lab).transpose() {
+            Ok(only) => {
+                bench(steps.max(10), only);
+                Ok(true)
+            }
+            Err(e) => Err(e),
+        },
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(message) => {
+            eprintln!("attlab: error: {message}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn find_lab(id: &str) -> Result<&'static dyn Lab, String> {
+    labs::find(id).ok_or_else(|| format!("no lab `{id}`; labs: {}", labs::ids()))
+}
+
+fn list_labs() {
+    for lab in labs::all() {
+        println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
+        for p in lab.presets() {
+            println!("  --preset {:?} ({})", p.name, p.help);
+        }
+        for p in lab.params() {
+            let range = match p.kind {
+                ParamKind::Choice(options) => options
+                    .iter()
+                    .enumerate()
+                    .map(|(i, o)| format!("{i} = {o}"))
+                    .collect::<Vec<_>>()
+                    .join(" | "),
+                ParamKind::Toggle => "0 | 1".to_string(),
+                _ => format!("{} … {} {}", p.min, p.max, p.unit),
+            };
+            println!(
+                "  --set {}=<{range}> (default {}) {}",
+                p.key, p.default, p.label
+            );
+        }
+    }
+}
+
+fn reproduce(
+    which: &str,
+    json: Option<&Path>,
+    markdown: bool,
+    readme_path: Option<&Path>,
+) -> Result<bool, String> {
+    let selected: Vec<&'static dyn Lab> = if which == "all" {
+        labs::all().to_vec()
+    } else {
+        vec![find_lab(which)?]
+    };
+    let mut reports: Vec<Reproduction> = Vec::new();
+    for lab in selected {
+        let rep = lab
+            .reproduce()
+            .map_err(|e| format!("{}: the reproduction could not be computed: {e}", lab.id()))?;
+        if markdown {
+            println!("### {}\n\n{}", rep.lab, rep.to_markdown());
+        } else {
+            println!("{}", rep.to_table());
+            print_timings(lab, 200_000);
+        }
+        reports.push(rep);
+    }
+    if let Some(path) = json {
+        let text = serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?;
+        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    if let Some(path) = readme_path {
+        let mut text = std::fs::read_to_string(path)
+            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        for rep in &reports {
+            text =
+                readme::with_table(&text, rep).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("updated {} tables in {}", reports.len(), path.display());
+    }
+    let failures: Vec<String> = reports.iter().flat_map(Reproduction::failures).collect();
+    for f in &failures {
+        println!("FAILS: {f}");
+    }
+    Ok(failures.is_empty())
+}
+
+fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
+    let config = FuzzConfig { sets, steps, seed };
+    let report = fuzz::run(labs::all(), config, |i, lab| {
+        if i % 100 == 0 {
+            eprintln!("fuzz: set {i} of {sets} ({lab})");
+        }
+    });
+    for (lab, n) in &report.sets_per_lab {
+        println!("{lab:<16} {n} sets");
+    }
+    println!(
+        "{} sets, {} with an estimator flagging itself (diverged/unobservable), largest recorder {:.1} MiB, {} failures",
+        sets,
+        report.flagged,
+        report.max_memory_bytes as f64 / (1 << 20) as f64,
+        report.failures.len()
+    );
+    for f in &report.failures {
+        println!("FAIL {f}");
+    }
+    report.failures.is_empty()
+}

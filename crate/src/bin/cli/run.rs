@@ -1,0 +1,223 @@
+//! `attlab run` and `attlab replay`: a lab's run or a recorded log through its estimators,
+//! every series streamed to a CSV.
+
+use super::find_lab;
+use attlab::model::{Lab, ParamValues};
+use attlab::sim::{CsvSink, Selection, SimOptions, Simulation};
+use std::path::Path;
+
+pub(super) fn run(
+    lab_id: &str,
+    seed: u64,
+    duration: Option<f64>,
+    csv_path: &Path,
+    preset: Option<&str>,
+    set: &[String],
+    every_series: bool,
+) -> Result<(), String> {
+    let lab = find_lab(lab_id)?;
+    let params = params_from(lab, preset, set)?;
+    let duration_s = duration.unwrap_or(lab.default_duration_s());
+    if !(duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1e6) {
+        return Err(format!(
+            "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
+        ));
+    }
+    if let (false, Some(file)) = (every_series, lab.output_file(&params)) {
+        let out = std::fs::File::create(csv_path)
+            .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+        let (rows, stopped) = attlab::sim::write_output_file(
+            lab,
+            params,
+            seed,
+            duration_s,
+            &file,
+            std::io::BufWriter::new(out),
+        )?;
+        println!(
+            "wrote the paper's output file, {rows} rows ({}) to {}{}",
+            file.headers.join(", "),
+            csv_path.display(),
+            if stopped {
+                ", ending at the first row within tolerance"
+            } else {
+                " (the tolerance was not reached)"
+            }
+        );
+        return Ok(());
+    }
+    let mut sim = Simulation::with_options(lab, params.clone(), seed, all_series())
+        .map_err(|e| e.to_string())?;
+    let rows = stream_csv(&mut sim, duration_s, csv_path)?;
+    let sidecar = csv_path.with_extension("json");
+    let meta = serde_json::json!({
+        "attlab_version": env!("CARGO_PKG_VERSION"),
+        "lab": lab.id(),
+        "title": lab.title(),
+        "paper": lab.paper(),
+        "seed": seed,
+        "duration_s": duration_s,
+        "dt_s": sim.dt_s(),
+        "rows": rows,
+        "params": lab.params().iter().map(|p| serde_json::json!({
+            "key": p.key, "value": params.get(p.key), "unit": p.unit, "label": p.label,
+            "default": p.default, "min": p.min, "max": p.max,
+        })).collect::<Vec<_>>(),
+        "series": sim.specs(),
+        "missing_values": "empty cells",
+        "csv": csv_path.file_name().map(|n| n.to_string_lossy().to_string()),
+    });
+    let text = serde_json::to_string_pretty(&meta).map_err(|e| e.to_string())?;
+    std::fs::write(&sidecar, text)
+        .map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
+    println!(
+        "wrote {rows} rows × {} series to {} and parameters to {}",
+        sim.specs().len(),
+        csv_path.display(),
+        sidecar.display()
+    );
+    Ok(())
+}
+
+/// The unit flags of `attlab replay`.
+pub(super) struct LogUnits<'a> {
+    pub(super) rate: &'a str,
+    pub(super) time: Option<&'a str>,
+    pub(super) accel: &'a str,
+    pub(super) gyro: &'a str,
+}
+
+pub(super) fn replay(
+    lab_id: &str,
+    log_path: &Path,
+    units: LogUnits<'_>,
+    csv_path: &Path,
+    set: &[String],
+) -> Result<(), String> {
+    use attlab::sensors::{
+        AccelUnit, GyroUnit, ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log,
+    };
+    let lab = find_lab(lab_id)?;
+    let names = |all: &[&str]| all.join(", ");
+    let imu = lab.accepts_imu_log();
+    if !imu && !lab.accepts_rate_log() {
+        return Err(format!(
+            "lab {lab_id} does not replay logs: use p1 (gyro log) or p4 (IMU log)"
+        ));
+    }
+    let time_unit = match units.time.unwrap_or(if imu { "ms" } else { "s" }) {
+        "s" => TimeUnit::Seconds,
+        "ms" => TimeUnit::Milliseconds,
+        other => return Err(format!("--time-unit `{other}`: use s or ms")),
+    };
+    let text = std::fs::read_to_string(log_path)
+        .map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
+    let log = if imu {
+        let accel = AccelUnit::from_name(units.accel).ok_or_else(|| {
+            format!(
+                "--accel-unit `{}`: use one of {}",
+                units.accel,
+                names(&AccelUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        let gyro = GyroUnit::from_name(units.gyro).ok_or_else(|| {
+            format!(
+                "--gyro-unit `{}`: use one of {}",
+                units.gyro,
+                names(&GyroUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        parse_imu_log(
+            &text,
+            ImuScales {
+                time: time_unit,
+                accel,
+                gyro,
+            },
+        )
+    } else {
+        let rate_unit = RateUnit::from_name(units.rate).ok_or_else(|| {
+            format!(
+                "--rate-unit `{}`: use one of {}",
+                units.rate,
+                names(&RateUnit::ALL.map(|(_, n)| n))
+            )
+        })?;
+        parse_rate_log(&text, rate_unit, time_unit)
+    };
+    for e in &log.errors {
+        eprintln!("attlab: {}: skipped {e}", log_path.display());
+    }
+    let params = params_from(lab, None, set)?;
+    let (samples, skipped) = (log.t_s.len(), log.errors.len());
+    let duration = log.t_s.last().copied().unwrap_or(0.0) - log.t_s.first().copied().unwrap_or(0.0);
+    let mut sim = Simulation::replay(lab, params, log, all_series())
+        .map_err(|e| format!("{}: {e}", log_path.display()))?;
+    stream_csv(&mut sim, duration, csv_path)?;
+    println!(
+        "replayed {samples} samples ({skipped} lines skipped) over {duration:.2} s into {}",
+        csv_path.display()
+    );
+    Ok(())
+}
+
+/// The lab's defaults, then the named preset, then the `key=value` overrides; every bad
+/// item is reported.
+fn params_from(
+    lab: &'static dyn Lab,
+    preset: Option<&str>,
+    set: &[String],
+) -> Result<ParamValues, String> {
+    let mut params = ParamValues::defaults(lab.params());
+    if let Some(name) = preset {
+        let names = || {
+            lab.presets()
+                .iter()
+                .map(|p| p.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let p = lab
+            .presets()
+            .iter()
+            .find(|p| p.name == name)
+            .ok_or_else(|| format!("no preset `{name}` in {} (presets: {})", lab.id(), names()))?;
+        for (k, v) in p.values {
+            params.set(lab.params(), k, *v).map_err(|e| e.to_string())?;
+        }
+    }
+    let errors = params.apply_assignments(lab.params(), set.iter().map(String::as_str));
+    if errors.is_empty() {
+        Ok(params)
+    } else {
+        Err(errors
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("; "))
+    }
+}
+
+/// Every series, in a small recorder: the CSV gets every sample as it is made.
+pub(super) fn all_series() -> SimOptions {
+    SimOptions {
+        selection: Selection::All,
+        budget_bytes: 1 << 20,
+    }
+}
+
+/// Writes the header and the current row, then steps until `duration_s`, one row per step.
+/// Returns the number of rows written.
+fn stream_csv(sim: &mut Simulation, duration_s: f64, csv_path: &Path) -> Result<u64, String> {
+    let file = std::fs::File::create(csv_path)
+        .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
+    let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
+    let mut out = CsvSink::new(std::io::BufWriter::new(file), sim.specs()).map_err(io)?;
+    out.row(sim.last_row()).map_err(io)?;
+    let end = duration_s - 1e-9 * sim.dt_s();
+    while sim.t_s() < end {
+        sim.step();
+        out.row(sim.last_row()).map_err(io)?;
+    }
+    out.finish().map_err(io)
+}
