@@ -169,6 +169,61 @@ fn a_live_parameter_change_acts_without_restart() {
     }
 }
 
+/// A parameter marked "applies at Reset" changes nothing in the running simulation — not
+/// a value, not the step length — and after Reset the run is the one built with the new value.
+#[test]
+fn a_reset_only_parameter_waits_for_reset() {
+    let mut moved = 0;
+    for lab in labs::all() {
+        for spec in lab.params().iter().filter(|s| s.needs_reset) {
+            let p = ParamValues::defaults(lab.params());
+            let value = if p.get(spec.key) == spec.max {
+                spec.min
+            } else {
+                spec.max
+            };
+            let mut a = run(*lab, p.clone(), 5, 40);
+            let mut b = run(*lab, p.clone(), 5, 40);
+            b.set_param(spec.key, value).unwrap();
+            assert_eq!(
+                b.params().get(spec.key),
+                value,
+                "{}: {}",
+                lab.id(),
+                spec.key
+            );
+            assert_eq!(b.pending_reset(), vec![spec.key], "{}", lab.id());
+            for k in 0..300 {
+                a.step();
+                b.step();
+                assert!(
+                    a.dt_s() == b.dt_s() && same_bits(a.last_row(), b.last_row()),
+                    "{}: moving reset-only {} changed the run {k} steps later",
+                    lab.id(),
+                    spec.key
+                );
+            }
+            b.reset(6);
+            assert!(b.pending_reset().is_empty(), "{}", lab.id());
+            let mut moved_p = p.clone();
+            moved_p.set(lab.params(), spec.key, value).unwrap();
+            let mut fresh = run(*lab, moved_p, 6, 0);
+            for _ in 0..50 {
+                b.step();
+                fresh.step();
+            }
+            assert!(
+                same_bits(b.last_row(), fresh.last_row()),
+                "{}: after Reset, {} = {value} is not the run built with it",
+                lab.id(),
+                spec.key
+            );
+            moved += 1;
+        }
+    }
+    assert!(moved >= 20, "every lab's reset-only parameters ({moved})");
+}
+
 #[test]
 fn every_parameter_at_its_extremes_runs_without_panic_or_silent_nan() {
     for lab in labs::all() {

@@ -6,13 +6,24 @@
 //! its memory budget allows).
 
 mod accuracy;
+mod catalogue;
 mod csv;
+mod derived;
+mod export;
+mod health;
+mod journal;
 mod layout;
 mod replay;
+mod rerun;
+mod selection;
 
 pub use accuracy::{AccuracyRow, AccuracyTracker};
 pub use csv::{CsvSink, csv_cell};
-pub use layout::{Layout, Selection, UnknownSeries};
+pub use export::write_output_file;
+pub use journal::{Refused, ReplayError};
+pub use layout::Layout;
+pub use rerun::{RerunError, RerunItem};
+pub use selection::{Selection, UnknownSeries};
 
 use crate::model::{
     Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
@@ -20,6 +31,8 @@ use crate::model::{
 };
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
 use crate::sensors::RateLog;
+use health::Health;
+use journal::Journal;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use replay::{LogSensor, LogTruth};
@@ -70,18 +83,33 @@ pub fn default_tab(lab: &dyn Lab) -> PlotTab {
     }
 }
 
-/// A parameter change during a run: applied before step `step`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct JournalEntry {
-    step: u64,
-    key: &'static str,
-    value: f64,
+/// The column layout of `run` for `options.selection` (with the series `lab`'s figures
+/// draw, and the sphere's where the lab has one).
+fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout, UnknownSeries> {
+    let figure_series: Vec<&str> = lab
+        .figures()
+        .iter()
+        .flat_map(|f| f.series.iter().copied())
+        .collect();
+    Layout::new(
+        lab.id(),
+        run.truth.as_ref(),
+        run.sensors.as_ref(),
+        &run.estimators,
+        &options.selection,
+        &figure_series,
+        !lab.suspended() && run.truth.state().angle_rad.is_none(),
+    )
 }
 
 /// A running lab: one `(lab, parameters, seed)` always gives the same run.
 pub struct Simulation {
     lab: &'static dyn Lab,
+    /// What the user set: the next reset builds from these.
     params: ParamValues,
+    /// What this run uses: `params`, except that a parameter marked `needs_reset` keeps the
+    /// value the run was built with.
+    applied: ParamValues,
     initial_params: ParamValues,
     seed: u64,
     rng: ChaCha8Rng,
@@ -93,33 +121,34 @@ pub struct Simulation {
     recorder: Recorder,
     row: Vec<f64>,
     estimates: Vec<Estimate>,
-    statuses: Vec<EstimatorStatus>,
-    status_codes: Vec<f64>,
+    health: Health,
     options: SimOptions,
     replay: Option<Arc<RateLog>>,
-    journal: Vec<JournalEntry>,
+    journal: Journal,
     accuracy: Option<AccuracyTracker>,
 }
 
 impl Simulation {
     /// Starts `lab` with `params` (already validated) and `seed`, recording what the page
-    /// shows first ([`SimOptions::page`]) in the default memory budget.
+    /// shows first ([`SimOptions::page`]) in the default memory budget. The lab is built once.
     pub fn new(lab: &'static dyn Lab, params: ParamValues, seed: u64) -> Self {
-        // Built only to learn the series the lab has: the smallest recorder will do (a
-        // second full budget here would raise the page's high-water mark for good).
-        let probe = SimOptions {
-            budget_bytes: 0,
-            ..SimOptions::default()
-        };
-        let standard = match Self::with_options(lab, params, seed, probe) {
-            Ok(sim) => sim,
-            // The standard selection names no series, so it cannot be unknown.
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let run = lab.build(&params, &mut rng);
+        let standard = SimOptions::default();
+        let layout = |options: &SimOptions| layout_of(lab, &run, options);
+        // The standard selection names no series, so it cannot be unknown; a view names only
+        // series the lab has, so the standard one is kept only if something is badly wrong.
+        let (options, layout) = match layout(&standard) {
+            Ok(all) => {
+                let page = SimOptions::page(lab, all.available());
+                match layout(&page) {
+                    Ok(l) => (page, l),
+                    Err(_) => (standard, all),
+                }
+            }
             Err(e) => unreachable!("{e}"),
         };
-        let page = SimOptions::page(lab, standard.available_specs());
-        // A view names only series the lab has, so this keeps the standard one only if
-        // something is badly wrong.
-        Self::with_options(lab, standard.params.clone(), seed, page).unwrap_or(standard)
+        Self::assemble(lab, params, seed, rng, run, options, layout, None)
     }
 
     /// Starts `lab` recording `options.selection` within `options.budget_bytes`.
@@ -131,7 +160,10 @@ impl Simulation {
     ) -> Result<Self, UnknownSeries> {
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         let run = lab.build(&params, &mut rng);
-        Self::assemble(lab, params, seed, rng, run, options, None)
+        let layout = layout_of(lab, &run, &options)?;
+        Ok(Self::assemble(
+            lab, params, seed, rng, run, options, layout, None,
+        ))
     }
 
     /// Runs `lab`'s estimators on a recorded gyro log instead of simulated truth and sensors
@@ -152,9 +184,20 @@ impl Simulation {
         let mut run = lab.build(&params, &mut rng);
         run.truth = Box::new(LogTruth::new(log.clone()));
         run.sensors = Box::new(LogSensor::new(log.clone()));
-        Self::assemble(lab, params, 0, rng, run, options, Some(log)).map_err(|e| e.to_string())
+        let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
+        Ok(Self::assemble(
+            lab,
+            params,
+            0,
+            rng,
+            run,
+            options,
+            layout,
+            Some(log),
+        ))
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn assemble(
         lab: &'static dyn Lab,
         params: ParamValues,
@@ -162,22 +205,9 @@ impl Simulation {
         rng: ChaCha8Rng,
         run: LabRun,
         options: SimOptions,
+        layout: Layout,
         replay: Option<Arc<RateLog>>,
-    ) -> Result<Self, UnknownSeries> {
-        let figure_series: Vec<&str> = lab
-            .figures()
-            .iter()
-            .flat_map(|f| f.series.iter().copied())
-            .collect();
-        let layout = Layout::new(
-            lab.id(),
-            run.truth.as_ref(),
-            run.sensors.as_ref(),
-            &run.estimators,
-            &options.selection,
-            &figure_series,
-            !lab.suspended() && run.truth.state().angle_rad.is_none(),
-        )?;
+    ) -> Self {
         let recorder = Recorder::with_budget(layout.specs().to_vec(), options.budget_bytes);
         let n = run.estimators.len();
         let dt_s = match replay.as_ref().and_then(|l| l.median_dt_s()) {
@@ -187,6 +217,7 @@ impl Simulation {
         let mut sim = Self {
             lab,
             initial_params: params.clone(),
+            applied: params.clone(),
             params,
             seed,
             rng,
@@ -198,16 +229,15 @@ impl Simulation {
             recorder,
             row: Vec::new(),
             estimates: Vec::with_capacity(n),
-            statuses: vec![EstimatorStatus::Ok; n],
-            status_codes: vec![0.0; n],
+            health: Health::new(n),
             options,
             accuracy: lab.accuracy_table().map(|t| AccuracyTracker::new(t, n)),
             replay,
-            journal: Vec::new(),
+            journal: Journal::default(),
         };
         let truth = sim.run.truth.state();
         sim.record(&truth);
-        Ok(sim)
+        sim
     }
 
     /// Gives the recorder's memory back (an empty recorder of the same series): for a
@@ -312,33 +342,51 @@ impl Simulation {
 
     /// Health of every estimator (by position).
     pub fn statuses(&self) -> &[EstimatorStatus] {
-        &self.statuses
+        self.health.statuses()
     }
 
-    /// Sets one parameter; takes effect on the next step without a restart (parameters
-    /// marked `needs_reset` take effect at the next reset).
+    /// Sets one parameter. A live parameter takes effect on the next step without a restart;
+    /// one marked `needs_reset` changes nothing in this run (not even its step length) and
+    /// takes effect at the next reset.
     pub fn set_param(&mut self, key: &str, value: f64) -> Result<(), ParamError> {
         let specs = self.lab.params();
         self.params.set(specs, key, value)?;
-        if let Some(spec) = specs.iter().find(|s| s.key == key) {
-            self.journal.push(JournalEntry {
-                step: self.steps,
-                key: spec.key,
-                value,
-            });
+        let Some(spec) = specs.iter().find(|s| s.key == key) else {
+            return Ok(());
+        };
+        self.journal.push(self.steps, spec.key, value);
+        if !spec.needs_reset {
+            self.applied.set(specs, key, value)?;
+            self.apply_params();
         }
-        self.apply_params();
         Ok(())
     }
 
+    /// The parameters this run uses: [`Simulation::params`] less the reset-only changes
+    /// that wait for the next reset.
+    pub fn applied_params(&self) -> &ParamValues {
+        &self.applied
+    }
+
+    /// Keys of reset-only parameters whose value was changed since this run was built (they
+    /// take effect at the next reset).
+    pub fn pending_reset(&self) -> Vec<&'static str> {
+        self.lab
+            .params()
+            .iter()
+            .filter(|s| s.needs_reset && self.params.get(s.key) != self.applied.get(s.key))
+            .map(|s| s.key)
+            .collect()
+    }
+
     fn apply_params(&mut self) {
-        self.run.truth.apply_params(&self.params);
-        self.run.sensors.apply_params(&self.params);
+        self.run.truth.apply_params(&self.applied);
+        self.run.sensors.apply_params(&self.applied);
         for e in &mut self.run.estimators {
-            e.apply_params(&self.params);
+            e.apply_params(&self.applied);
         }
         if self.replay.is_none() {
-            self.dt_s = self.lab.dt_s(&self.params);
+            self.dt_s = self.lab.dt_s(&self.applied);
         }
     }
 
@@ -399,20 +447,8 @@ impl Simulation {
         self.estimates.clear();
         for (i, e) in self.run.estimators.iter().enumerate() {
             let est = e.estimate();
+            self.health.update(i, e.as_ref(), &est);
             self.estimates.push(est);
-            let status = e.status();
-            let healthy = status.is_ok() && finite(&est, e.as_ref());
-            let code = if healthy { 0.0 } else { status.code().max(1.0) };
-            if code != self.status_codes[i] || (!status.is_ok() && self.statuses[i] != *status) {
-                self.statuses[i] = match (healthy, status) {
-                    (true, _) => EstimatorStatus::Ok,
-                    (false, EstimatorStatus::Ok) => {
-                        EstimatorStatus::Diverged("state or covariance is not finite".into())
-                    }
-                    (false, s) => s.clone(),
-                };
-                self.status_codes[i] = self.statuses[i].code();
-            }
         }
         self.layout.fill(
             &mut self.row,
@@ -421,209 +457,11 @@ impl Simulation {
             truth,
             &self.run.estimators,
             &self.estimates,
-            &self.status_codes,
+            self.health.codes(),
         );
         self.recorder.push(&self.row);
         if let Some(a) = &mut self.accuracy {
             a.push(truth, &self.estimates);
         }
     }
-
-    /// Re-runs this run from its start — same lab, initial parameters, seed (or log) and the
-    /// same parameter changes at the same steps — up to the current step, recording
-    /// `selection`, and hands every row to `sink` (the specs first). Used to export every
-    /// sample of a run whose recorder kept only a summary.
-    pub fn rerun<E>(
-        &self,
-        selection: Selection,
-        mut sink: impl FnMut(RerunItem<'_>) -> Result<(), E>,
-    ) -> Result<u64, RerunError<E>> {
-        let options = SimOptions {
-            selection,
-            budget_bytes: 1 << 16,
-        };
-        let mut sim = match &self.replay {
-            Some(log) => Self::replay(
-                self.lab,
-                self.initial_params.clone(),
-                (**log).clone(),
-                options,
-            )
-            .map_err(RerunError::Setup)?,
-            None => Self::with_options(self.lab, self.initial_params.clone(), self.seed, options)
-                .map_err(|e| RerunError::Setup(e.to_string()))?,
-        };
-        sink(RerunItem::Specs(sim.specs())).map_err(RerunError::Sink)?;
-        sink(RerunItem::Row(&sim.row)).map_err(RerunError::Sink)?;
-        let mut next = 0;
-        while sim.steps < self.steps {
-            while let Some(entry) = self.journal.get(next).filter(|e| e.step == sim.steps) {
-                // The journal holds values that were valid when set.
-                let _ = sim.set_param(entry.key, entry.value);
-                next += 1;
-            }
-            sim.step();
-            sink(RerunItem::Row(&sim.row)).map_err(RerunError::Sink)?;
-        }
-        Ok(sim.steps + 1)
-    }
-
-    /// The same run recording `selection` instead: re-run from the start (same seed or log,
-    /// same parameter changes at the same steps) up to this step, so the new series have
-    /// their whole history. Its cost is the run so far at the new selection's speed.
-    pub fn reselected(&self, selection: Selection) -> Result<Simulation, String> {
-        let options = SimOptions {
-            selection,
-            budget_bytes: self.options.budget_bytes,
-        };
-        let mut sim = match &self.replay {
-            Some(log) => Self::replay(
-                self.lab,
-                self.initial_params.clone(),
-                (**log).clone(),
-                options,
-            )?,
-            None => Self::with_options(self.lab, self.initial_params.clone(), self.seed, options)
-                .map_err(|e| e.to_string())?,
-        };
-        let mut next = 0;
-        while sim.steps < self.steps {
-            while let Some(entry) = self.journal.get(next).filter(|e| e.step == sim.steps) {
-                let _ = sim.set_param(entry.key, entry.value);
-                next += 1;
-            }
-            sim.step();
-        }
-        // Changes made after the last step (none stepped since) still apply.
-        for entry in &self.journal[next..] {
-            let _ = sim.set_param(entry.key, entry.value);
-        }
-        Ok(sim)
-    }
-
-    /// [`Self::reselected`] in place, holding one recorder's memory at a time: this run's
-    /// recorder goes first (the re-run rebuilds every series), which keeps the page's
-    /// high-water mark down on a lab with many series. On an error the run goes on recording
-    /// what it did (re-run again, or from now on if that fails too) and the error is returned.
-    pub fn reselect(&mut self, selection: Selection) -> Result<(), String> {
-        let specs = self.recorder.specs().to_vec();
-        self.release_recorder();
-        match self.reselected(selection) {
-            Ok(sim) => {
-                *self = sim;
-                Ok(())
-            }
-            Err(e) => {
-                match self.reselected(self.options.selection.clone()) {
-                    Ok(sim) => *self = sim,
-                    Err(_) => {
-                        self.recorder = Recorder::with_budget(specs, self.options.budget_bytes);
-                    }
-                }
-                Err(e)
-            }
-        }
-    }
-
-    /// Writes every sample of every series of the run so far as CSV (see
-    /// [`Simulation::rerun`]); returns the number of rows.
-    pub fn export_csv<W: std::io::Write>(&self, out: W) -> Result<u64, String> {
-        let mut sink: Option<CsvSink<W>> = None;
-        let mut out = Some(out);
-        self.rerun(Selection::All, |item| match item {
-            RerunItem::Specs(specs) => {
-                let w = out.take().ok_or_else(|| "writer used twice".to_string())?;
-                sink = Some(CsvSink::new(w, specs).map_err(|e| e.to_string())?);
-                Ok(())
-            }
-            RerunItem::Row(row) => sink
-                .as_mut()
-                .ok_or_else(|| "row before header".to_string())?
-                .row(row)
-                .map_err(|e| e.to_string()),
-        })
-        .map_err(|e| e.to_string())?;
-        sink.ok_or_else(|| "no header written".to_string())?
-            .finish()
-            .map_err(|e| e.to_string())
-    }
-}
-
-/// What [`Simulation::rerun`] hands out: the specs once, then each row.
-pub enum RerunItem<'a> {
-    /// The series, before any row.
-    Specs(&'a [SeriesSpec]),
-    /// One row, in spec order.
-    Row(&'a [f64]),
-}
-
-/// Why a re-run stopped.
-#[derive(Debug, thiserror::Error)]
-pub enum RerunError<E> {
-    /// The run could not be rebuilt.
-    #[error("cannot rebuild the run: {0}")]
-    Setup(String),
-    /// The sink refused a row.
-    #[error("export failed: {0}")]
-    Sink(E),
-}
-
-/// State, rate and covariance are all finite.
-fn finite(est: &Estimate, e: &dyn crate::model::Estimator) -> bool {
-    est.is_finite()
-        && e.covariance()
-            .is_none_or(|c| c.matrix.iter().all(|v| v.is_finite()))
-}
-
-/// Runs `lab` from its start for at most `duration_s` and writes the paper's output file
-/// `file` (its columns under its headers, one row per step), ending at the first row where
-/// `file.stop` is 1. Returns the rows written and whether the stop row was reached.
-pub fn write_output_file<W: std::io::Write>(
-    lab: &'static dyn Lab,
-    params: ParamValues,
-    seed: u64,
-    duration_s: f64,
-    file: &crate::model::OutputFile,
-    out: W,
-) -> Result<(u64, bool), String> {
-    let mut names: Vec<&str> = file.columns.iter().map(String::as_str).collect();
-    if let Some(stop) = &file.stop {
-        names.push(stop);
-    }
-    let mut sim = Simulation::with_options(lab, params, seed, SimOptions::named(&names))
-        .map_err(|e| e.to_string())?;
-    let cols: Vec<usize> = file
-        .columns
-        .iter()
-        .map(|c| sim.series_index(c))
-        .collect::<Result<_, _>>()
-        .map_err(|e| e.to_string())?;
-    let stop = file
-        .stop
-        .as_deref()
-        .map(|s| sim.series_index(s))
-        .transpose()
-        .map_err(|e| e.to_string())?;
-    let mut writer = ::csv::Writer::from_writer(out);
-    let io = |e: ::csv::Error| e.to_string();
-    writer.write_record(&file.headers).map_err(io)?;
-    let mut rows = 0;
-    let end = duration_s - 1e-9 * sim.dt_s();
-    loop {
-        let row = sim.last_row();
-        writer
-            .write_record(cols.iter().map(|c| csv_cell(row[*c])))
-            .map_err(io)?;
-        rows += 1;
-        if stop.is_some_and(|s| row[s] > 0.5) {
-            writer.flush().map_err(|e| e.to_string())?;
-            return Ok((rows, true));
-        }
-        if sim.t_s() >= end {
-            break;
-        }
-        sim.step();
-    }
-    writer.flush().map_err(|e| e.to_string())?;
-    Ok((rows, false))
 }

@@ -167,6 +167,31 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             commands.push(Command::SetParam(spec.key, v));
         }
     }
+    pending_reset(ui, app, commands);
+}
+
+/// A line naming the reset-only parameters that were moved and wait for Reset, with the
+/// button that applies them (until then the run goes on unchanged).
+fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let pending = app.sim.pending_reset();
+    if pending.is_empty() {
+        return;
+    }
+    let specs = app.sim.lab().params();
+    let labels: Vec<&str> = pending
+        .iter()
+        .filter_map(|k| specs.iter().find(|s| s.key == *k).map(|s| s.label))
+        .collect();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(format!("Waiting for Reset: {}.", labels.join(", ")));
+        if ui
+            .small_button("Reset now")
+            .on_hover_text("Restart from t = 0 with these values")
+            .clicked()
+        {
+            commands.push(Command::Reset);
+        }
+    });
 }
 
 /// One widget for one parameter; returns the new value if the user changed it.

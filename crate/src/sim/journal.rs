@@ -1,0 +1,96 @@
+//! The parameter journal: every live change of a run with the step it happened at, and the
+//! one loop that replays a run from its start with the same changes at the same steps (for a
+//! CSV export, a new selection of series, a paper's output file).
+
+use super::Simulation;
+
+/// A parameter change during a run: applied before step `step`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Entry {
+    step: u64,
+    key: &'static str,
+    value: f64,
+}
+
+/// The changes of one run, in the order they were made.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(super) struct Journal {
+    entries: Vec<Entry>,
+}
+
+/// A change that the run took but its re-run refused (the lab changed under it).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("the change {key} = {value} at step {step} was refused on re-run: {reason}")]
+pub struct Refused {
+    /// Step of the change.
+    pub step: u64,
+    /// Parameter key.
+    pub key: &'static str,
+    /// Value set.
+    pub value: f64,
+    /// What the re-run said.
+    pub reason: String,
+}
+
+/// Why replaying a journal stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum ReplayError<E> {
+    /// A change of the journal was refused.
+    #[error(transparent)]
+    Refused(Refused),
+    /// The caller's per-step work failed.
+    #[error("{0}")]
+    Step(E),
+}
+
+impl Journal {
+    /// Records that `key` was set to `value` before step `step`.
+    pub(super) fn push(&mut self, step: u64, key: &'static str, value: f64) {
+        self.entries.push(Entry { step, key, value });
+    }
+
+    /// Brings `sim`, a fresh run from the same start, up to `steps` with every change at its
+    /// step, calling `each_step` after every step; changes made after the last step apply at
+    /// the end, so the re-run's parameters equal the original's.
+    pub(super) fn replay<E>(
+        &self,
+        sim: &mut Simulation,
+        steps: u64,
+        mut each_step: impl FnMut(&Simulation) -> Result<(), E>,
+    ) -> Result<(), ReplayError<E>> {
+        let mut next = 0;
+        while sim.steps() < steps {
+            next += self.apply_due(sim, next, Some(sim.steps()))?;
+            sim.step();
+            each_step(sim).map_err(ReplayError::Step)?;
+        }
+        self.apply_due(sim, next, None)?;
+        Ok(())
+    }
+
+    /// Applies the entries from `from` on that are due before step `step` (every remaining
+    /// one when `None`); returns how many it applied.
+    fn apply_due<E>(
+        &self,
+        sim: &mut Simulation,
+        from: usize,
+        step: Option<u64>,
+    ) -> Result<usize, ReplayError<E>> {
+        let due = self.entries[from..]
+            .iter()
+            .take_while(|e| step.is_none_or(|s| e.step == s));
+        let mut applied = 0;
+        for e in due {
+            sim.set_param(e.key, e.value).map_err(|err| {
+                ReplayError::Refused(Refused {
+                    step: e.step,
+                    key: e.key,
+                    value: e.value,
+                    reason: err.to_string(),
+                })
+            })?;
+            applied += 1;
+        }
+        Ok(applied)
+    }
+}

@@ -1,0 +1,107 @@
+//! Re-running a run from its start — same lab, initial parameters, seed (or log) and the
+//! same parameter changes at the same steps ([`super::journal`]) — to hand every sample to a
+//! sink, or to record another selection of series with their whole history.
+
+use super::journal::ReplayError;
+use super::{Selection, SimOptions, Simulation};
+use crate::model::SeriesSpec;
+use crate::record::Recorder;
+
+/// What [`Simulation::rerun`] hands out: the specs once, then each row.
+pub enum RerunItem<'a> {
+    /// The series, before any row.
+    Specs(&'a [SeriesSpec]),
+    /// One row, in spec order.
+    Row(&'a [f64]),
+}
+
+/// Why a re-run stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum RerunError<E> {
+    /// The run could not be rebuilt, or a change of its journal was refused.
+    #[error("cannot rebuild the run: {0}")]
+    Setup(String),
+    /// The sink refused a row.
+    #[error("export failed: {0}")]
+    Sink(E),
+}
+
+impl Simulation {
+    /// A fresh run from this run's start (t = 0, initial parameters, seed or log), recording
+    /// what `options` selects.
+    fn restart(&self, options: SimOptions) -> Result<Simulation, String> {
+        match &self.replay {
+            Some(log) => Self::replay(
+                self.lab,
+                self.initial_params.clone(),
+                (**log).clone(),
+                options,
+            ),
+            None => Self::with_options(self.lab, self.initial_params.clone(), self.seed, options)
+                .map_err(|e| e.to_string()),
+        }
+    }
+
+    /// Re-runs this run from its start up to the current step, recording `selection`, and
+    /// hands every row to `sink` (the specs first). Used to export every sample of a run
+    /// whose recorder kept only a summary. Returns the number of rows.
+    pub fn rerun<E>(
+        &self,
+        selection: Selection,
+        mut sink: impl FnMut(RerunItem<'_>) -> Result<(), E>,
+    ) -> Result<u64, RerunError<E>> {
+        let options = SimOptions {
+            selection,
+            budget_bytes: 1 << 16,
+        };
+        let mut sim = self.restart(options).map_err(RerunError::Setup)?;
+        sink(RerunItem::Specs(sim.specs())).map_err(RerunError::Sink)?;
+        sink(RerunItem::Row(&sim.row)).map_err(RerunError::Sink)?;
+        self.journal
+            .replay(&mut sim, self.steps, |s| sink(RerunItem::Row(&s.row)))
+            .map_err(|e| match e {
+                ReplayError::Step(e) => RerunError::Sink(e),
+                ReplayError::Refused(r) => RerunError::Setup(r.to_string()),
+            })?;
+        Ok(sim.steps + 1)
+    }
+
+    /// The same run recording `selection` instead: re-run from the start up to this step,
+    /// so the new series have their whole history. Its cost is the run so far at the new
+    /// selection's speed.
+    pub fn reselected(&self, selection: Selection) -> Result<Simulation, String> {
+        let options = SimOptions {
+            selection,
+            budget_bytes: self.options.budget_bytes,
+        };
+        let mut sim = self.restart(options)?;
+        self.journal
+            .replay(&mut sim, self.steps, |_| Ok::<(), String>(()))
+            .map_err(|e| e.to_string())?;
+        Ok(sim)
+    }
+
+    /// [`Self::reselected`] in place, holding one recorder's memory at a time: this run's
+    /// recorder goes first (the re-run rebuilds every series), which keeps the page's
+    /// high-water mark down on a lab with many series. On an error the run goes on recording
+    /// what it did (re-run again, or from now on if that fails too) and the error is returned.
+    pub fn reselect(&mut self, selection: Selection) -> Result<(), String> {
+        let specs = self.recorder.specs().to_vec();
+        self.release_recorder();
+        match self.reselected(selection) {
+            Ok(sim) => {
+                *self = sim;
+                Ok(())
+            }
+            Err(e) => {
+                match self.reselected(self.options.selection.clone()) {
+                    Ok(sim) => *self = sim,
+                    Err(_) => {
+                        self.recorder = Recorder::with_budget(specs, self.options.budget_bytes);
+                    }
+                }
+                Err(e)
+            }
+        }
+    }
+}
