@@ -1,0 +1,184 @@
+//! House style that the compiler does not check (ARCHITECTURE.md, issue 18), as ratchets:
+//! a file or function over its limit fails unless it is one of those still waiting to be
+//! split, and those may not grow; hand-typed series names may only become fewer.
+#![cfg(not(target_arch = "wasm32"))]
+
+use std::path::{Path, PathBuf};
+
+/// Longest source file (lines).
+const FILE_LINES: usize = 500;
+/// Longest function (lines, signature to closing brace).
+const FN_LINES: usize = 80;
+
+/// Files still over [`FILE_LINES`], each with the length it may not pass.
+const LONG_FILES: &[(&str, usize)] = &[("web/src/state.rs", 700)];
+
+/// Functions still over [`FN_LINES`] (file, name, the length it may not pass).
+const LONG_FNS: &[(&str, &str, usize)] = &[
+    ("crate/src/labs/p1_suspended/reproduce.rs", "reproduce", 181),
+    ("crate/src/labs/p3_wz_sphere/reproduce.rs", "reproduce", 158),
+    ("crate/src/sim/catalogue.rs", "candidates", 152),
+    ("crate/src/labs/p2_tabletsat/reproduce.rs", "reproduce", 152),
+    ("web/src/render/body3d.rs", "show", 142),
+    ("tests/tests/page/soak.rs", "run", 134),
+    ("web/src/state.rs", "apply", 133),
+    ("crate/src/labs/p4_quadrotor/reproduce.rs", "reproduce", 129),
+    ("crate/src/sim/derived.rs", "derive", 122),
+    (
+        "crate/src/labs/p5_sensitivity/reproduce.rs",
+        "reproduce",
+        119,
+    ),
+    ("crate/src/sim/layout.rs", "new", 114),
+    ("crate/src/labs/free_rotation.rs", "reproduce", 113),
+    ("crate/src/labs/p2_tabletsat/sensors.rs", "sample", 101),
+    ("web/src/render/plots.rs", "show", 96),
+    ("crate/src/bin/cli/bench.rs", "bench", 95),
+    ("web/src/panels/sweeps.rs", "heat_map", 91),
+    ("web/src/render/body3d.rs", "init", 88),
+];
+
+/// Series names typed by hand (`"source.quantity"` literals) in the labs and the page: the
+/// catalogue should derive them; this many are left and the number may only fall.
+const HAND_TYPED_SERIES: usize = 257;
+
+/// The workspace root.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("tests/ is in the workspace")
+        .to_path_buf()
+}
+
+/// Every `.rs` file under `dirs` (relative to the root), as (relative path, text).
+fn sources(dirs: &[&str]) -> Vec<(String, String)> {
+    let root = root();
+    let mut out = Vec::new();
+    let mut stack: Vec<PathBuf> = dirs.iter().map(|d| root.join(d)).collect();
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+            let path = entry.expect("a directory entry").path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).expect("utf-8 source");
+                let rel = path.strip_prefix(&root).expect("under the root");
+                out.push((rel.to_string_lossy().replace('\\', "/"), text));
+            }
+        }
+    }
+    assert!(out.len() > 20, "found only {} source files", out.len());
+    out
+}
+
+const CHECKED: &[&str] = &["crate/src", "web/src", "web/tests", "tests", "xtask/src"];
+
+#[test]
+fn no_source_file_passes_500_lines_but_those_waiting_to_be_split() {
+    let mut over = Vec::new();
+    for (path, text) in sources(CHECKED) {
+        let lines = text.lines().count();
+        let limit = LONG_FILES
+            .iter()
+            .find(|(p, _)| *p == path)
+            .map_or(FILE_LINES, |(_, n)| *n);
+        if lines > limit {
+            over.push(format!("{path}: {lines} lines (limit {limit})"));
+        }
+    }
+    assert!(over.is_empty(), "split these files:\n{}", over.join("\n"));
+}
+
+/// Every function of `text` as (name, lines): from a line `fn name` (rustfmt's layout) to
+/// the closing brace at its indentation.
+fn functions(text: &str) -> Vec<(String, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let trimmed = line.trim_start();
+        let indent = &line[..line.len() - trimmed.len()];
+        let rest = ["pub(crate) ", "pub(super) ", "pub ", "const ", "async "]
+            .iter()
+            .fold(trimmed, |t, p| t.strip_prefix(p).unwrap_or(t));
+        let Some(sig) = rest.strip_prefix("fn ") else {
+            continue;
+        };
+        if line.trim_end().ends_with(';') {
+            continue;
+        }
+        let name: String = sig
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let close = format!("{indent}}}");
+        if let Some(end) = lines[i + 1..].iter().position(|l| *l == close) {
+            out.push((name, end + 2));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_function_counter_counts_signature_to_closing_brace() {
+    let text = "fn a() {\n    1\n}\n\nimpl X {\n    pub fn b(\n        x: u8,\n    ) -> u8 {\n        x\n    }\n    fn c();\n}\n";
+    assert_eq!(functions(text), vec![("a".into(), 3), ("b".into(), 5)]);
+}
+
+#[test]
+fn no_function_passes_80_lines_but_those_waiting_to_be_split() {
+    let mut over = Vec::new();
+    for (path, text) in sources(CHECKED) {
+        for (name, lines) in functions(&text) {
+            let limit = LONG_FNS
+                .iter()
+                .find(|(p, n, _)| *p == path && *n == name)
+                .map_or(FN_LINES, |(_, _, n)| *n);
+            if lines > limit {
+                over.push(format!("{path}: fn {name}, {lines} lines (limit {limit})"));
+            }
+        }
+    }
+    assert!(
+        over.is_empty(),
+        "split these functions:\n{}",
+        over.join("\n")
+    );
+}
+
+/// `"word.word"` string literals (series names such as `"kf.angle_deg"`), file names aside.
+fn series_literals(text: &str) -> usize {
+    let word = |s: &str| {
+        !s.is_empty()
+            && s.chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '-')
+    };
+    let files = [
+        "csv", "png", "json", "md", "rs", "txt", "html", "js", "wasm",
+    ];
+    text.split('"')
+        .skip(1)
+        .step_by(2)
+        .filter(|lit| match lit.split_once('.') {
+            Some((a, b)) => word(a) && word(b) && !b.contains('-') && !files.contains(&b),
+            None => false,
+        })
+        .count()
+}
+
+#[test]
+fn hand_typed_series_names_only_become_fewer() {
+    assert_eq!(
+        series_literals(r#"x("kf.angle_deg", "a.csv", "b", "p1-x.rate_deg_s")"#),
+        2
+    );
+    let n: usize = sources(&["crate/src/labs", "web/src"])
+        .iter()
+        .map(|(_, text)| series_literals(text))
+        .sum();
+    println!("{n} hand-typed series names");
+    assert!(
+        n <= HAND_TYPED_SERIES,
+        "{n} hand-typed series names in the labs and the page (at most {HAND_TYPED_SERIES}): \
+         derive new ones from the series catalogue"
+    );
+}
