@@ -11,7 +11,7 @@
 //! channels HPF(u), HPF(v), LPF(uᵃ), LPF(vᵃ) are published for the paper's Fig. 10.
 
 use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk4};
-use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues};
+use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues, Quantity};
 use nalgebra::Vector3;
 
 /// Parameter key of the blend time constant T (s).
@@ -85,8 +85,14 @@ impl Estimator for BlendedWz {
         "Blend HPF(u) + LPF(uᵃ), Fig. 9"
     }
 
-    fn extra_names(&self) -> &'static [&'static str] {
-        &["hpf_u", "hpf_v", "lpf_ua", "lpf_va"]
+    fn extra_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[
+            Quantity::new("hpf_u", "gyro channel HPF(u)", ""),
+            Quantity::new("hpf_v", "gyro channel HPF(v)", ""),
+            Quantity::new("lpf_ua", "accelerometer channel LPF(uᵃ)", ""),
+            Quantity::new("lpf_va", "accelerometer channel LPF(vᵃ)", ""),
+        ];
+        QUANTITIES
     }
 
     fn apply_params(&mut self, params: &ParamValues) {

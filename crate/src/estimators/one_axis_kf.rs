@@ -13,8 +13,8 @@ use super::covariance_matching::{
     AdaptMode, Adaptation, AdaptiveKf, rotation_transition, torsion_transition,
 };
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, StateInfo,
-    StateKind,
+    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+    StateInfo, StateKind,
 };
 use nalgebra::{Matrix2, Vector2, Vector3};
 
@@ -141,16 +141,33 @@ impl Estimator for OneAxisKf {
         })
     }
 
-    fn innovation_names(&self) -> &'static [&'static str] {
-        &["innov_rad_s"]
+    fn innovation_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[Quantity::new(
+            "innov_rad_s",
+            "innovation z − Hx̂ (gyro rate less predicted φ̇)",
+            "rad/s",
+        )];
+        QUANTITIES
     }
 
     fn innovation(&self) -> &[f64] {
         &self.innovation
     }
 
-    fn extra_names(&self) -> &'static [&'static str] {
-        &["rate_minus_sensor_deg_s", "angle_minus_int_deg"]
+    fn extra_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[
+            Quantity::new(
+                "rate_minus_sensor_deg_s",
+                "estimated φ̇ less the gyro reading",
+                "deg/s",
+            ),
+            Quantity::new(
+                "angle_minus_int_deg",
+                "estimated φ less the integrated φ_int",
+                "deg",
+            ),
+        ];
+        QUANTITIES
     }
 
     fn extras(&self, out: &mut [f64]) {

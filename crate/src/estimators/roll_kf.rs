@@ -16,8 +16,8 @@
 
 use super::kf::{KalmanState, LinearObservation};
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, StateInfo,
-    StateKind,
+    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+    StateInfo, StateKind,
 };
 use nalgebra::{SMatrix, SVector, Vector3};
 
@@ -264,16 +264,25 @@ impl<const N: usize> Estimator for RollKf<N> {
         })
     }
 
-    fn innovation_names(&self) -> &'static [&'static str] {
-        &["innov_angle_rad", "innov_rate_rad_s"]
+    fn innovation_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[
+            Quantity::new(
+                "innov_angle_rad",
+                "innovation of the accelerometer angle θ_acc",
+                "rad",
+            ),
+            Quantity::new("innov_rate_rad_s", "innovation of the gyro rate ω", "rad/s"),
+        ];
+        QUANTITIES
     }
 
     fn innovation(&self) -> &[f64] {
         &self.innovation
     }
 
-    fn extra_names(&self) -> &'static [&'static str] {
-        if N == 3 { &["gyro_bias_deg_s"] } else { &[] }
+    fn extra_quantities(&self) -> &'static [Quantity] {
+        const BIAS: [Quantity; 1] = [Quantity::new("gyro_bias_deg_s", "gyro bias b", "deg/s")];
+        if N == 3 { &BIAS } else { &[] }
     }
 
     fn extras(&self, out: &mut [f64]) {

@@ -22,7 +22,9 @@
 //! settles. Re-integrating makes it eₖ₊₁ = (1 − k)(eₖ + qₖ): at ε = 0 a dead-beat update.
 
 use crate::math::{sequence_from_quaternion, symmetrize, wrap_pi};
-use crate::model::{Attitude, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues};
+use crate::model::{
+    Attitude, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+};
 use nalgebra::{
     Complex, Matrix2, Matrix3, Matrix4, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector4,
 };
@@ -380,22 +382,27 @@ impl Estimator for SensitivityCorrection {
         &self.status
     }
 
-    fn extra_names(&self) -> &'static [&'static str] {
-        &[
-            "p_x_deg_s",
-            "p_y_deg_s",
-            "p_z_deg_s",
-            "angle_1_rad",
-            "angle_2_rad",
-            "angle_3_rad",
-            "within_tol",
-            "cond_utqu",
-            "sv1",
-            "sv2",
-            "sv3",
-            "step_s",
-            "norm_lambda",
-        ]
+    fn extra_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[
+            Quantity::new("p_x_deg_s", "rate correction p_x", "deg/s"),
+            Quantity::new("p_y_deg_s", "rate correction p_y", "deg/s"),
+            Quantity::new("p_z_deg_s", "rate correction p_z", "deg/s"),
+            Quantity::new("angle_1_rad", "angle 1 of the sequence", "rad"),
+            Quantity::new("angle_2_rad", "angle 2 of the sequence", "rad"),
+            Quantity::new("angle_3_rad", "angle 3 of the sequence", "rad"),
+            Quantity::new(
+                "within_tol",
+                "within tolerance of the reference (1 = yes)",
+                "",
+            ),
+            Quantity::new("cond_utqu", "condition number of UᵀQU", ""),
+            Quantity::new("sv1", "largest singular value of UᵀQU", ""),
+            Quantity::new("sv2", "middle singular value of UᵀQU", ""),
+            Quantity::new("sv3", "smallest singular value of UᵀQU", ""),
+            Quantity::new("step_s", "step size s of the correction", ""),
+            Quantity::new("norm_lambda", "norm |Λ| of the integrated quaternion", ""),
+        ];
+        QUANTITIES
     }
 
     fn extras(&self, out: &mut [f64]) {

@@ -19,7 +19,7 @@ use crate::math::{
 };
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues,
-    StateInfo, StateKind,
+    Quantity, StateInfo, StateKind,
 };
 use nalgebra::{Matrix2, Matrix2x3, Vector2, Vector3};
 
@@ -191,8 +191,12 @@ impl Estimator for WzKalman {
         })
     }
 
-    fn innovation_names(&self) -> &'static [&'static str] {
-        &["innov_u", "innov_v"]
+    fn innovation_quantities(&self) -> &'static [Quantity] {
+        const QUANTITIES: &[Quantity] = &[
+            Quantity::new("innov_u", "innovation of u (uᵃ − û)", ""),
+            Quantity::new("innov_v", "innovation of v (vᵃ − v̂)", ""),
+        ];
+        QUANTITIES
     }
 
     fn innovation(&self) -> &[f64] {

@@ -223,8 +223,10 @@ impl TruthModel for Tumble {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.energy_j", "J", SeriesGroup::Lab),
-            SeriesSpec::new("truth.momentum_n_m_s", "N·m·s", SeriesGroup::Lab),
+            SeriesSpec::new("truth.energy_j", "J", SeriesGroup::Lab)
+                .labelled("kinetic energy T = ½ωᵀJω"),
+            SeriesSpec::new("truth.momentum_n_m_s", "N·m·s", SeriesGroup::Lab)
+                .labelled("angular momentum |Jω|"),
         ]
     }
 

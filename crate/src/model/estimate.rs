@@ -1,6 +1,7 @@
 //! What sensors deliver and what estimators publish.
 
 use super::params::ParamValues;
+use super::series::Quantity;
 use crate::math::WzAttitude;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -228,6 +229,8 @@ pub enum StateKind {
     WzV,
     /// Gyro bias about axis 0, 1 or 2 (rad/s).
     GyroBias(u8),
+    /// Magnetometer bias along axis 0, 1 or 2 (nT).
+    MagBias(u8),
     /// Anything else (its unit says what).
     Other,
 }
@@ -318,18 +321,18 @@ pub trait Estimator: Send {
     fn covariance_states(&self) -> &'static [StateInfo] {
         &[]
     }
-    /// Names (with units) of the innovation components it publishes.
-    fn innovation_names(&self) -> &'static [&'static str] {
+    /// The innovation components it publishes: key, label and unit of each.
+    fn innovation_quantities(&self) -> &'static [Quantity] {
         &[]
     }
-    /// The last innovation, in the order of [`Estimator::innovation_names`].
+    /// The last innovation, in the order of [`Estimator::innovation_quantities`].
     fn innovation(&self) -> &[f64] {
         &[]
     }
-    /// Names (with units) of internals worth plotting (e.g. the channels of a blend).
-    fn extra_names(&self) -> &'static [&'static str] {
+    /// Internals worth plotting (e.g. the channels of a blend): key, label and unit of each.
+    fn extra_quantities(&self) -> &'static [Quantity] {
         &[]
     }
-    /// Writes the internals named by [`Estimator::extra_names`] into `out` (same length).
+    /// Writes the internals of [`Estimator::extra_quantities`] into `out` (same length).
     fn extras(&self, _out: &mut [f64]) {}
 }

@@ -37,11 +37,47 @@ impl SeriesGroup {
     }
 }
 
+/// A quantity a source records: its machine key (the second half of the series name, with
+/// its unit in it), the student's label and the unit. Declared once, with the values it names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Quantity {
+    /// Key in series names and CSV headers, e.g. `gbias_x_deg_s`.
+    pub key: &'static str,
+    /// What a student reads in a legend, in the paper's notation, e.g. "gyro bias Δω_x".
+    pub label: &'static str,
+    /// Unit ("" when dimensionless).
+    pub unit: &'static str,
+}
+
+impl Quantity {
+    /// A quantity.
+    pub const fn new(key: &'static str, label: &'static str, unit: &'static str) -> Self {
+        Self { key, label, unit }
+    }
+}
+
+/// A unit as a student reads it: degrees as °, the rest as written.
+///
+/// ```
+/// # use attlab::model::display_unit;
+/// assert_eq!(display_unit("deg/s"), "°/s");
+/// assert_eq!(display_unit("nT"), "nT");
+/// ```
+pub fn display_unit(unit: &str) -> String {
+    match unit.strip_prefix("deg") {
+        Some(rest) => format!("°{rest}"),
+        None => unit.to_string(),
+    }
+}
+
 /// Name, unit and plot of one recorded series.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct SeriesSpec {
     /// `source.quantity`, e.g. `quat-rk4.err_deg`.
     pub name: String,
+    /// What a legend shows, without the unit: the source and the quantity in words, e.g.
+    /// "ST+Gyro [λ,ω]: attitude error about x" (the name itself until someone labels it).
+    pub label: String,
     /// Unit ("" when dimensionless).
     pub unit: &'static str,
     /// Plot it belongs to.
@@ -57,12 +93,45 @@ pub struct SeriesSpec {
 impl SeriesSpec {
     /// A series of the truth (source 0).
     pub fn new(name: impl Into<String>, unit: &'static str, group: SeriesGroup) -> Self {
+        let name = name.into();
         Self {
-            name: name.into(),
+            label: name.clone(),
+            name,
             unit,
             group,
             source: 0,
             band: None,
+        }
+    }
+
+    /// `quantity` of the source whose names start with `prefix` (`truth`, `sensors`, an
+    /// estimator's id): named `prefix.key`, labelled with the quantity's label.
+    pub fn of(prefix: &str, quantity: &Quantity, group: SeriesGroup) -> Self {
+        Self {
+            label: quantity.label.to_string(),
+            ..Self::new(format!("{prefix}.{}", quantity.key), quantity.unit, group)
+        }
+    }
+
+    /// The same with this label (without its unit).
+    pub fn labelled(self, label: impl Into<String>) -> Self {
+        Self {
+            label: label.into(),
+            ..self
+        }
+    }
+
+    /// Whether someone gave it a label (it is not just its name).
+    pub fn has_label(&self) -> bool {
+        self.label != self.name
+    }
+
+    /// The legend text: the label and the unit, e.g. "ST+Gyro: attitude error about x [°]".
+    pub fn legend(&self) -> String {
+        if self.unit.is_empty() {
+            self.label.clone()
+        } else {
+            format!("{} [{}]", self.label, display_unit(self.unit))
         }
     }
 

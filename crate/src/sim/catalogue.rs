@@ -2,127 +2,17 @@
 //! its name, unit, plot group and the covariance state that bounds it — and the list of
 //! candidate columns a lab's truth, sensors and estimators offer before selection.
 
+use super::quantities::{
+    ANGLE_1, ATTITUDE_3, ERRORS_1, ERRORS_3, QInfo, RATE_1, RATE_3, RATE_ERRORS_3, TILT_ERRORS,
+    state_label,
+};
+pub(super) use super::quantities::{N_Q, Q};
 use crate::model::{
-    Estimator, SensorModel, SeriesGroup, SeriesSpec, StateInfo, StateKind, TruthModel,
+    Estimator, Quantity, SensorModel, SeriesGroup, SeriesSpec, StateInfo, StateKind, TruthModel,
 };
 
-/// A quantity of the truth or of an estimate, derived from its attitude, rate or angle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Q {
-    Yaw,
-    Pitch,
-    Roll,
-    Kx,
-    Ky,
-    Kz,
-    U,
-    V,
-    Z,
-    RateX,
-    RateY,
-    RateZ,
-    Angle,
-    Rate1,
-    ErrDeg,
-    TiltErr,
-    PitchErr,
-    RollErr,
-    ErrX,
-    ErrY,
-    ErrZ,
-    RateErrX,
-    RateErrY,
-    RateErrZ,
-    AngleErr,
-    RateErr1,
-}
-
-pub(super) const N_Q: usize = Q::RateErr1 as usize + 1;
-
-/// What each quantity is called, its unit and plot, and the covariance state bounding it.
-pub(super) struct QInfo {
-    pub(super) q: Q,
-    pub(super) name: &'static str,
-    pub(super) unit: &'static str,
-    pub(super) group: SeriesGroup,
-    pub(super) band: Option<StateKind>,
-}
-
-const fn qi(q: Q, name: &'static str, unit: &'static str, group: SeriesGroup) -> QInfo {
-    QInfo {
-        q,
-        name,
-        unit,
-        group,
-        band: None,
-    }
-}
-
-const fn qb(q: Q, name: &'static str, unit: &'static str, kind: StateKind) -> QInfo {
-    QInfo {
-        q,
-        name,
-        unit,
-        group: SeriesGroup::Error,
-        band: Some(kind),
-    }
-}
-
-/// A three-axis source's attitude and rate.
-const ATTITUDE_3: &[QInfo] = &[
-    qi(Q::Yaw, "yaw_deg", "deg", SeriesGroup::Attitude),
-    qi(Q::Pitch, "pitch_deg", "deg", SeriesGroup::Attitude),
-    qi(Q::Roll, "roll_deg", "deg", SeriesGroup::Attitude),
-    qi(Q::Kx, "k_x", "", SeriesGroup::Sphere),
-    qi(Q::Ky, "k_y", "", SeriesGroup::Sphere),
-    qi(Q::Kz, "k_z", "", SeriesGroup::Sphere),
-    qi(Q::U, "u", "", SeriesGroup::Sphere),
-    qi(Q::V, "v", "", SeriesGroup::Sphere),
-    qi(Q::Z, "z_deg", "deg", SeriesGroup::Sphere),
-];
-const RATE_3: &[QInfo] = &[
-    qi(Q::RateX, "rate_x_deg_s", "deg/s", SeriesGroup::Rate),
-    qi(Q::RateY, "rate_y_deg_s", "deg/s", SeriesGroup::Rate),
-    qi(Q::RateZ, "rate_z_deg_s", "deg/s", SeriesGroup::Rate),
-];
-const ERRORS_3: &[QInfo] = &[
-    qi(Q::ErrDeg, "err_deg", "deg", SeriesGroup::Error),
-    qb(Q::ErrX, "err_x_deg", "deg", StateKind::AttitudeAxis(0)),
-    qb(Q::ErrY, "err_y_deg", "deg", StateKind::AttitudeAxis(1)),
-    qb(Q::ErrZ, "err_z_deg", "deg", StateKind::AttitudeAxis(2)),
-];
-const TILT_ERRORS: &[QInfo] = &[
-    qi(Q::TiltErr, "tilt_err_deg", "deg", SeriesGroup::Error),
-    qi(Q::PitchErr, "pitch_err_deg", "deg", SeriesGroup::Error),
-    qi(Q::RollErr, "roll_err_deg", "deg", SeriesGroup::Error),
-];
-const RATE_ERRORS_3: &[QInfo] = &[
-    qb(
-        Q::RateErrX,
-        "rate_err_x_deg_s",
-        "deg/s",
-        StateKind::RateAxis(0),
-    ),
-    qb(
-        Q::RateErrY,
-        "rate_err_y_deg_s",
-        "deg/s",
-        StateKind::RateAxis(1),
-    ),
-    qb(
-        Q::RateErrZ,
-        "rate_err_z_deg_s",
-        "deg/s",
-        StateKind::RateAxis(2),
-    ),
-];
-/// A single-axis source (paper 1): the angle about the axis and its rate.
-const ANGLE_1: &[QInfo] = &[qi(Q::Angle, "angle_deg", "deg", SeriesGroup::Attitude)];
-const RATE_1: &[QInfo] = &[qi(Q::Rate1, "rate_deg_s", "deg/s", SeriesGroup::Rate)];
-const ERRORS_1: &[QInfo] = &[
-    qb(Q::AngleErr, "angle_err_deg", "deg", StateKind::Angle),
-    qb(Q::RateErr1, "rate_err_deg_s", "deg/s", StateKind::Rate),
-];
+use SeriesGroup as G;
+use StateKind as K;
 
 /// Where a column's value comes from.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -158,6 +48,7 @@ fn squared(unit: &str) -> &'static str {
         "rad" => "rad²",
         "rad/s" => "rad²/s²",
         "T" => "T²",
+        "nT" => "nT²",
         "" => "",
         _ => "(unit)²",
     }
@@ -213,23 +104,93 @@ pub(super) fn candidates(
 ) -> Vec<Candidate> {
     let mut out = vec![Candidate {
         source: Source::Time,
-        spec: SeriesSpec::new("t_s", "s", SeriesGroup::Time),
+        spec: SeriesSpec::new("t_s", "s", G::Time).labelled("time t"),
     }];
-    let per_source = |out: &mut Vec<Candidate>,
-                      prefix: &str,
-                      src: usize,
-                      list: &[QInfo],
-                      make: &dyn Fn(Q) -> Source,
-                      bands: Option<&'static [StateInfo]>| {
+    let (att, rate) = if single_axis {
+        (ANGLE_1, RATE_1)
+    } else {
+        (ATTITUDE_3, RATE_3)
+    };
+    let truth_src = Owner {
+        prefix: "truth",
+        label: "Truth",
+        src: 0,
+        states: None,
+    };
+    for list in [att, rate] {
+        truth_src.push_all(&mut out, list.iter(), &Source::Truth);
+    }
+    for (j, spec) in truth.extra_series().into_iter().enumerate() {
+        out.push(Candidate {
+            source: Source::TruthExtra(j),
+            spec: owned_label("Truth", spec),
+        });
+    }
+    for (j, spec) in sensors.extra_series().into_iter().enumerate() {
+        out.push(Candidate {
+            source: Source::SensorExtra(j),
+            spec: owned_label("Sensors", spec),
+        });
+    }
+    for (i, e) in estimators.iter().enumerate() {
+        let owner = Owner {
+            prefix: e.id(),
+            label: e.label(),
+            src: i + 1,
+            states: Some(e.covariance_states()),
+        };
+        if single_axis {
+            single_axis_candidates(&mut out, &owner, i, e.as_ref());
+        } else {
+            three_axis_candidates(&mut out, &owner, i, e.as_ref());
+        }
+        internal_candidates(&mut out, &owner, i, e.as_ref(), single_axis);
+    }
+    out
+}
+
+/// A lab's own series (truth or sensor extras) with the owner's name before its label.
+fn owned_label(owner: &str, spec: SeriesSpec) -> SeriesSpec {
+    if spec.has_label() {
+        let label = format!("{owner}: {}", spec.label);
+        spec.labelled(label)
+    } else {
+        spec
+    }
+}
+
+/// Who records a group of series: the truth (source 0) or estimator `src − 1`.
+struct Owner<'a> {
+    prefix: &'a str,
+    label: &'a str,
+    src: usize,
+    states: Option<&'static [StateInfo]>,
+}
+
+impl Owner<'_> {
+    /// The owner's series of `quantity` in `group`: `prefix.key`, "label: quantity".
+    fn spec(&self, quantity: &Quantity, group: SeriesGroup) -> SeriesSpec {
+        let label = format!("{}: {}", self.label, quantity.label);
+        SeriesSpec::of(self.prefix, quantity, group)
+            .labelled(label)
+            .from_source(self.src)
+    }
+
+    /// The owner's series of every quantity in `list`, each bounded by its covariance state
+    /// where the owner has one.
+    fn push_all<'q>(
+        &self,
+        out: &mut Vec<Candidate>,
+        list: impl Iterator<Item = &'q QInfo>,
+        make: &dyn Fn(Q) -> Source,
+    ) {
         for info in list {
-            let mut spec =
-                SeriesSpec::new(format!("{prefix}.{}", info.name), info.unit, info.group)
-                    .from_source(src);
-            if let (Some(kind), Some(states)) = (info.band, bands)
+            let mut spec = self.spec(&info.quantity, info.group);
+            if let (Some(kind), Some(states)) = (info.band, self.states)
                 && let Some(state) = states.iter().find(|s| s.kind == kind)
             {
                 spec = spec.with_band(
-                    format!("{prefix}.var_{}", state.key),
+                    format!("{}.var_{}", self.prefix, state.key),
                     unit_scale_to_display(state.unit),
                 );
             }
@@ -238,122 +199,118 @@ pub(super) fn candidates(
                 spec,
             });
         }
+    }
+}
+
+/// A single-axis estimator's angle and rate with their errors.
+fn single_axis_candidates(out: &mut Vec<Candidate>, o: &Owner<'_>, i: usize, e: &dyn Estimator) {
+    let make = |q| Source::Est(i, q);
+    let outputs = e.outputs();
+    if outputs.angle {
+        o.push_all(out, ANGLE_1.iter().chain(&ERRORS_1[..1]), &make);
+    }
+    if outputs.rate {
+        o.push_all(out, RATE_1.iter().chain(&ERRORS_1[1..]), &make);
+    }
+}
+
+/// A three-axis estimator's attitude (or tilt), rate and errors, in the recorded order.
+fn three_axis_candidates(out: &mut Vec<Candidate>, o: &Owner<'_>, i: usize, e: &dyn Estimator) {
+    let make = |q| Source::Est(i, q);
+    let outputs = e.outputs();
+    let (full, tilt) = (outputs.attitude, outputs.tilt);
+    if tilt {
+        let list = ATTITUDE_3
+            .iter()
+            .filter(|q| full || !matches!(q.q, Q::Yaw | Q::Z));
+        o.push_all(out, list, &make);
+    }
+    if outputs.rate {
+        o.push_all(out, RATE_3.iter().chain(RATE_ERRORS_3), &make);
+    }
+    if full {
+        o.push_all(out, ERRORS_3[..1].iter(), &make);
+    }
+    if tilt {
+        o.push_all(out, TILT_ERRORS.iter(), &make);
+    }
+    if full {
+        o.push_all(out, ERRORS_3[1..].iter(), &make);
+    }
+}
+
+/// An estimator's covariance, NEES, innovations, internals and health.
+fn internal_candidates(
+    out: &mut Vec<Candidate>,
+    o: &Owner<'_>,
+    i: usize,
+    e: &dyn Estimator,
+    single_axis: bool,
+) {
+    let (id, states) = (o.prefix, e.covariance_states());
+    let mut push = |source: Source, name: String, label: String, unit, group| {
+        let spec = SeriesSpec::new(name, unit, group)
+            .labelled(format!("{}: {label}", o.label))
+            .from_source(o.src);
+        out.push(Candidate { source, spec });
     };
-    let (att, rate): (&[QInfo], &[QInfo]) = if single_axis {
-        (ANGLE_1, RATE_1)
-    } else {
-        (ATTITUDE_3, RATE_3)
-    };
-    per_source(&mut out, "truth", 0, att, &Source::Truth, None);
-    per_source(&mut out, "truth", 0, rate, &Source::Truth, None);
-    for (j, spec) in truth.extra_series().into_iter().enumerate() {
-        out.push(Candidate {
-            source: Source::TruthExtra(j),
-            spec,
-        });
+    for (k, s) in states.iter().enumerate() {
+        let label = format!("variance of the {}", state_label(s));
+        let name = format!("{id}.var_{}", s.key);
+        push(
+            Source::Variance(i, k),
+            name,
+            label,
+            squared(s.unit),
+            G::Covariance,
+        );
     }
-    for (j, spec) in sensors.extra_series().into_iter().enumerate() {
-        out.push(Candidate {
-            source: Source::SensorExtra(j),
-            spec,
-        });
+    let has_att_block = (0..3).all(|a| states.iter().any(|s| s.kind == K::AttitudeAxis(a)));
+    if has_att_block && e.outputs().attitude && !single_axis {
+        let label = "attitude NEES eᵀP⁻¹e".to_string();
+        push(
+            Source::NeesAtt(i),
+            format!("{id}.nees_att"),
+            label,
+            "",
+            G::Error,
+        );
     }
-    for (i, e) in estimators.iter().enumerate() {
-        let id = e.id();
-        let src = i + 1;
-        let states = e.covariance_states();
-        let outputs = e.outputs();
-        let make = |q| Source::Est(i, q);
-        if single_axis {
-            if outputs.angle {
-                per_source(&mut out, id, src, ANGLE_1, &make, Some(states));
-                per_source(&mut out, id, src, &ERRORS_1[..1], &make, Some(states));
-            }
-            if outputs.rate {
-                per_source(&mut out, id, src, RATE_1, &make, Some(states));
-                per_source(&mut out, id, src, &ERRORS_1[1..], &make, Some(states));
-            }
-        } else {
-            let (full, tilt) = (outputs.attitude, outputs.tilt);
-            if tilt {
-                let list: Vec<&QInfo> = ATTITUDE_3
-                    .iter()
-                    .filter(|q| full || !matches!(q.q, Q::Yaw | Q::Z))
-                    .collect();
-                for info in list {
-                    per_source(
-                        &mut out,
-                        id,
-                        src,
-                        std::slice::from_ref(info),
-                        &make,
-                        Some(states),
-                    );
-                }
-            }
-            if outputs.rate {
-                per_source(&mut out, id, src, RATE_3, &make, Some(states));
-                per_source(&mut out, id, src, RATE_ERRORS_3, &make, Some(states));
-            }
-            if full {
-                per_source(&mut out, id, src, &ERRORS_3[..1], &make, Some(states));
-            }
-            if tilt {
-                per_source(&mut out, id, src, TILT_ERRORS, &make, Some(states));
-            }
-            if full {
-                per_source(&mut out, id, src, &ERRORS_3[1..], &make, Some(states));
-            }
-        }
-        for (k, s) in states.iter().enumerate() {
-            out.push(Candidate {
-                source: Source::Variance(i, k),
-                spec: SeriesSpec::new(
-                    format!("{id}.var_{}", s.key),
-                    squared(s.unit),
-                    SeriesGroup::Covariance,
-                )
-                .from_source(src),
-            });
-        }
-        let has_att_block =
-            (0..3).all(|a| states.iter().any(|s| s.kind == StateKind::AttitudeAxis(a)));
-        if has_att_block && outputs.attitude && !single_axis {
-            out.push(Candidate {
-                source: Source::NeesAtt(i),
-                spec: SeriesSpec::new(format!("{id}.nees_att"), "", SeriesGroup::Error)
-                    .from_source(src),
-            });
-        }
-        if states.len() == 2 {
-            out.push(Candidate {
-                source: Source::Cross(i, 0, 1),
-                spec: SeriesSpec::new(
-                    format!("{id}.cov_{}_{}", states[0].key, states[1].key),
-                    cross_unit(states[0].unit, states[1].unit),
-                    SeriesGroup::Covariance,
-                )
-                .from_source(src),
-            });
-        }
-        for (k, name) in e.innovation_names().iter().enumerate() {
-            out.push(Candidate {
-                source: Source::Innovation(i, k),
-                spec: SeriesSpec::new(format!("{id}.{name}"), "", SeriesGroup::Innovation)
-                    .from_source(src),
-            });
-        }
-        for (k, name) in e.extra_names().iter().enumerate() {
-            out.push(Candidate {
-                source: Source::Extra(i, k),
-                spec: SeriesSpec::new(format!("{id}.{name}"), "", SeriesGroup::Lab)
-                    .from_source(src),
-            });
-        }
-        out.push(Candidate {
-            source: Source::Status(i),
-            spec: SeriesSpec::new(format!("{id}.status"), "", SeriesGroup::Lab).from_source(src),
-        });
+    if let [a, b] = states {
+        let label = format!(
+            "covariance of the {} and the {}",
+            state_label(a),
+            state_label(b)
+        );
+        let name = format!("{id}.cov_{}_{}", a.key, b.key);
+        push(
+            Source::Cross(i, 0, 1),
+            name,
+            label,
+            cross_unit(a.unit, b.unit),
+            G::Covariance,
+        );
     }
-    out
+    for (k, q) in e.innovation_quantities().iter().enumerate() {
+        let name = format!("{id}.{}", q.key);
+        push(
+            Source::Innovation(i, k),
+            name,
+            q.label.to_string(),
+            q.unit,
+            G::Innovation,
+        );
+    }
+    for (k, q) in e.extra_quantities().iter().enumerate() {
+        let name = format!("{id}.{}", q.key);
+        push(
+            Source::Extra(i, k),
+            name,
+            q.label.to_string(),
+            q.unit,
+            G::Lab,
+        );
+    }
+    let label = "health (0 = ok)".to_string();
+    push(Source::Status(i), format!("{id}.status"), label, "", G::Lab);
 }

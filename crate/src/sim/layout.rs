@@ -4,7 +4,7 @@
 //! derived quantity is computed only when a selected column needs it: the loop costs what is
 //! recorded.
 
-use super::catalogue::{Q, Source, bit, candidates, error_truth_needs, standard};
+use super::catalogue::{Candidate, Q, Source, bit, candidates, error_truth_needs, standard};
 use super::derived::{Derived, NAN_DERIVED, derive, nees_att};
 use super::selection::{Selection, UnknownSeries};
 use crate::model::{
@@ -45,49 +45,7 @@ impl Layout {
     ) -> Result<Self, UnknownSeries> {
         let single_axis = truth.state().angle_rad.is_some();
         let candidates = candidates(truth, sensors, estimators, single_axis);
-        let keep: Vec<bool> = match selection {
-            Selection::All => vec![true; candidates.len()],
-            Selection::Standard => candidates
-                .iter()
-                .map(|c| standard(c, figure_series, sphere))
-                .collect(),
-            Selection::View(names) => {
-                let bands: Vec<&str> = candidates
-                    .iter()
-                    .filter(|c| names.contains(&c.spec.name))
-                    .filter_map(|c| c.spec.band.as_ref().map(|(v, _)| v.as_str()))
-                    .collect();
-                candidates
-                    .iter()
-                    .map(|c| {
-                        matches!(c.source, Source::Time | Source::Status(_))
-                            || names.contains(&c.spec.name)
-                            || bands.contains(&c.spec.name.as_str())
-                    })
-                    .collect()
-            }
-            Selection::Named(names) => {
-                let mut keep = vec![false; candidates.len()];
-                keep[0] = true;
-                for name in names {
-                    match candidates.iter().position(|c| c.spec.name == *name) {
-                        Some(i) => keep[i] = true,
-                        None => {
-                            return Err(UnknownSeries {
-                                name: name.clone(),
-                                lab: lab_id.to_string(),
-                                known: candidates
-                                    .iter()
-                                    .map(|c| c.spec.name.as_str())
-                                    .collect::<Vec<_>>()
-                                    .join(", "),
-                            });
-                        }
-                    }
-                }
-                keep
-            }
-        };
+        let keep = keep_mask(lab_id, &candidates, selection, figure_series, sphere)?;
         let available: Vec<SeriesSpec> = candidates.iter().map(|c| c.spec.clone()).collect();
         let mut columns = Vec::new();
         let mut specs = Vec::new();
@@ -127,7 +85,10 @@ impl Layout {
                 _ => {}
             }
         }
-        let extra_lens: Vec<usize> = estimators.iter().map(|e| e.extra_names().len()).collect();
+        let extra_lens: Vec<usize> = estimators
+            .iter()
+            .map(|e| e.extra_quantities().len())
+            .collect();
         let truth_extra_len = truth.extra_series().len();
         let sensor_extra_len = sensors.extra_series().len();
         Ok(Self {
@@ -237,4 +198,59 @@ impl Layout {
             *slot = v;
         }
     }
+}
+
+/// Which of `candidates` `selection` keeps (with `figure_series`, the series the lab's
+/// figures draw, and the sphere's when `sphere`); a named series the lab lacks is an error.
+fn keep_mask(
+    lab_id: &str,
+    candidates: &[Candidate],
+    selection: &Selection,
+    figure_series: &[&str],
+    sphere: bool,
+) -> Result<Vec<bool>, UnknownSeries> {
+    let keep = match selection {
+        Selection::All => vec![true; candidates.len()],
+        Selection::Standard => candidates
+            .iter()
+            .map(|c| standard(c, figure_series, sphere))
+            .collect(),
+        Selection::View(names) => {
+            let bands: Vec<&str> = candidates
+                .iter()
+                .filter(|c| names.contains(&c.spec.name))
+                .filter_map(|c| c.spec.band.as_ref().map(|(v, _)| v.as_str()))
+                .collect();
+            candidates
+                .iter()
+                .map(|c| {
+                    matches!(c.source, Source::Time | Source::Status(_))
+                        || names.contains(&c.spec.name)
+                        || bands.contains(&c.spec.name.as_str())
+                })
+                .collect()
+        }
+        Selection::Named(names) => {
+            let mut keep = vec![false; candidates.len()];
+            keep[0] = true;
+            for name in names {
+                match candidates.iter().position(|c| c.spec.name == *name) {
+                    Some(i) => keep[i] = true,
+                    None => {
+                        return Err(UnknownSeries {
+                            name: name.clone(),
+                            lab: lab_id.to_string(),
+                            known: candidates
+                                .iter()
+                                .map(|c| c.spec.name.as_str())
+                                .collect::<Vec<_>>()
+                                .join(", "),
+                        });
+                    }
+                }
+            }
+            keep
+        }
+    };
+    Ok(keep)
 }

@@ -13,6 +13,7 @@ mod export;
 mod health;
 mod journal;
 mod layout;
+mod quantities;
 mod replay;
 mod rerun;
 mod selection;

@@ -102,17 +102,15 @@ impl SensorModel for LogSensor {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        let mut s = vec![SeriesSpec::new(
-            "sensors.gyro_deg_s",
-            "deg/s",
-            SeriesGroup::Rate,
-        )];
+        let mut s = vec![
+            SeriesSpec::new("sensors.gyro_deg_s", "deg/s", SeriesGroup::Rate)
+                .labelled("logged gyro reading ω"),
+        ];
         if !self.log.accel_g.is_empty() {
-            s.push(SeriesSpec::new(
-                "sensors.accel_angle_deg",
-                "deg",
-                SeriesGroup::Attitude,
-            ));
+            s.push(
+                SeriesSpec::new("sensors.accel_angle_deg", "deg", SeriesGroup::Attitude)
+                    .labelled("logged accelerometer angle θ_acc"),
+            );
         }
         s
     }

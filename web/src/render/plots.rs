@@ -204,7 +204,7 @@ pub fn show(
                     continue;
                 }
                 let mut pts = rec.plot_points(i, MAX_POINTS);
-                let mut label = spec.header();
+                let mut label = spec.legend();
                 if log {
                     for p in &mut pts {
                         p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
@@ -229,7 +229,7 @@ pub fn show(
                             .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * var.1])
                             .collect()
                     };
-                    let name = format!("{} ±3σ", spec.name);
+                    let name = format!("{} ±3σ", spec.label);
                     for sign in [1.0, -1.0] {
                         plot.line(
                             Line::new(name.clone(), sigma3(sign))

@@ -346,3 +346,49 @@ fn a_reset_only_slider_waits_for_reset_and_says_so() {
     assert_eq!(sim.applied_params().get("input_rate_hz"), 300.0);
     assert!(h.query_by_label("Reset now").is_none());
 }
+
+/// The legend of each lab's first plot tab speaks to a student: the source and the quantity
+/// in words with the unit, never a series name like `kf.angle_deg [deg]`.
+#[test]
+fn every_labs_legend_shows_human_labels_with_units() {
+    for lab in labs::all() {
+        let mut h = harness(lab.id());
+        for _ in 0..20 {
+            h.state_mut().state.sim.step();
+        }
+        h.run();
+        let tab = attlab::sim::default_tab(*lab);
+        let sim = &h.state().state.sim;
+        let shown: Vec<&attlab::model::SeriesSpec> = match tab {
+            attlab::model::PlotTab::Figure(i) => lab.figures()[i]
+                .series
+                .iter()
+                .filter_map(|n| sim.specs().iter().find(|s| s.name == *n))
+                .collect(),
+            attlab::model::PlotTab::Group(g) => {
+                sim.specs().iter().filter(|s| s.group == g).collect()
+            }
+        };
+        let first = shown
+            .first()
+            .unwrap_or_else(|| panic!("{}: nothing plotted", lab.id()));
+        let legend = first.legend();
+        let legend = if lab.figures().first().is_some_and(|f| f.log) {
+            format!("log10 {legend}")
+        } else {
+            legend
+        };
+        assert!(
+            h.query_by_label(&legend).is_some(),
+            "{}: the legend has no entry `{legend}`",
+            lab.id()
+        );
+        assert!(
+            h.query_by_label_contains(&format!("{} [", first.name))
+                .is_none(),
+            "{}: a legend still shows the series name {}",
+            lab.id(),
+            first.name
+        );
+    }
+}

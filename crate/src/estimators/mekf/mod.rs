@@ -25,7 +25,7 @@ use super::kf::KalmanState;
 use crate::math::symmetrize;
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Onboard, ParamValues,
-    StateInfo,
+    Quantity, StateInfo,
 };
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
 use states::states_of;
@@ -376,37 +376,24 @@ impl<const N: usize> Estimator for Mekf<N> {
         })
     }
 
-    fn extra_names(&self) -> &'static [&'static str] {
-        const NIS: [&str; 2] = ["nis", "nis_dof"];
-        const GB: [&str; 5] = [
-            "nis",
-            "nis_dof",
-            "gbias_x_deg_s",
-            "gbias_y_deg_s",
-            "gbias_z_deg_s",
-        ];
-        const MB: [&str; 5] = ["nis", "nis_dof", "mbias_x_nt", "mbias_y_nt", "mbias_z_nt"];
-        const D: [&str; 5] = ["nis", "nis_dof", "d_x_s2", "d_y_s2", "d_z_s2"];
-        const GB_D: [&str; 8] = [
-            "nis",
-            "nis_dof",
-            "gbias_x_deg_s",
-            "gbias_y_deg_s",
-            "gbias_z_deg_s",
-            "d_x_s2",
-            "d_y_s2",
-            "d_z_s2",
-        ];
-        const MB_D: [&str; 8] = [
-            "nis",
-            "nis_dof",
-            "mbias_x_nt",
-            "mbias_y_nt",
-            "mbias_z_nt",
-            "d_x_s2",
-            "d_y_s2",
-            "d_z_s2",
-        ];
+    fn extra_quantities(&self) -> &'static [Quantity] {
+        const NIS: Quantity = Quantity::new("nis", "innovation test statistic NIS", "");
+        const DOF: Quantity = Quantity::new("nis_dof", "NIS degrees of freedom", "");
+        const GBX: Quantity = Quantity::new("gbias_x_deg_s", "gyro bias Δω_x", "deg/s");
+        const GBY: Quantity = Quantity::new("gbias_y_deg_s", "gyro bias Δω_y", "deg/s");
+        const GBZ: Quantity = Quantity::new("gbias_z_deg_s", "gyro bias Δω_z", "deg/s");
+        const MBX: Quantity = Quantity::new("mbias_x_nt", "magnetometer bias Δb_x", "nT");
+        const MBY: Quantity = Quantity::new("mbias_y_nt", "magnetometer bias Δb_y", "nT");
+        const MBZ: Quantity = Quantity::new("mbias_z_nt", "magnetometer bias Δb_z", "nT");
+        const DX: Quantity = Quantity::new("d_x_s2", "disturbance estimate d_x", "1/s²");
+        const DY: Quantity = Quantity::new("d_y_s2", "disturbance estimate d_y", "1/s²");
+        const DZ: Quantity = Quantity::new("d_z_s2", "disturbance estimate d_z", "1/s²");
+        const BASE: [Quantity; 2] = [NIS, DOF];
+        const GB: [Quantity; 5] = [NIS, DOF, GBX, GBY, GBZ];
+        const MB: [Quantity; 5] = [NIS, DOF, MBX, MBY, MBZ];
+        const D: [Quantity; 5] = [NIS, DOF, DX, DY, DZ];
+        const GB_D: [Quantity; 8] = [NIS, DOF, GBX, GBY, GBZ, DX, DY, DZ];
+        const MB_D: [Quantity; 8] = [NIS, DOF, MBX, MBY, MBZ, DX, DY, DZ];
         let st = self.cfg.states;
         match (
             st.gyro_bias().is_some(),
@@ -418,7 +405,7 @@ impl<const N: usize> Estimator for Mekf<N> {
             (true, _, true) => &GB_D,
             (_, true, true) => &MB_D,
             (false, false, true) => &D,
-            (false, false, false) => &NIS,
+            (false, false, false) => &BASE,
         }
     }
 

@@ -29,9 +29,9 @@ const STATES_MAG_BIAS: [StateInfo; 9] = [
     STATES_6[3],
     STATES_6[4],
     STATES_6[5],
-    StateInfo::new("mbias_x", "nT", StateKind::Other),
-    StateInfo::new("mbias_y", "nT", StateKind::Other),
-    StateInfo::new("mbias_z", "nT", StateKind::Other),
+    StateInfo::new("mbias_x", "nT", StateKind::MagBias(0)),
+    StateInfo::new("mbias_y", "nT", StateKind::MagBias(1)),
+    StateInfo::new("mbias_z", "nT", StateKind::MagBias(2)),
 ];
 const STATES_REDUCED: [StateInfo; 6] = [
     STATES_6[0],

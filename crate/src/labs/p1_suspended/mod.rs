@@ -392,8 +392,9 @@ impl TruthModel for Suspended {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab),
-            SeriesSpec::new("truth.swing_deg", "deg", SeriesGroup::Lab),
+            SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab).labelled("torsion period T"),
+            SeriesSpec::new("truth.swing_deg", "deg", SeriesGroup::Lab)
+                .labelled("swing angle of the string"),
         ]
     }
 

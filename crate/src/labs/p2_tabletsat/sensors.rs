@@ -374,23 +374,31 @@ impl SensorModel for Sensors {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        let mut s: Vec<SeriesSpec> = ["eclipse", "sun_seen", "star_available"]
-            .iter()
-            .map(|n| SeriesSpec::new(format!("sensors.{n}"), "", SeriesGroup::Lab))
-            .collect();
+        let mut s: Vec<SeriesSpec> = [
+            ("eclipse", "in the Earth's shadow (1 = yes)"),
+            ("sun_seen", "a sun sensor sees the sun (1 = yes)"),
+            ("star_available", "star tracker available (1 = yes)"),
+        ]
+        .iter()
+        .map(|(n, label)| {
+            SeriesSpec::new(format!("sensors.{n}"), "", SeriesGroup::Lab).labelled(*label)
+        })
+        .collect();
         for a in ["x", "y", "z"] {
-            s.push(SeriesSpec::new(
-                format!("sensors.gyro_bias_{a}_deg_s"),
-                "deg/s",
-                SeriesGroup::Lab,
-            ));
+            s.push(
+                SeriesSpec::new(
+                    format!("sensors.gyro_bias_{a}_deg_s"),
+                    "deg/s",
+                    SeriesGroup::Lab,
+                )
+                .labelled(format!("true gyro bias Δω_{a}")),
+            );
         }
         for a in ["x", "y", "z"] {
-            s.push(SeriesSpec::new(
-                format!("sensors.mag_bias_{a}_nt"),
-                "nT",
-                SeriesGroup::Lab,
-            ));
+            s.push(
+                SeriesSpec::new(format!("sensors.mag_bias_{a}_nt"), "nT", SeriesGroup::Lab)
+                    .labelled(format!("true magnetometer bias Δb_{a}")),
+            );
         }
         s
     }

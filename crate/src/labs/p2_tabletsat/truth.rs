@@ -196,6 +196,7 @@ impl TruthModel for Spacecraft {
                     "N·m·s",
                     SeriesGroup::Lab,
                 )
+                .labelled(format!("wheel momentum h_{a}"))
             })
             .collect()
     }

@@ -132,8 +132,10 @@ impl SensorModel for Mpu6050 {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("sensors.accel_angle_deg", "deg", SeriesGroup::Attitude),
-            SeriesSpec::new("sensors.gyro_deg_s", "deg/s", SeriesGroup::Rate),
+            SeriesSpec::new("sensors.accel_angle_deg", "deg", SeriesGroup::Attitude)
+                .labelled("accelerometer angle θ_acc = atan2(a_y, a_z)"),
+            SeriesSpec::new("sensors.gyro_deg_s", "deg/s", SeriesGroup::Rate)
+                .labelled("gyro reading ω"),
         ]
     }
 

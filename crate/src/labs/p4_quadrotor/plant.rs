@@ -297,12 +297,17 @@ impl TruthModel for Plant {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.setpoint_deg", "deg", SeriesGroup::Attitude),
-            SeriesSpec::new("truth.accel_deg_s2", "deg/s²", SeriesGroup::Lab),
-            SeriesSpec::new("truth.u_v_rad_s2", "rad/s²", SeriesGroup::Lab),
-            SeriesSpec::new("truth.u0_rad_s2", "rad/s²", SeriesGroup::Lab),
-            SeriesSpec::new("truth.u0_needed_rad_s2", "rad/s²", SeriesGroup::Lab),
-            SeriesSpec::new("truth.thrust_total_n", "N", SeriesGroup::Lab),
+            SeriesSpec::new("truth.setpoint_deg", "deg", SeriesGroup::Attitude)
+                .labelled("set-point θ_ref"),
+            SeriesSpec::new("truth.accel_deg_s2", "deg/s²", SeriesGroup::Lab)
+                .labelled("angular acceleration θ̈"),
+            SeriesSpec::new("truth.u_v_rad_s2", "rad/s²", SeriesGroup::Lab)
+                .labelled("varying command u_v"),
+            SeriesSpec::new("truth.u0_rad_s2", "rad/s²", SeriesGroup::Lab)
+                .labelled("constant command u₀"),
+            SeriesSpec::new("truth.u0_needed_rad_s2", "rad/s²", SeriesGroup::Lab)
+                .labelled("u₀ that holds the rig level"),
+            SeriesSpec::new("truth.thrust_total_n", "N", SeriesGroup::Lab).labelled("total thrust"),
         ]
     }
 

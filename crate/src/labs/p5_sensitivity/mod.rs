@@ -214,7 +214,10 @@ impl TruthModel for Turning {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         (1..=3)
-            .map(|i| SeriesSpec::new(format!("truth.angle_{i}_rad"), "rad", SeriesGroup::Attitude))
+            .map(|i| {
+                SeriesSpec::new(format!("truth.angle_{i}_rad"), "rad", SeriesGroup::Attitude)
+                    .labelled(format!("angle {i} of the sequence"))
+            })
             .collect()
     }
 
@@ -273,7 +276,10 @@ impl SensorModel for Sensors {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        vec![SeriesSpec::new("sensors.reference", "", SeriesGroup::Lab)]
+        vec![
+            SeriesSpec::new("sensors.reference", "", SeriesGroup::Lab)
+                .labelled("a reference attitude arrived (1 = yes)"),
+        ]
     }
 
     fn extra_values(&self, out: &mut [f64]) {

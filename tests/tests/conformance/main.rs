@@ -7,6 +7,8 @@ use attlab::sim::{Selection, SimOptions, Simulation};
 use rand::SeedableRng;
 use std::collections::HashSet;
 
+mod params;
+
 fn every_series() -> SimOptions {
     SimOptions {
         selection: Selection::All,
@@ -118,140 +120,6 @@ fn same_lab_params_and_seed_give_the_identical_run_and_reset_reproduces_it() {
     }
 }
 
-/// Runs `lab` 50 steps, changes `key` to `value` live, runs 2000 more steps (some
-/// parameters act only after a while, e.g. an adaptation window) and tells whether any
-/// row since differs from an unchanged run.
-fn live_change_shows(lab: &'static dyn Lab, p: &ParamValues, key: &str, value: f64) -> bool {
-    let mut a = run(lab, p.clone(), 3, 50);
-    let mut b = run(lab, p.clone(), 3, 50);
-    b.set_param(key, value).unwrap();
-    assert_eq!(
-        b.t_s(),
-        a.t_s(),
-        "{}: set_param restarted the run",
-        lab.id()
-    );
-    let mut differs = false;
-    for _ in 0..2000 {
-        a.step();
-        b.step();
-        differs |= !same_bits(a.last_row(), b.last_row());
-    }
-    differs
-}
-
-#[test]
-fn a_live_parameter_change_acts_without_restart() {
-    for lab in labs::all() {
-        for spec in lab
-            .params()
-            .iter()
-            .filter(|s| !s.needs_reset && !s.export_only)
-        {
-            let mut p = ParamValues::defaults(lab.params());
-            if let Some(dep) = spec.requires {
-                let dep_spec = lab.params().iter().find(|s| s.key == dep).expect("exists");
-                p.set(lab.params(), dep, dep_spec.max).unwrap();
-            }
-            // Parameters that only act through this one (the time of a bump acts through its
-            // size) are moved to the start of the run, where the test looks.
-            for dependent in lab.params().iter().filter(|d| d.requires == Some(spec.key)) {
-                p.set(lab.params(), dependent.key, dependent.min).unwrap();
-            }
-            // A live change must show at one end of the range at least (an impulse moved
-            // from 300 s to 600 s does nothing in the first seconds, moved to 0 s it does).
-            let shows = [spec.min, spec.max]
-                .iter()
-                .filter(|v| **v != p.get(spec.key))
-                .any(|v| live_change_shows(*lab, &p, spec.key, *v));
-            assert!(shows, "{}: changing {} had no effect", lab.id(), spec.key);
-        }
-    }
-}
-
-/// A parameter marked "applies at Reset" changes nothing in the running simulation — not
-/// a value, not the step length — and after Reset the run is the one built with the new value.
-#[test]
-fn a_reset_only_parameter_waits_for_reset() {
-    let mut moved = 0;
-    for lab in labs::all() {
-        for spec in lab.params().iter().filter(|s| s.needs_reset) {
-            let p = ParamValues::defaults(lab.params());
-            let value = if p.get(spec.key) == spec.max {
-                spec.min
-            } else {
-                spec.max
-            };
-            let mut a = run(*lab, p.clone(), 5, 40);
-            let mut b = run(*lab, p.clone(), 5, 40);
-            b.set_param(spec.key, value).unwrap();
-            assert_eq!(
-                b.params().get(spec.key),
-                value,
-                "{}: {}",
-                lab.id(),
-                spec.key
-            );
-            assert_eq!(b.pending_reset(), vec![spec.key], "{}", lab.id());
-            for k in 0..300 {
-                a.step();
-                b.step();
-                assert!(
-                    a.dt_s() == b.dt_s() && same_bits(a.last_row(), b.last_row()),
-                    "{}: moving reset-only {} changed the run {k} steps later",
-                    lab.id(),
-                    spec.key
-                );
-            }
-            b.reset(6);
-            assert!(b.pending_reset().is_empty(), "{}", lab.id());
-            let mut moved_p = p.clone();
-            moved_p.set(lab.params(), spec.key, value).unwrap();
-            let mut fresh = run(*lab, moved_p, 6, 0);
-            for _ in 0..50 {
-                b.step();
-                fresh.step();
-            }
-            assert!(
-                same_bits(b.last_row(), fresh.last_row()),
-                "{}: after Reset, {} = {value} is not the run built with it",
-                lab.id(),
-                spec.key
-            );
-            moved += 1;
-        }
-    }
-    assert!(moved >= 20, "every lab's reset-only parameters ({moved})");
-}
-
-#[test]
-fn every_parameter_at_its_extremes_runs_without_panic_or_silent_nan() {
-    for lab in labs::all() {
-        for spec in lab.params() {
-            for value in [spec.min, spec.max] {
-                let mut p = ParamValues::defaults(lab.params());
-                p.set(lab.params(), spec.key, value).unwrap();
-                let sim = run(*lab, p, 1, 400);
-                for ((e, est), status) in sim
-                    .estimators()
-                    .iter()
-                    .zip(sim.estimates())
-                    .zip(sim.statuses())
-                {
-                    let finite = est.is_finite();
-                    assert!(
-                        finite || !status.is_ok(),
-                        "{}: {} non-finite but not flagged ({}={value})",
-                        lab.id(),
-                        e.id(),
-                        spec.key
-                    );
-                }
-            }
-        }
-    }
-}
-
 #[test]
 fn estimators_publish_what_they_describe() {
     for lab in labs::all() {
@@ -272,11 +140,11 @@ fn estimators_publish_what_they_describe() {
             }
             assert_eq!(
                 e.innovation().len(),
-                e.innovation_names().len(),
+                e.innovation_quantities().len(),
                 "{}",
                 e.id()
             );
-            let mut extras = vec![f64::NAN; e.extra_names().len()];
+            let mut extras = vec![f64::NAN; e.extra_quantities().len()];
             e.extras(&mut extras);
             assert!(
                 extras.iter().all(|v| !v.is_nan()),
@@ -394,6 +262,40 @@ fn a_csv_export_rerun_matches_the_live_run_with_its_parameter_changes() {
             "{}: a missing sample is an empty cell",
             lab.id()
         );
+    }
+}
+
+/// Every series a lab records has a label a student can read: words, not its machine name,
+/// and its unit in the legend.
+#[test]
+fn every_series_has_a_human_label_and_its_unit_in_the_legend() {
+    for lab in labs::all() {
+        let sim = run(*lab, ParamValues::defaults(lab.params()), 1, 0);
+        for s in sim.specs() {
+            let machine = s.label.split([' ', '(', ')', ':']).any(|w| {
+                w.split_once('.').is_some_and(|(a, b)| {
+                    !a.is_empty()
+                        && !b.is_empty()
+                        && a.chars()
+                            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+                })
+            });
+            assert!(
+                s.has_label() && !machine,
+                "{}: `{}` is labelled `{}`",
+                lab.id(),
+                s.name,
+                s.label
+            );
+            let unit = attlab::model::display_unit(s.unit);
+            assert!(
+                s.unit.is_empty() || s.legend().ends_with(&format!("[{unit}]")),
+                "{}: {} has no unit in `{}`",
+                lab.id(),
+                s.name,
+                s.legend()
+            );
+        }
     }
 }
 
