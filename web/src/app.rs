@@ -5,7 +5,10 @@ use crate::export::{Capture, Regions, Step};
 use crate::panels;
 use crate::platform;
 use crate::render::body3d;
-use crate::state::{AppState, Command, Message, PngTarget, SWEEP_BUDGET, View};
+use crate::state::{
+    AppState, Command, Effect, IoCommand, Message, PngTarget, RunCommand, SWEEP_BUDGET, UrlCommand,
+    View, ViewCommand,
+};
 use attlab::model::{Lab, ParamValues, ViewKind};
 use web_time::Instant;
 
@@ -25,6 +28,10 @@ pub struct AttLabApp {
     regions: Regions,
     /// The last PNG saved: name, width, height, bytes (published for the page test).
     last_png: Option<(String, usize, usize, usize)>,
+    /// Text for the clipboard, copied after the frame.
+    clipboard: Option<String>,
+    /// A PNG export asked for, started after the frame.
+    png_request: Option<PngTarget>,
 }
 
 impl AttLabApp {
@@ -56,12 +63,30 @@ impl AttLabApp {
             capture: None,
             regions: Regions::default(),
             last_png: None,
+            clipboard: None,
+            png_request: None,
         }
     }
 
     /// An app for `lab` with `params`, `seed` and `speed`, without a GPU.
     pub fn with_state(lab: &'static dyn Lab, params: ParamValues, seed: u64, speed: f64) -> Self {
         Self::headless(AppState::new(lab, params, seed, speed))
+    }
+
+    /// Applies `command` to the state and keeps what it asks of the app (a clipboard text,
+    /// a PNG) for the end of the frame.
+    pub fn apply(&mut self, command: Command) {
+        match self.state.apply(command) {
+            Some(Effect::Clipboard(text)) => self.clipboard = Some(text),
+            Some(Effect::Png(target)) => self.png_request = Some(target),
+            None => {}
+        }
+    }
+
+    /// The text the last command put on the clipboard, if any (for tests: the page copies
+    /// it at the end of the frame).
+    pub fn clipboard(&self) -> Option<&str> {
+        self.clipboard.as_deref()
     }
 
     /// Whether the 3D renderer is available.
@@ -94,30 +119,36 @@ impl AttLabApp {
             .is_some_and(|c| panels::tabs(&self.state) != c.lab_tabs())
         {
             self.capture = None;
-            self.state
-                .messages
-                .push(Message::error("PNG export stopped: the lab changed"));
+            let stopped = Message::error("PNG export stopped: the lab changed");
+            self.apply(Command::Notify(stopped));
         }
-        match &self.capture {
-            Some(capture) => {
-                // Every part of a capture shows the same instant.
-                self.state.hold(Instant::now());
-                if self.state.plots.tab != capture.tab() {
-                    self.state.apply(Command::SelectTab(capture.tab()));
-                }
-            }
-            None => self.state.advance(Instant::now()),
+        let now = Instant::now();
+        let mut commands: Vec<Command> = match &self.capture {
+            // Every part of a capture shows the same instant.
+            Some(capture) if self.state.view().plots.tab != capture.tab() => vec![
+                RunCommand::Hold(now).into(),
+                ViewCommand::SelectTab(capture.tab()).into(),
+            ],
+            Some(_) => vec![RunCommand::Hold(now).into()],
+            None => vec![RunCommand::Advance(now).into()],
+        };
+        commands.extend([
+            ViewCommand::SetCapturing(self.capture.is_some()).into(),
+            RunCommand::AdvanceSweep(SWEEP_BUDGET).into(),
+            IoCommand::TakePickedLog.into(),
+        ]);
+        for c in commands.drain(..) {
+            self.apply(c);
         }
-        self.state.capturing = self.capture.is_some();
-        self.state.advance_sweep(SWEEP_BUDGET);
-        self.state.take_picked_log();
-        let mut commands: Vec<Command> = Vec::new();
         // Presenter mode: everything larger (set on a change only, so the reader's own zoom
         // keys keep working in between).
-        if self.zoomed_for != Some(self.state.presenter) {
-            ui.ctx()
-                .set_zoom_factor(if self.state.presenter { 1.5 } else { 1.0 });
-            self.zoomed_for = Some(self.state.presenter);
+        if self.zoomed_for != Some(self.state.view().presenter) {
+            ui.ctx().set_zoom_factor(if self.state.view().presenter {
+                1.5
+            } else {
+                1.0
+            });
+            self.zoomed_for = Some(self.state.view().presenter);
         }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state);
@@ -132,19 +163,19 @@ impl AttLabApp {
             &mut commands,
         );
         for c in commands {
-            self.state.apply(c);
+            self.apply(c);
         }
         self.run_capture(ui.ctx());
-        if let Some(text) = self.state.clipboard.take() {
+        if let Some(text) = self.clipboard.take() {
             ui.ctx().copy_text(text);
         }
-        self.state.sync_url();
+        self.apply(UrlCommand::Sync.into());
         self.frames += 1;
         platform::publish_status(&platform::Status {
             frames: self.frames,
-            lab: self.state.sim.lab().id(),
-            sim_steps: self.state.sim.steps(),
-            recorder_bytes: self.state.sim.recorder().memory_bytes(),
+            lab: self.state.sim().lab().id(),
+            sim_steps: self.state.sim().steps(),
+            recorder_bytes: self.state.sim().recorder().memory_bytes(),
             errors: &self.app_errors,
             last_png: self.last_png.as_ref(),
         });
@@ -153,14 +184,13 @@ impl AttLabApp {
     /// Starts a PNG capture the panels asked for, or moves the running one on; a finished
     /// picture is saved like the CSV (a download in the page, a file on the desktop).
     fn run_capture(&mut self, ctx: &egui::Context) {
-        if let Some(target) = self.state.png_request.take() {
+        if let Some(target) = self.png_request.take() {
             if self.capture.is_some() {
-                self.state
-                    .messages
-                    .push(Message::info("a PNG is being made already: one at a time"));
+                let busy = Message::info("a PNG is being made already: one at a time");
+                self.apply(Command::Notify(busy));
             } else {
                 let tabs = panels::tabs(&self.state);
-                self.capture = Some(Capture::new(target, tabs, self.state.plots.tab));
+                self.capture = Some(Capture::new(target, tabs, self.state.view().plots.tab));
             }
         }
         let Some(capture) = self.capture.as_mut() else {
@@ -172,9 +202,9 @@ impl AttLabApp {
         let target = capture.target();
         let restore = capture.restore_tab();
         self.capture = None;
-        self.state.capturing = false;
-        if self.state.plots.tab != restore {
-            self.state.apply(Command::SelectTab(restore));
+        self.apply(ViewCommand::SetCapturing(false).into());
+        if self.state.view().plots.tab != restore {
+            self.apply(ViewCommand::SelectTab(restore).into());
         }
         let name = self.png_name(target);
         let message = result.and_then(|png| {
@@ -183,24 +213,25 @@ impl AttLabApp {
                 &name,
                 "image/png",
                 png.bytes,
-                self.state.save_dir.as_deref(),
+                self.state.io().save_dir.as_deref(),
             )?;
             self.last_png = Some((name.clone(), w, h, n));
             Ok(format!("{saved} ({w}×{h} pixels)"))
         });
-        self.state.messages.push(match message {
+        let message = match message {
             Ok(m) => Message::info(m),
             Err(e) => Message::error(format!("PNG export failed: {e}")),
-        });
+        };
+        self.apply(Command::Notify(message));
     }
 
     /// `attlab-<lab>-seed<seed>-t<time>s-<what>.png`.
     fn png_name(&self, target: PngTarget) -> String {
-        let lab = self.state.sim.lab();
+        let lab = self.state.sim().lab();
         let what = match target {
             // A lab with a diagram of its own draws it where the w plane would be.
             PngTarget::View(k) => match lab.views().get(k) {
-                Some(ViewKind::WPlane) if !lab.diagrams(self.state.sim.params()).is_empty() => {
+                Some(ViewKind::WPlane) if !lab.diagrams(self.state.sim().params()).is_empty() => {
                     "diagram".to_string()
                 }
                 Some(v) => v.slug().to_string(),
@@ -211,8 +242,8 @@ impl AttLabApp {
         format!(
             "attlab-{}-seed{}-t{:.0}s-{what}.png",
             lab.id(),
-            self.state.sim.seed(),
-            self.state.sim.t_s()
+            self.state.sim().seed(),
+            self.state.sim().t_s()
         )
     }
 }
@@ -220,8 +251,8 @@ impl AttLabApp {
 impl eframe::App for AttLabApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
-        let sweeping = self.state.sweep.as_ref().is_some_and(|(_, s)| !s.is_done());
-        if self.state.playing || sweeping {
+        let sweeping = self.state.run().sweeping();
+        if self.state.run().playing || sweeping {
             ui.ctx().request_repaint();
         }
     }

@@ -5,7 +5,7 @@ use super::page::{BodyShape, DEFAULT_VIEWS, Diagram, Figure, Outage, SceneExtras
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
 use super::series::SeriesSpec;
-use super::study::{OutputFile, SweepSpec, TimingItem};
+use super::study::{ExampleLog, OutputFile, SweepSpec, TimingItem};
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -184,6 +184,10 @@ pub trait Lab: Sync {
     /// gyro; paper 4's Arduino and MPU-6050).
     fn accepts_imu_log(&self) -> bool {
         false
+    }
+    /// A log the lab ships for its laboratory mode, if it has one.
+    fn example_log(&self) -> Option<ExampleLog> {
+        None
     }
     /// Named parameter sets (instruments, scenarios).
     fn presets(&self) -> &'static [Preset] {

@@ -26,4 +26,6 @@ pub use page::{
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};
 pub use series::{PlotTab, Quantity, SeriesGroup, SeriesSpec, display_unit};
-pub use study::{OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem};
+pub use study::{
+    ExampleLog, OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem,
+};

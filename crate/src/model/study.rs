@@ -140,6 +140,15 @@ pub struct OutputFile {
     pub stop: Option<String>,
 }
 
+/// A recorded log a lab ships for its laboratory mode (the page's "Replay the example log").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ExampleLog {
+    /// File name shown.
+    pub name: &'static str,
+    /// Its text, in the lab's log format.
+    pub text: &'static str,
+}
+
 /// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).
 pub struct TimingItem {
     /// What is timed.

@@ -4,7 +4,7 @@
 
 use crate::export::Regions;
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
-use crate::state::{AppState, Command, Focus, PngTarget, View};
+use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View, ViewCommand};
 use attlab::math::{WzAttitude, WzChart};
 use attlab::model::{SeriesGroup, StateKind, ViewKind};
 use attlab::record::Recorder;
@@ -22,8 +22,8 @@ pub fn central(
 ) {
     egui::CentralPanel::default().show(ui, |ui| {
         let full = ui.available_rect_before_wrap();
-        let kinds = app.sim.lab().views();
-        match app.focus {
+        let kinds = app.sim().lab().views();
+        match app.view().focus {
             Focus::View(k) if k < kinds.len() => {
                 draw_view(ui, app, view, kinds[k], full, gpu_ready);
                 png_button(ui, app, k, full, commands);
@@ -61,7 +61,7 @@ pub fn central(
 /// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
 /// the picture).
 fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut Vec<Command>) {
-    if app.capturing || !ui.rect_contains_pointer(rect) {
+    if app.view().capturing || !ui.rect_contains_pointer(rect) {
         return;
     }
     let size = Vec2::new(38.0, 18.0);
@@ -72,7 +72,7 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
         .on_hover_text("Save this view as a PNG (key p while it is shown alone)")
         .clicked()
     {
-        commands.push(Command::ExportPng(PngTarget::View(k)));
+        commands.push(Command::from(IoCommand::ExportPng(PngTarget::View(k))));
     }
 }
 
@@ -83,12 +83,12 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
     plot_tabs(ui, app, commands);
     plots::show(
         ui,
-        app.sim.recorder(),
-        app.sim.lab().figures(),
-        app.sim.lab().outages(),
-        &app.plots,
-        if app.presenter { 3.0 } else { 1.4 },
-        &app.hidden,
+        app.sim().recorder(),
+        app.sim().lab().figures(),
+        app.sim().lab().outages(),
+        &app.view().plots,
+        if app.view().presenter { 3.0 } else { 1.4 },
+        &app.view().hidden,
     );
 }
 
@@ -122,7 +122,7 @@ fn draw_view(
         }
         ViewKind::WPlane => {
             // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
-            let diagrams = app.sim.lab().diagrams(app.sim.params());
+            let diagrams = app.sim().lab().diagrams(app.sim().params());
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
@@ -147,7 +147,7 @@ fn draw_view(
         ViewKind::PhasePortrait => {
             // Trails are kept for hidden sources too, so showing one again loses nothing.
             let (sources, shown) = axis_sources(app);
-            view.trails.push(app.sim.t_s(), &sources);
+            view.trails.push(app.sim().t_s(), &sources);
             single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown);
         }
     }
@@ -157,7 +157,7 @@ fn draw_view(
 /// and whether each is shown.
 fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
     let mut shown = vec![true];
-    let truth = app.sim.truth();
+    let truth = app.sim().truth();
     let mut out = vec![single_axis::AxisSource {
         name: "truth".into(),
         color: plots::source_color(0),
@@ -165,14 +165,14 @@ fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
         rate_rad_s: truth.rate_body_rad_s.z,
     }];
     for (i, (e, est)) in app
-        .sim
+        .sim()
         .estimators()
         .iter()
-        .zip(app.sim.estimates())
+        .zip(app.sim().estimates())
         .enumerate()
     {
         if let Some(angle) = est.angle_rad {
-            shown.push(!app.hidden.contains(&(i + 1)));
+            shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
                 name: e.id().to_string(),
                 color: plots::source_color(i + 1),
@@ -189,9 +189,9 @@ fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
 fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal_wrapped(|ui| {
         ui.label(egui::RichText::new("Estimators:").small());
-        for (i, e) in app.sim.estimators().iter().enumerate() {
+        for (i, e) in app.sim().estimators().iter().enumerate() {
             let source = i + 1;
-            let shown = !app.hidden.contains(&source);
+            let shown = !app.view().hidden.contains(&source);
             let color = if shown {
                 plots::source_color(source)
             } else {
@@ -209,7 +209,7 @@ fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ))
                 .clicked()
             {
-                commands.push(Command::ToggleSource(source));
+                commands.push(Command::from(ViewCommand::ToggleSource(source)));
             }
         }
     });
@@ -217,51 +217,51 @@ fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 /// The tab row and the options of the selected tab.
 fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let figures = app.sim.lab().figures();
-    let current = app.plots.tab;
+    let figures = app.sim().lab().figures();
+    let current = app.view().plots.tab;
     ui.horizontal_wrapped(|ui| {
         for (i, f) in figures.iter().enumerate() {
             if ui
                 .selectable_label(current == plots::Tab::Figure(i), f.title)
                 .clicked()
             {
-                commands.push(Command::SelectTab(plots::Tab::Figure(i)));
+                commands.push(Command::from(ViewCommand::SelectTab(plots::Tab::Figure(i))));
             }
         }
         if !figures.is_empty() {
             ui.separator();
         }
-        for g in plots::groups(app.sim.available_specs()) {
+        for g in plots::groups(app.sim().available_specs()) {
             if ui
                 .selectable_label(current == plots::Tab::Group(g), g.title())
                 .clicked()
             {
-                commands.push(Command::SelectTab(plots::Tab::Group(g)));
+                commands.push(Command::from(ViewCommand::SelectTab(plots::Tab::Group(g))));
             }
         }
         ui.separator();
         match current {
             plots::Tab::Group(SeriesGroup::Covariance) => {
-                let mut on = app.plots.log_covariance;
+                let mut on = app.view().plots.log_covariance;
                 if ui.checkbox(&mut on, "log10").changed() {
-                    commands.push(Command::SetLogCovariance(on));
+                    commands.push(Command::from(ViewCommand::SetLogCovariance(on)));
                 }
             }
             _ => {
-                let mut on = app.plots.show_bands;
+                let mut on = app.view().plots.show_bands;
                 if ui.checkbox(&mut on, "±3σ bands").changed() {
-                    commands.push(Command::SetShowBands(on));
+                    commands.push(Command::from(ViewCommand::SetShowBands(on)));
                 }
             }
         }
-        if !app.sim.lab().outages().is_empty() {
-            let mut on = app.plots.show_outages;
+        if !app.sim().lab().outages().is_empty() {
+            let mut on = app.view().plots.show_outages;
             if ui
                 .checkbox(&mut on, "shade outages")
                 .on_hover_text("Shade the intervals where a sensor gives nothing (every plot)")
                 .changed()
             {
-                commands.push(Command::SetShowOutages(on));
+                commands.push(Command::from(ViewCommand::SetShowOutages(on)));
             }
         }
     });
@@ -274,24 +274,29 @@ fn draw_body(
     rect: Rect,
     gpu_ready: bool,
 ) {
-    let truth = app.sim.truth().q_ref_from_body;
+    let truth = app.sim().truth().q_ref_from_body;
     let ghost = app
-        .sim
+        .sim()
         .estimates()
-        .get(app.ghost_index)
+        .get(app.view().ghost_index)
         .and_then(|e| e.quaternion())
-        .zip(app.sim.estimators().get(app.ghost_index).map(|e| e.label()));
-    let extras = app.sim.scene();
+        .zip(
+            app.sim()
+                .estimators()
+                .get(app.view().ghost_index)
+                .map(|e| e.label()),
+        );
+    let extras = app.sim().scene();
     let scene = body3d::Scene {
         truth,
         ghost,
-        suspended: app.sim.lab().suspended(),
-        shape: app.sim.lab().body_shape(),
+        suspended: app.sim().lab().suspended(),
+        shape: app.sim().lab().body_shape(),
         vectors: &extras.vectors,
         ghost_axis: app
-            .sim
+            .sim()
             .estimators()
-            .get(app.ghost_index)
+            .get(app.view().ghost_index)
             .and_then(|e| e.unobservable_axis_body()),
         orbit: extras.orbit,
     };
@@ -299,10 +304,10 @@ fn draw_body(
 }
 
 fn chart_caption(app: &AppState) -> String {
-    app.sim
+    app.sim()
         .estimators()
         .iter()
-        .zip(app.sim.estimates())
+        .zip(app.sim().estimates())
         .filter_map(|(e, est)| {
             est.attitude.wz().map(|wz| match wz.chart {
                 WzChart::North => format!("{}: chart w (projection from S)", e.id()),
@@ -315,17 +320,17 @@ fn chart_caption(app: &AppState) -> String {
 
 /// The recent trail of every source with a vertical: truth, then each estimator.
 fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
-    let rec = app.sim.recorder();
+    let rec = app.sim().recorder();
     let mut names = vec![("truth".to_string(), "truth".to_string())];
     names.extend(
-        app.sim
+        app.sim()
             .estimators()
             .iter()
             .map(|e| (e.id().to_string(), e.label().to_string())),
     );
     let mut out = Vec::new();
     for (i, (src, label)) in names.iter().enumerate() {
-        if app.hidden.contains(&i) {
+        if app.view().hidden.contains(&i) {
             continue;
         }
         let col = |q: &str| {
@@ -382,7 +387,7 @@ fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
 /// point by point to the w plane and to the sphere (so it stays right in the flipped chart).
 /// The states are found by what the covariance says they are, not by names.
 fn attach_ellipses(app: &AppState, tracks: &mut [riemann_sphere::SphereTrack]) {
-    for (e, est) in app.sim.estimators().iter().zip(app.sim.estimates()) {
+    for (e, est) in app.sim().estimators().iter().zip(app.sim().estimates()) {
         let (Some(wz), Some(cov)) = (est.attitude.wz(), e.covariance()) else {
             continue;
         };

@@ -1,7 +1,7 @@
 //! The left panel: lab picker, run controls, parameter sliders generated from the lab's
 //! parameter specs, export and the explanation.
 
-use crate::state::{AppState, Command, PngTarget};
+use crate::state::{AppState, Command, IoCommand, PngTarget, RunCommand, UrlCommand, ViewCommand};
 use attlab::labs;
 use attlab::model::{ParamKind, ParamSpec, Scale};
 use egui::{Color32, RichText, Ui};
@@ -9,7 +9,7 @@ use egui::{Color32, RichText, Ui};
 /// Draws the left panel and collects commands.
 pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     // Presenter mode: a narrow panel, so the views keep the projector's width.
-    let panel = if app.presenter {
+    let panel = if app.view().presenter {
         egui::Panel::left("controls_presenter").exact_size(230.0)
     } else {
         egui::Panel::left("controls")
@@ -23,7 +23,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             ui.separator();
             run_controls(ui, app, commands);
             ui.separator();
-            if app.presenter {
+            if app.view().presenter {
                 // For the projector: the presets carry the lesson; the sliders wait
                 // behind one click.
                 presets(ui, app, commands);
@@ -48,7 +48,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let current = app.sim.lab();
+    let current = app.sim().lab();
     egui::ComboBox::from_label("Lab")
         .selected_text(current.title())
         .width(220.0)
@@ -59,7 +59,7 @@ fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     .clicked()
                     && lab.id() != current.id()
                 {
-                    commands.push(Command::SelectLab(*lab));
+                    commands.push(Command::from(RunCommand::SelectLab(*lab)));
                 }
             }
         });
@@ -68,51 +68,51 @@ fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal_wrapped(|ui| {
-        let label = if app.playing { "Pause" } else { "▶ Play" };
+        let label = if app.run().playing { "Pause" } else { "▶ Play" };
         if ui.button(label).clicked() {
-            commands.push(Command::SetPlaying(!app.playing));
+            commands.push(Command::from(RunCommand::SetPlaying(!app.run().playing)));
         }
         if ui
-            .add_enabled(!app.playing, egui::Button::new("Step"))
+            .add_enabled(!app.run().playing, egui::Button::new("Step"))
             .clicked()
         {
-            commands.push(Command::StepOnce);
+            commands.push(Command::from(RunCommand::StepOnce));
         }
         if ui
             .button("⟲ Reset")
             .on_hover_text("Restart at t = 0 with the seed below")
             .clicked()
         {
-            commands.push(Command::Reset);
+            commands.push(Command::from(RunCommand::Reset));
         }
         if ui
-            .selectable_label(app.presenter, "Presenter")
+            .selectable_label(app.view().presenter, "Presenter")
             .on_hover_text("For a projector: large type, thick lines, the presets only (also `presenter=1` in the link)")
             .clicked()
         {
-            commands.push(Command::SetPresenter(!app.presenter));
+            commands.push(Command::from(ViewCommand::SetPresenter(!app.view().presenter)));
         }
     });
     ui.horizontal(|ui| {
         let label = ui.label("Seed");
-        let mut seed = app.seed;
+        let mut seed = app.run().seed;
         if ui
             .add(egui::DragValue::new(&mut seed).range(0..=u64::MAX))
             .labelled_by(label.id)
             .changed()
         {
-            commands.push(Command::SetSeed(seed));
+            commands.push(Command::from(RunCommand::SetSeed(seed)));
         }
         if ui
             .button("New seed")
             .on_hover_text("A random seed, then Reset")
             .clicked()
         {
-            commands.push(Command::NewSeed);
+            commands.push(Command::from(RunCommand::NewSeed));
         }
     });
     let (lo, hi) = attlab::state::SPEED_RANGE;
-    let mut speed = app.speed;
+    let mut speed = app.run().speed;
     if ui
         .add(
             egui::Slider::new(&mut speed, lo..=hi)
@@ -122,12 +122,12 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         )
         .changed()
     {
-        commands.push(Command::SetSpeed(speed));
+        commands.push(Command::from(RunCommand::SetSpeed(speed)));
     }
 }
 
 fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let presets = app.sim.lab().presets();
+    let presets = app.sim().lab().presets();
     if !presets.is_empty() {
         ui.horizontal_wrapped(|ui| {
             ui.label("Presets:");
@@ -140,7 +140,7 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     ))
                     .clicked()
                 {
-                    commands.push(Command::ApplyPreset(i));
+                    commands.push(Command::from(RunCommand::ApplyPreset(i)));
                 }
             }
         });
@@ -151,20 +151,22 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
         ui.strong("Parameters");
         if ui.small_button("defaults").clicked() {
-            commands.push(Command::RestoreDefaults);
+            commands.push(Command::from(RunCommand::RestoreDefaults));
         }
     });
-    if !app.presenter {
+    if !app.view().presenter {
         presets(ui, app, commands);
     }
-    for spec in app.sim.lab().params() {
-        let value = app.sim.params().get(spec.key);
-        let active = spec.requires.is_none_or(|k| app.sim.params().get(k) != 0.0);
+    for spec in app.sim().lab().params() {
+        let value = app.sim().params().get(spec.key);
+        let active = spec
+            .requires
+            .is_none_or(|k| app.sim().params().get(k) != 0.0);
         let changed = ui
             .add_enabled_ui(active, |ui| param_widget(ui, spec, value))
             .inner;
         if let Some(v) = changed {
-            commands.push(Command::SetParam(spec.key, v));
+            commands.push(Command::from(RunCommand::SetParam(spec.key, v)));
         }
     }
     pending_reset(ui, app, commands);
@@ -173,11 +175,11 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// A line naming the reset-only parameters that were moved and wait for Reset, with the
 /// button that applies them (until then the run goes on unchanged).
 fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let pending = app.sim.pending_reset();
+    let pending = app.sim().pending_reset();
     if pending.is_empty() {
         return;
     }
-    let specs = app.sim.lab().params();
+    let specs = app.sim().lab().params();
     let labels: Vec<&str> = pending
         .iter()
         .filter_map(|k| specs.iter().find(|s| s.key == *k).map(|s| s.label))
@@ -189,7 +191,7 @@ fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .on_hover_text("Restart from t = 0 with these values")
             .clicked()
         {
-            commands.push(Command::Reset);
+            commands.push(Command::from(RunCommand::Reset));
         }
     });
 }
@@ -244,10 +246,10 @@ fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
 
 fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let with_attitude: Vec<(usize, &str)> = app
-        .sim
+        .sim()
         .estimators()
         .iter()
-        .zip(app.sim.estimates())
+        .zip(app.sim().estimates())
         .enumerate()
         .filter(|(_, (_, est))| est.quaternion().is_some())
         .map(|(i, (e, _))| (i, e.label()))
@@ -255,14 +257,17 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if !with_attitude.is_empty() {
         let current = with_attitude
             .iter()
-            .find(|(i, _)| *i == app.ghost_index)
+            .find(|(i, _)| *i == app.view().ghost_index)
             .map_or("—", |x| x.1);
         egui::ComboBox::from_label("3D ghost")
             .selected_text(current)
             .show_ui(ui, |ui| {
                 for (i, label) in &with_attitude {
-                    if ui.selectable_label(*i == app.ghost_index, *label).clicked() {
-                        commands.push(Command::SetGhost(*i));
+                    if ui
+                        .selectable_label(*i == app.view().ghost_index, *label)
+                        .clicked()
+                    {
+                        commands.push(Command::from(ViewCommand::SetGhost(*i)));
                     }
                 }
             });
@@ -273,38 +278,38 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .on_hover_text("Every series at every step since t = 0 (the run is re-simulated exactly; empty cells are missing samples)")
             .clicked()
         {
-            commands.push(Command::ExportCsv);
+            commands.push(Command::from(IoCommand::ExportCsv));
         }
         if ui.button("Copy link").on_hover_text("A link that restores lab, seed, speed and parameters").clicked() {
-            commands.push(Command::CopyLink);
+            commands.push(Command::from(UrlCommand::CopyLink));
         }
         if ui
             .button("Copy as Python")
             .on_hover_text("A pandas + matplotlib snippet that loads the exported CSV and draws the plot tab on screen")
             .clicked()
         {
-            commands.push(Command::CopyPython);
+            commands.push(Command::from(IoCommand::CopyPython));
         }
         if ui
-            .add_enabled(!app.capturing, egui::Button::new("PNG of the plots"))
+            .add_enabled(!app.view().capturing, egui::Button::new("PNG of the plots"))
             .on_hover_text("Every plot tab at this instant, one below the other, in one PNG (key p). A view shows its own PNG button when the pointer is over it.")
             .clicked()
         {
-            commands.push(Command::ExportPng(PngTarget::Plots));
+            commands.push(Command::from(IoCommand::ExportPng(PngTarget::Plots)));
         }
     });
-    if app.sim.lab().output_file(app.sim.params()).is_some()
+    if app.sim().lab().output_file(app.sim().params()).is_some()
         && ui
             .button("Export the paper's output file")
             .on_hover_text("The paper's own rows (t, angle₁, angle₂, angle₃), re-run from t = 0 with the current parameters, ending at the first row within tolerance")
             .clicked()
     {
-        commands.push(Command::ExportOutputFile);
+        commands.push(Command::from(IoCommand::ExportOutputFile));
     }
 }
 
 fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    for (i, m) in app.messages.iter().enumerate() {
+    for (i, m) in app.messages().iter().enumerate() {
         ui.horizontal_wrapped(|ui| {
             let color = if m.is_error {
                 Color32::LIGHT_RED
@@ -323,7 +328,7 @@ fn explanation(ui: &mut Ui, app: &AppState) {
     egui::CollapsingHeader::new("What am I looking at?")
         .default_open(false)
         .show(ui, |ui| {
-            ui.label(app.sim.lab().summary());
+            ui.label(app.sim().lab().summary());
             ui.add_space(4.0);
             ui.label(RichText::new(super::keys::HELP).small().strong());
             ui.add_space(4.0);

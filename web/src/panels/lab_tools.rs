@@ -3,7 +3,7 @@
 //! their own file).
 
 use crate::render::plots::source_color;
-use crate::state::{AppState, Command};
+use crate::state::{AppState, Command, IoCommand, ViewCommand};
 use attlab::sensors::{RateUnit, TimeUnit};
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, Points};
@@ -11,7 +11,7 @@ use egui_plot::{Legend, Line, Plot, Points};
 /// The live accuracy table: each estimator's measured σ over the last window and its own
 /// √max diag P beside the paper's numbers. Clicking a row shows that estimator as the ghost.
 pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let Some((title, window_s, rows)) = app.sim.accuracy() else {
+    let Some((title, window_s, rows)) = app.sim().accuracy() else {
         return;
     };
     let cell = |x: f64| {
@@ -23,7 +23,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     };
     let paper = |x: Option<f64>| x.map_or_else(|| "—".into(), |v| format!("{v:e}"));
     egui::CollapsingHeader::new(title).default_open(true).show(ui, |ui| {
-        let covered = app.sim.t_s().min(window_s);
+        let covered = app.sim().t_s().min(window_s);
         ui.label(
             egui::RichText::new(format!(
                 "σ: largest per-axis RMS error against the truth over the last {covered:.0} s of {window_s:.0} s (mean included); √P: the filter's own √max diag P now (the paper's metric). Click a row to show that filter as the ghost."
@@ -37,12 +37,12 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 }
                 ui.end_row();
                 for (i, r) in rows.iter().enumerate() {
-                    let selected = app.ghost_index == i;
+                    let selected = app.view().ghost_index == i;
                     // Row i is estimator i (source i + 1): its colour, as in every plot.
                     ui.horizontal(|ui| {
                         ui.label(egui::RichText::new("●").small().color(source_color(i + 1)));
                         if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
-                            commands.push(Command::SetGhost(i));
+                            commands.push(Command::from(ViewCommand::SetGhost(i)));
                         }
                     });
                     for text in [
@@ -89,9 +89,9 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
                 // A point of an estimator takes its colour and hides with it.
                 let source = p
                     .source
-                    .and_then(|id| app.sim.estimators().iter().position(|e| e.id() == id))
+                    .and_then(|id| app.sim().estimators().iter().position(|e| e.id() == id))
                     .map(|i| i + 1);
-                if source.is_some_and(|s| app.hidden.contains(&s)) {
+                if source.is_some_and(|s| app.view().hidden.contains(&s)) {
                     continue;
                 }
                 let color = source.map_or(egui::Color32::LIGHT_GRAY, source_color);
@@ -106,39 +106,39 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
 
 /// Loading a recorded gyro log (CSV: time, rate) for labs that accept one.
 pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    if app.sim.lab().accepts_imu_log() {
+    if app.sim().lab().accepts_imu_log() {
         return imu_log(ui, app, commands);
     }
-    if !app.sim.lab().accepts_rate_log() {
+    if !app.sim().lab().accepts_rate_log() {
         return;
     }
     egui::CollapsingHeader::new("Laboratory mode: recorded gyro log").default_open(false).show(ui, |ui| {
         ui.label("CSV lines `time, rate` (comma, semicolon, tab or space separated). Bad lines are listed with their numbers and skipped.");
         ui.horizontal(|ui| {
-            let (rate, time) = app.log_units;
+            let (rate, time) = app.io().log_units;
             egui::ComboBox::from_label("rate").selected_text(unit_name(rate)).show_ui(ui, |ui| {
                 for (u, name) in RateUnit::ALL {
                     if ui.selectable_label(u == rate, name).clicked() {
-                        commands.push(Command::SetLogUnits(u, time));
+                        commands.push(Command::from(IoCommand::SetLogUnits(u, time)));
                     }
                 }
             });
             egui::ComboBox::from_label("time").selected_text(if time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
                 for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
                     if ui.selectable_label(t == time, name).clicked() {
-                        commands.push(Command::SetLogUnits(rate, t));
+                        commands.push(Command::from(IoCommand::SetLogUnits(rate, t)));
                     }
                 }
             });
         });
         ui.horizontal(|ui| {
             if ui.button("Load gyro log…").clicked() {
-                commands.push(Command::LoadLog);
+                commands.push(Command::from(IoCommand::LoadLog));
             }
-            if let Some((name, n)) = &app.replaying {
+            if let Some((name, n)) = &app.io().replaying {
                 ui.label(format!("replaying {name} ({n} samples)"));
                 if ui.button("Back to simulation").clicked() {
-                    commands.push(Command::EndReplay);
+                    commands.push(Command::from(IoCommand::EndReplay));
                 }
             }
         });
@@ -161,13 +161,13 @@ fn imu_log(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
              banner lines before the header and bad lines are listed with their numbers and skipped. \
              The roll axis is x: rate gx, angle atan2(ay, az). Defaults: the chip's power-on ranges in counts, time in ms.",
         );
-        let s = app.imu_scales;
+        let s = app.io().imu_scales;
         ui.horizontal_wrapped(|ui| {
             let name_of = |all: &[(AccelUnit, &'static str)], u: AccelUnit| all.iter().find(|(x, _)| *x == u).map_or("?", |(_, n)| *n);
             egui::ComboBox::from_label("accel").selected_text(name_of(&AccelUnit::ALL, s.accel)).show_ui(ui, |ui| {
                 for (u, name) in AccelUnit::ALL {
                     if ui.selectable_label(u == s.accel, name).clicked() {
-                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { accel: u, ..s }));
+                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { accel: u, ..s })));
                     }
                 }
             });
@@ -175,29 +175,34 @@ fn imu_log(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             egui::ComboBox::from_label("gyro").selected_text(gyro_name).show_ui(ui, |ui| {
                 for (u, name) in GyroUnit::ALL {
                     if ui.selectable_label(u == s.gyro, name).clicked() {
-                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { gyro: u, ..s }));
+                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { gyro: u, ..s })));
                     }
                 }
             });
             egui::ComboBox::from_label("time").selected_text(if s.time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
                 for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
                     if ui.selectable_label(t == s.time, name).clicked() {
-                        commands.push(Command::SetImuScales(attlab::sensors::ImuScales { time: t, ..s }));
+                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { time: t, ..s })));
                     }
                 }
             });
         });
         ui.horizontal_wrapped(|ui| {
             if ui.button("Load MPU-6050 log…").clicked() {
-                commands.push(Command::LoadLog);
+                commands.push(Command::from(IoCommand::LoadLog));
             }
-            if ui.button("Replay the example log").clicked() {
-                commands.push(Command::LoadExampleLog);
+            if let Some(example) = app.sim().lab().example_log()
+                && ui
+                    .button("Replay the example log")
+                    .on_hover_text(example.name)
+                    .clicked()
+            {
+                commands.push(Command::from(IoCommand::LoadExampleLog));
             }
-            if let Some((name, n)) = &app.replaying {
+            if let Some((name, n)) = &app.io().replaying {
                 ui.label(format!("replaying {name} ({n} samples)"));
                 if ui.button("Back to simulation").clicked() {
-                    commands.push(Command::EndReplay);
+                    commands.push(Command::from(IoCommand::EndReplay));
                 }
             }
         });

@@ -20,14 +20,14 @@ use attlab::model::EstimatorStatus;
 pub fn status_line(ui: &mut egui::Ui, app: &AppState) {
     egui::Panel::bottom("status").show(ui, |ui| {
         ui.horizontal_wrapped(|ui| {
-            let s = &app.stats;
-            let rec = app.sim.recorder();
+            let s = &app.run().stats;
+            let rec = app.sim().recorder();
             ui.monospace(format!(
                 "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s (×{} requested) · frame {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
-                app.sim.t_s(),
-                app.sim.dt_s() * 1e3,
+                app.sim().t_s(),
+                app.sim().dt_s() * 1e3,
                 s.steps_per_s,
-                app.speed,
+                app.run().speed,
                 s.frame_ms,
                 s.step_ms,
                 rec.memory_bytes() as f64 / f64::from(1 << 20),
@@ -36,7 +36,7 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState) {
             if s.behind {
                 ui.colored_label(egui::Color32::YELLOW, "· behind real time: lower the speed");
             }
-            for (e, status) in app.sim.estimators().iter().zip(app.sim.statuses()) {
+            for (e, status) in app.sim().estimators().iter().zip(app.sim().statuses()) {
                 match status {
                     EstimatorStatus::Ok => {}
                     EstimatorStatus::Diverged(why) => {

@@ -4,7 +4,7 @@
 //! with the lab's lines over it and the optimum marked (paper 4's Q landscape).
 
 use crate::render::plots::source_color;
-use crate::state::{AppState, Command};
+use crate::state::{AppState, Command, RunCommand};
 use attlab::analysis::sweep::{Sweep, SweepPoint};
 use attlab::model::{SweepSpec, fmt_sig};
 use egui::{Color32, RichText, Ui};
@@ -12,11 +12,16 @@ use egui_plot::{Heatmap, Legend, Line, Plot, PlotPoint, Points, Text};
 
 /// The lab's sweeps.
 pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    for (i, spec) in app.sim.lab().sweeps().iter().enumerate() {
+    for (i, spec) in app.sim().lab().sweeps().iter().enumerate() {
         egui::CollapsingHeader::new(format!("Sweep: {}", spec.title))
             .default_open(true)
             .show(ui, |ui| {
-                let running = app.sweep.as_ref().filter(|(j, _)| *j == i).map(|(_, s)| s);
+                let running = app
+                    .run()
+                    .sweep
+                    .as_ref()
+                    .filter(|(j, _)| *j == i)
+                    .map(|(_, s)| s);
                 controls(ui, app, spec, i, running, commands);
                 let Some(s) = running else { return };
                 problems(ui, s);
@@ -40,7 +45,7 @@ fn controls(
     running: Option<&Sweep>,
     commands: &mut Vec<Command>,
 ) {
-    let on_log = app.sim.replay_log().is_some() && spec.log_scoring.is_some();
+    let on_log = app.sim().replay_log().is_some() && spec.log_scoring.is_some();
     match running {
         Some(s) if !s.is_done() => {
             ui.horizontal(|ui| {
@@ -50,7 +55,7 @@ fn controls(
                         .desired_width(180.0),
                 );
                 if ui.button("Cancel").clicked() {
-                    commands.push(Command::CancelSweep);
+                    commands.push(Command::from(RunCommand::CancelSweep));
                 }
             });
         }
@@ -67,7 +72,7 @@ fn controls(
                 )
             };
             if ui.button(label).on_hover_text(hover).clicked() {
-                commands.push(Command::RunSweep(i));
+                commands.push(Command::from(RunCommand::RunSweep(i)));
             }
         }
     }
@@ -325,7 +330,7 @@ fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let (y0, y1) = (ly[0] - dy / 2.0, ly[ly.len() - 1] + dy / 2.0);
     let lines = scoring
         .overlay
-        .map_or_else(Vec::new, |f| f(app.sim.params()));
+        .map_or_else(Vec::new, |f| f(app.sim().params()));
     Plot::new(("sweep_heat", i))
         .height(260.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))

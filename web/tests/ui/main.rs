@@ -6,6 +6,7 @@
 use attlab::labs;
 use attlab::model::ParamValues;
 use attlab_web::AttLabApp;
+use attlab_web::state::{IoCommand, RunCommand};
 use egui::accesskit::{Action, ActionData, ActionRequest, Role};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -15,7 +16,7 @@ mod png;
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
     let mut app = AttLabApp::with_state(lab, ParamValues::defaults(lab.params()), 1, 1.0);
-    app.state.playing = false;
+    app.apply(RunCommand::SetPlaying(false).into());
     // The app's own fonts: a label with a glyph no font has fails the test (egui_kittest
     // refuses to draw tofu), so a missing symbol in any label is caught here.
     Harness::builder()
@@ -29,7 +30,8 @@ fn harness_saving(lab_id: &str, tag: &str) -> (Harness<'static, AttLabApp>, std:
     let dir = std::env::temp_dir().join(format!("attlab-ui-{tag}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut h = harness(lab_id);
-    h.state_mut().state.save_dir = Some(dir.clone());
+    h.state_mut()
+        .apply(IoCommand::SetSaveDir(Some(dir.clone())).into());
     (h, dir)
 }
 
@@ -41,7 +43,7 @@ fn switching_the_lab_from_the_picker() {
     h.get_by_label("Paper 1: suspended mock-up, one-axis gyro")
         .click();
     h.run();
-    assert_eq!(h.state().state.sim.lab().id(), "p1");
+    assert_eq!(h.state().state.sim().lab().id(), "p1");
     // The new lab's parameters are on the panel.
     assert!(
         h.query_by_role_and_label(Role::Slider, "Adaptation window N")
@@ -53,7 +55,7 @@ fn switching_the_lab_from_the_picker() {
 fn moving_a_slider_changes_the_parameter_live() {
     let mut h = harness("free-rotation");
     for _ in 0..5 {
-        h.state_mut().state.sim.step();
+        h.state_mut().apply(RunCommand::StepOnce.into());
     }
     let (target_node, target_tree) = h
         .get_by_role_and_label(Role::Slider, "Gyro noise σ")
@@ -66,7 +68,7 @@ fn moving_a_slider_changes_the_parameter_live() {
         data: Some(ActionData::NumericValue(0.5)),
     }));
     h.run();
-    let sim = &h.state().state.sim;
+    let sim = &h.state().state.sim();
     assert_eq!(sim.params().get("gyro_noise_deg_s"), 0.5);
     assert_eq!(sim.steps(), 5, "a live change does not restart the run");
 }
@@ -75,18 +77,18 @@ fn moving_a_slider_changes_the_parameter_live() {
 fn reset_restarts_at_zero() {
     let mut h = harness("p3");
     for _ in 0..50 {
-        h.state_mut().state.sim.step();
+        h.state_mut().apply(RunCommand::StepOnce.into());
     }
     h.get_by_label("⟲ Reset").click();
     h.run();
-    assert_eq!(h.state().state.sim.steps(), 0);
+    assert_eq!(h.state().state.sim().steps(), 0);
 }
 
 #[test]
 fn export_writes_every_sample_of_the_run() {
     let (mut h, dir) = harness_saving("p1", "export");
     for _ in 0..200 {
-        h.state_mut().state.sim.step();
+        h.state_mut().apply(RunCommand::StepOnce.into());
     }
     h.get_by_label("Export CSV").scroll_to_me();
     h.run();
@@ -98,7 +100,7 @@ fn export_writes_every_sample_of_the_run() {
     assert!(
         h.state()
             .state
-            .messages
+            .messages()
             .iter()
             .any(|m| !m.is_error && m.text.contains("201 rows"))
     );
@@ -123,6 +125,7 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
     let (i, _) = h
         .state()
         .state
+        .run()
         .sweep
         .as_ref()
         .map(|(i, s)| (*i, s.is_done()))
@@ -131,13 +134,13 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
     while !h
         .state()
         .state
+        .run()
         .sweep
         .as_ref()
         .is_some_and(|(_, s)| s.is_done())
     {
         h.state_mut()
-            .state
-            .advance_sweep(std::time::Duration::from_millis(50));
+            .apply(RunCommand::AdvanceSweep(std::time::Duration::from_millis(50)).into());
     }
     h.run_steps(4);
     for pair in [
@@ -151,7 +154,7 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
             "no '{label}' on the panel"
         );
     }
-    let sweep = &h.state().state.sweep.as_ref().unwrap().1;
+    let sweep = &h.state().state.run().sweep.as_ref().unwrap().1;
     assert_eq!(sweep.points.len(), 11);
     assert!(
         sweep
@@ -216,34 +219,38 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
     h.run();
     h.key_press(egui::Key::Space);
     h.run();
-    assert!(h.state().state.playing, "space resumes");
+    assert!(h.state().state.run().playing, "space resumes");
     h.key_press(egui::Key::Space);
     h.run();
-    assert!(!h.state().state.playing, "space pauses");
-    let steps = h.state().state.sim.steps();
+    assert!(!h.state().state.run().playing, "space pauses");
+    let steps = h.state().state.sim().steps();
     h.key_press(egui::Key::S);
     h.run();
-    assert_eq!(h.state().state.sim.steps(), steps + 1, "s steps once");
-    let tab = h.state().state.plots.tab;
+    assert_eq!(h.state().state.sim().steps(), steps + 1, "s steps once");
+    let tab = h.state().state.view().plots.tab;
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    assert_ne!(h.state().state.plots.tab, tab, "→ selects the next tab");
+    assert_ne!(
+        h.state().state.view().plots.tab,
+        tab,
+        "→ selects the next tab"
+    );
     h.key_press(egui::Key::ArrowLeft);
     h.run();
-    assert_eq!(h.state().state.plots.tab, tab, "← goes back");
-    let views = h.state().state.sim.lab().views().len();
+    assert_eq!(h.state().state.view().plots.tab, tab, "← goes back");
+    let views = h.state().state.sim().lab().views().len();
     let mut seen = Vec::new();
     for _ in 0..=views + 1 {
         h.key_press(egui::Key::F);
         h.run();
-        seen.push(h.state().state.focus);
+        seen.push(h.state().state.view().focus);
     }
     let mut expected: Vec<Focus> = (0..views).map(Focus::View).collect();
     expected.extend([Focus::Plots, Focus::All]);
     assert_eq!(seen, expected);
     // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
     assert_eq!(
-        h.state().state.sim.lab().views(),
+        h.state().state.sim().lab().views(),
         attlab::model::SINGLE_AXIS_VIEWS
     );
 }
@@ -260,7 +267,7 @@ fn presenter_mode_hides_the_sliders_and_goes_into_the_link() {
     );
     h.get_by_label("Presenter").click();
     h.run();
-    assert!(h.state().state.presenter);
+    assert!(h.state().state.view().presenter);
     assert!(
         h.query_by_role_and_label(Role::Slider, "Sample rate")
             .is_none(),
@@ -273,7 +280,7 @@ fn presenter_mode_hides_the_sliders_and_goes_into_the_link() {
     assert!(h.state().state.fragment().contains("presenter=1"));
     h.get_by_label("Presenter").click();
     h.run();
-    assert!(!h.state().state.presenter);
+    assert!(!h.state().state.view().presenter);
 }
 
 /// "Copy as Python" puts a snippet for the plot on screen on the clipboard.
@@ -304,22 +311,22 @@ fn an_estimator_chip_hides_and_shows_it() {
     h.get_by_label_contains("● cf").click();
     h.run();
     assert_eq!(
-        h.state().state.hidden,
+        h.state().state.view().hidden,
         vec![2],
         "cf is the second estimator: source 2"
     );
     h.get_by_label_contains("● cf").click();
     h.run();
-    assert!(h.state().state.hidden.is_empty());
+    assert!(h.state().state.view().hidden.is_empty());
 }
 
 #[test]
 fn a_reset_only_slider_waits_for_reset_and_says_so() {
     let mut h = harness("p1");
     for _ in 0..5 {
-        h.state_mut().state.sim.step();
+        h.state_mut().apply(RunCommand::StepOnce.into());
     }
-    let dt_s = h.state().state.sim.dt_s();
+    let dt_s = h.state().state.sim().dt_s();
     let (target_node, target_tree) = h
         .get_by_role_and_label(Role::Slider, "Gyro output rate")
         .accesskit_node()
@@ -331,7 +338,7 @@ fn a_reset_only_slider_waits_for_reset_and_says_so() {
         data: Some(ActionData::NumericValue(300.0)),
     }));
     h.run();
-    let sim = &h.state().state.sim;
+    let sim = &h.state().state.sim();
     assert_eq!(sim.params().get("input_rate_hz"), 300.0);
     assert_eq!(
         (sim.steps(), sim.dt_s()),
@@ -341,7 +348,7 @@ fn a_reset_only_slider_waits_for_reset_and_says_so() {
     h.get_by_label("Waiting for Reset: Gyro output rate.");
     h.get_by_label("Reset now").click();
     h.run();
-    let sim = &h.state().state.sim;
+    let sim = &h.state().state.sim();
     assert_eq!(sim.steps(), 0);
     assert_eq!(sim.applied_params().get("input_rate_hz"), 300.0);
     assert!(h.query_by_label("Reset now").is_none());
@@ -354,11 +361,11 @@ fn every_labs_legend_shows_human_labels_with_units() {
     for lab in labs::all() {
         let mut h = harness(lab.id());
         for _ in 0..20 {
-            h.state_mut().state.sim.step();
+            h.state_mut().apply(RunCommand::StepOnce.into());
         }
         h.run();
         let tab = attlab::sim::default_tab(*lab);
-        let sim = &h.state().state.sim;
+        let sim = &h.state().state.sim();
         let shown: Vec<&attlab::model::SeriesSpec> = match tab {
             attlab::model::PlotTab::Figure(i) => lab.figures()[i]
                 .series

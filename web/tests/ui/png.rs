@@ -4,6 +4,7 @@
 use super::{harness, harness_saving};
 use attlab::labs;
 use attlab_web::AttLabApp;
+use attlab_web::state::RunCommand;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
@@ -39,13 +40,13 @@ fn run_capture(
 fn key_p_saves_every_plot_tab_stacked_in_one_png() {
     let (mut h, dir) = harness_saving("p1", "png");
     for _ in 0..100 {
-        h.state_mut().state.sim.step();
+        h.state_mut().apply(RunCommand::StepOnce.into());
     }
     h.run();
-    let start_tab = h.state().state.plots.tab;
+    let start_tab = h.state().state.view().plots.tab;
     let all_tabs = attlab_web::panels::tabs(&h.state().state);
     assert!(all_tabs.len() >= 3, "p1 has several plot tabs");
-    h.state_mut().state.playing = true;
+    h.state_mut().apply(RunCommand::SetPlaying(true).into());
     h.key_press(egui::Key::P);
     let (w, hgt) = (1400usize, 900usize);
     let frame_image = egui::ColorImage::new(
@@ -60,20 +61,24 @@ fn key_p_saves_every_plot_tab_stacked_in_one_png() {
         h.state_mut().capture_mut().is_some(),
         "key p starts a capture"
     );
-    let mut seen = vec![h.state().state.plots.tab];
-    let steps = h.state().state.sim.steps();
+    let mut seen = vec![h.state().state.view().plots.tab];
+    let steps = h.state().state.sim().steps();
     run_capture(&mut h, &frame_image, 200, |app| {
-        if seen.last() != Some(&app.state.plots.tab) {
-            seen.push(app.state.plots.tab);
+        if seen.last() != Some(&app.state.view().plots.tab) {
+            seen.push(app.state.view().plots.tab);
         }
     });
     let app = h.state();
     assert_eq!(
-        app.state.sim.steps(),
+        app.state.sim().steps(),
         steps,
         "the simulation holds during the capture"
     );
-    assert_eq!(app.state.plots.tab, start_tab, "the user's tab comes back");
+    assert_eq!(
+        app.state.view().plots.tab,
+        start_tab,
+        "the user's tab comes back"
+    );
     // The user's tab, every tab in order, the user's tab again (a tab already on screen is
     // not shown twice in a row).
     let mut expected = vec![start_tab];
@@ -104,7 +109,7 @@ fn key_p_saves_every_plot_tab_stacked_in_one_png() {
     assert_eq!(buf[0], 200, "top-left pixel {:?}", &buf[0..4]);
     assert!(
         app.state
-            .messages
+            .messages()
             .iter()
             .any(|m| !m.is_error && m.text.contains("pixels")),
         "a message says where the PNG went"
@@ -152,19 +157,19 @@ fn switching_the_lab_stops_a_png_capture() {
         "key p starts a capture"
     );
     let free = labs::find("free-rotation").expect("registered");
-    h.state_mut()
-        .state
-        .apply(attlab_web::state::Command::SelectLab(free));
+    h.state_mut().apply(attlab_web::state::Command::from(
+        attlab_web::state::RunCommand::SelectLab(free),
+    ));
     h.run();
     let app = h.state_mut();
     assert!(app.capture_mut().is_none(), "the capture stopped");
     assert!(
         app.state
-            .messages
+            .messages()
             .iter()
             .any(|m| m.is_error && m.text.contains("the lab changed")),
         "a message says why"
     );
-    assert_eq!(app.state.sim.lab().id(), "free-rotation");
-    assert!(attlab_web::panels::tabs(&app.state).contains(&app.state.plots.tab));
+    assert_eq!(app.state.sim().lab().id(), "free-rotation");
+    assert!(attlab_web::panels::tabs(&app.state).contains(&app.state.view().plots.tab));
 }

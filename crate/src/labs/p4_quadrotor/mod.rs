@@ -10,8 +10,8 @@ mod tuning;
 
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning, roll_keys};
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError, Reproduction,
-    SINGLE_AXIS_VIEWS, SweepSpec, ViewKind,
+    Estimator, ExampleLog, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError,
+    Reproduction, SINGLE_AXIS_VIEWS, SweepSpec, ViewKind,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -268,5 +268,14 @@ impl Lab for QuadrotorRoll {
 
     fn accepts_imu_log(&self) -> bool {
         true
+    }
+
+    fn example_log(&self) -> Option<ExampleLog> {
+        // Synthetic (assets/make_p4_log.py): a lever's 20° steps with datasheet noise and a
+        // 0.5 °/s gyro offset, in raw counts.
+        Some(ExampleLog {
+            name: "p4-arduino-mpu6050.csv",
+            text: include_str!("../../../../assets/p4-arduino-mpu6050.csv"),
+        })
     }
 }

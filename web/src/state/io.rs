@@ -1,0 +1,220 @@
+//! The I/O part: recorded logs replayed through the lab's estimators (the file picked,
+//! its units, the lab's example log) and the exports (every sample as CSV, the paper's own
+//! output file, a Python snippet, PNGs).
+
+use super::{AppState, Effect, PngTarget, run::simulation};
+use crate::platform;
+use attlab::model::PlotTab;
+use attlab::sensors::{ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log};
+use attlab::sim::{SimOptions, Simulation};
+
+/// Logs to load and where exports go.
+pub struct IoState {
+    /// Units of a gyro log to load.
+    pub log_units: (RateUnit, TimeUnit),
+    /// Units of an IMU log to load.
+    pub imu_scales: ImuScales,
+    /// Name and sample count of the log being replayed.
+    pub replaying: Option<(String, usize)>,
+    /// Where exports go without a dialog (desktop scripting and tests); `None` asks.
+    pub save_dir: Option<std::path::PathBuf>,
+    file_slot: platform::FileSlot,
+}
+
+impl Default for IoState {
+    fn default() -> Self {
+        Self {
+            log_units: (RateUnit::DegPerS, TimeUnit::Seconds),
+            imu_scales: ImuScales::default(),
+            replaying: None,
+            save_dir: None,
+            file_slot: platform::FileSlot::default(),
+        }
+    }
+}
+
+impl IoState {
+    /// Keeps where exports go and a log being picked from `old` (a link loaded).
+    pub(super) fn keep_from(&mut self, old: &mut IoState) {
+        self.save_dir = old.save_dir.take();
+        self.file_slot = std::mem::take(&mut old.file_slot);
+    }
+}
+
+/// What the I/O part does.
+#[derive(Clone, Debug, PartialEq)]
+pub enum IoCommand {
+    /// Save every sample of the run so far as CSV.
+    ExportCsv,
+    /// Save the paper's own output file (labs that define one).
+    ExportOutputFile,
+    /// Ask for a log file to replay.
+    LoadLog,
+    /// Take the picked log if it arrived (the frame loop asks every frame).
+    TakePickedLog,
+    /// Leave the replay and simulate again.
+    EndReplay,
+    /// Units of the gyro log to load.
+    SetLogUnits(RateUnit, TimeUnit),
+    /// Units of the IMU log to load (paper 4).
+    SetImuScales(ImuScales),
+    /// Replay the log the lab ships.
+    LoadExampleLog,
+    /// Copy a pandas snippet that loads the exported CSV and draws the current plot tab.
+    CopyPython,
+    /// Save a PNG of a view or of every plot tab (taken by the app over the next frames).
+    ExportPng(PngTarget),
+    /// Save exports into this folder without asking (desktop scripting and tests).
+    SetSaveDir(Option<std::path::PathBuf>),
+}
+
+impl AppState {
+    pub(super) fn apply_io(&mut self, command: IoCommand) -> Option<Effect> {
+        match command {
+            IoCommand::ExportCsv => self.export_csv(),
+            IoCommand::ExportOutputFile => self.export_output_file(),
+            IoCommand::LoadLog => platform::pick_text_file(&self.io.file_slot),
+            IoCommand::TakePickedLog => self.take_picked_log(),
+            IoCommand::EndReplay => {
+                self.io.replaying = None;
+                let (lab, params) = (self.sim.lab(), self.sim.params().clone());
+                self.sim.release_recorder();
+                self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+            }
+            IoCommand::SetLogUnits(rate, time) => self.io.log_units = (rate, time),
+            IoCommand::SetImuScales(scales) => self.io.imu_scales = scales,
+            IoCommand::LoadExampleLog => match self.sim.lab().example_log() {
+                Some(log) => self.start_replay(log.name.into(), log.text),
+                None => self.error("this lab ships no example log"),
+            },
+            IoCommand::CopyPython => {
+                self.info(
+                    "copied: a Python snippet that loads the exported CSV and draws this plot",
+                );
+                return Some(Effect::Clipboard(self.python_snippet()));
+            }
+            IoCommand::ExportPng(target) => return Some(Effect::Png(target)),
+            IoCommand::SetSaveDir(dir) => self.io.save_dir = dir,
+        }
+        None
+    }
+
+    /// Takes a picked log, if one arrived, and starts replaying it (bad lines are listed as
+    /// messages with their line numbers; the good ones are used).
+    fn take_picked_log(&mut self) {
+        let Some(picked) = self.io.file_slot.borrow_mut().take() else {
+            return;
+        };
+        match picked {
+            Ok((name, text)) => self.start_replay(name, &text),
+            Err(e) => self.error(e),
+        }
+    }
+
+    /// Parses `text` as the lab's kind of log and replays it.
+    fn start_replay(&mut self, name: String, text: &str) {
+        let log = if self.sim.lab().accepts_imu_log() {
+            parse_imu_log(text, self.io.imu_scales)
+        } else {
+            parse_rate_log(text, self.io.log_units.0, self.io.log_units.1)
+        };
+        const SHOWN: usize = 12;
+        for e in log.errors.iter().take(SHOWN) {
+            self.error(format!("{name}: skipped {e}"));
+        }
+        if log.errors.len() > SHOWN {
+            let more = log.errors.len() - SHOWN;
+            self.error(format!("{name}: … and {more} more bad lines"));
+        }
+        let samples = log.t_s.len();
+        let (lab, params) = (self.sim.lab(), self.sim.params().clone());
+        match Simulation::replay(lab, params, log, SimOptions::default()) {
+            Ok(sim) => {
+                self.sim = sim;
+                self.run.sweep = None;
+                self.info(format!("{name}: replaying {samples} samples"));
+                self.io.replaying = Some((name, samples));
+            }
+            Err(e) => self.error(format!("{name}: {e}")),
+        }
+    }
+
+    /// Saves `bytes` as `name`, with `what` after the saved path in the message.
+    fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, String>) {
+        let message = result.and_then(|what| {
+            platform::save_file(name, "text/csv", bytes, self.io.save_dir.as_deref())
+                .map(|m| format!("{m} ({what})"))
+        });
+        match message {
+            Ok(m) => self.info(m),
+            Err(e) => self.error(format!("export failed: {e}")),
+        }
+    }
+
+    fn export_csv(&mut self) {
+        let mut buf = Vec::new();
+        let result = self
+            .sim
+            .export_csv(&mut buf)
+            .map(|rows| format!("{rows} rows, every sample, re-run from t = 0"));
+        let name = self.csv_name();
+        self.save(&name, buf, result);
+    }
+
+    fn export_output_file(&mut self) {
+        let lab = self.sim.lab();
+        let Some(file) = lab.output_file(self.sim.params()) else {
+            return self.error("this lab has no output file of its paper");
+        };
+        let mut buf = Vec::new();
+        let duration = self.sim.t_s().max(lab.default_duration_s());
+        let seed = self.run.seed;
+        let name = format!("attlab-{}-output-seed{seed}.csv", lab.id());
+        let params = self.sim.params().clone();
+        let result = attlab::sim::write_output_file(lab, params, seed, duration, &file, &mut buf)
+            .map(|(rows, stopped)| {
+                let tail = if stopped {
+                    ", to the first row within tolerance"
+                } else {
+                    ""
+                };
+                format!("{rows} rows{tail}")
+            });
+        self.save(&name, buf, result);
+    }
+
+    /// The CSV file name "Export CSV" saves under.
+    pub fn csv_name(&self) -> String {
+        format!("attlab-{}-seed{}.csv", self.sim.lab().id(), self.sim.seed())
+    }
+
+    /// "Copy as Python" for the plot tab on screen.
+    pub fn python_snippet(&self) -> String {
+        let lab = self.sim.lab();
+        let available = self.sim.available_specs();
+        let header = |name: &str| {
+            available
+                .iter()
+                .find(|s| s.name == name)
+                .map(|s| s.header())
+        };
+        let (title, columns, log) = match self.view.plots.tab {
+            PlotTab::Figure(f) if f < lab.figures().len() => {
+                let fig = &lab.figures()[f];
+                let cols = fig.series.iter().filter_map(|n| header(n)).collect();
+                (fig.title.to_string(), cols, fig.log)
+            }
+            PlotTab::Figure(_) => (String::new(), Vec::new(), false),
+            PlotTab::Group(g) => (
+                g.title().to_string(),
+                available
+                    .iter()
+                    .filter(|s| s.group == g)
+                    .map(|s| s.header())
+                    .collect(),
+                self.view.plots.log_covariance && g == attlab::model::SeriesGroup::Covariance,
+            ),
+        };
+        crate::python::snippet(&self.csv_name(), &title, &columns, log)
+    }
+}

@@ -1,0 +1,215 @@
+//! The app's state and the one place that changes it. Panels read [`AppState`] and emit
+//! [`Command`]s; [`AppState::apply`] carries them out after the frame is drawn. The state is
+//! in parts, each owning its commands: the run ([`run`]: the simulation, the clock, sweeps),
+//! the view ([`view`]: tab, focus, hidden sources, presenter mode), I/O ([`io`]: logs,
+//! exports) and the link ([`url`]). Nothing outside `apply` changes it: the parts are read
+//! through `&` accessors, and what the app must do outside the state (copy to the
+//! clipboard, make a PNG) comes back from `apply` as an [`Effect`].
+//!
+//! View state that only a widget cares about (camera angles, the sphere's orientation)
+//! lives in [`View`] and is handed `&mut` to the widget that owns it, as egui does with a
+//! slider's value.
+
+mod io;
+mod run;
+mod url;
+mod view;
+
+pub use io::{IoCommand, IoState};
+pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
+pub use url::UrlCommand;
+pub use view::{Focus, ViewCommand, ViewState, view_selection};
+
+use crate::render::{body3d, riemann_sphere, single_axis};
+use attlab::model::{Lab, ParamValues};
+use attlab::sim::Simulation;
+use attlab::state::UrlState;
+
+/// A message for the user (bad URL item, export result, divergence).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Message {
+    /// Text shown.
+    pub text: String,
+    /// Shown in red.
+    pub is_error: bool,
+}
+
+impl Message {
+    /// An error message.
+    pub fn error(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            is_error: true,
+        }
+    }
+
+    /// An information message.
+    pub fn info(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            is_error: false,
+        }
+    }
+}
+
+/// What a panel (or the frame loop) asks the state to do, applied in order: a command of
+/// one of the parts, or a message to show.
+#[derive(Clone)]
+pub enum Command {
+    /// The run: lab, parameters, clock, sweeps.
+    Run(RunCommand),
+    /// What is shown and how.
+    View(ViewCommand),
+    /// Logs and exports.
+    Io(IoCommand),
+    /// The link.
+    Url(UrlCommand),
+    /// Show this message.
+    Notify(Message),
+    /// Remove message `i`.
+    Dismiss(usize),
+}
+
+impl From<RunCommand> for Command {
+    fn from(c: RunCommand) -> Self {
+        Self::Run(c)
+    }
+}
+
+impl From<ViewCommand> for Command {
+    fn from(c: ViewCommand) -> Self {
+        Self::View(c)
+    }
+}
+
+impl From<IoCommand> for Command {
+    fn from(c: IoCommand) -> Self {
+        Self::Io(c)
+    }
+}
+
+impl From<UrlCommand> for Command {
+    fn from(c: UrlCommand) -> Self {
+        Self::Url(c)
+    }
+}
+
+/// What the app must do outside the state after a command.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Effect {
+    /// Put this text on the clipboard.
+    Clipboard(String),
+    /// Make a PNG of this (the app captures it over the next frames).
+    Png(PngTarget),
+}
+
+/// What a PNG export shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PngTarget {
+    /// The lab's view with this index (in `Lab::views()`).
+    View(usize),
+    /// Every plot tab, one below the other.
+    Plots,
+}
+
+/// Widget-owned view state: the camera and the sphere change by dragging; the phase
+/// trails remember what the views drew (never read by the simulation).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct View {
+    /// 3D camera.
+    pub camera: body3d::OrbitCamera,
+    /// Sphere orientation.
+    pub sphere: riemann_sphere::SphereView,
+    /// Phase-portrait trails of a single-axis lab.
+    pub trails: single_axis::PhaseTrails,
+}
+
+/// Everything the panels read.
+pub struct AppState {
+    sim: Simulation,
+    run: RunState,
+    view: ViewState,
+    io: IoState,
+    url: url::UrlSync,
+    messages: Vec<Message>,
+}
+
+impl AppState {
+    /// A state for `lab` with `params`, `seed` and `speed`.
+    pub fn new(lab: &'static dyn Lab, params: ParamValues, seed: u64, speed: f64) -> Self {
+        let view = ViewState::for_lab(lab);
+        Self {
+            sim: run::simulation(lab, params, seed, view.plots.tab),
+            run: RunState::new(seed, speed),
+            view,
+            io: IoState::default(),
+            url: url::UrlSync::default(),
+            messages: Vec::new(),
+        }
+    }
+
+    /// The state a URL fragment asks for; its bad items become messages.
+    pub fn from_fragment(fragment: &str) -> Self {
+        let (url, errors) = UrlState::parse(fragment);
+        let lab = attlab::labs::find(url.lab_id).unwrap_or(attlab::labs::all()[0]);
+        let mut state = Self::new(lab, url.params, url.seed, url.speed);
+        state.view.presenter = url.presenter;
+        state.messages.extend(
+            errors
+                .into_iter()
+                .map(|e| Message::error(format!("{e} — ignored"))),
+        );
+        state
+    }
+
+    /// The running simulation.
+    pub fn sim(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// The run: seed, clock, speed, statistics, the sweep.
+    pub fn run(&self) -> &RunState {
+        &self.run
+    }
+
+    /// What is shown and how.
+    pub fn view(&self) -> &ViewState {
+        &self.view
+    }
+
+    /// Logs and exports.
+    pub fn io(&self) -> &IoState {
+        &self.io
+    }
+
+    /// Messages for the user.
+    pub fn messages(&self) -> &[Message] {
+        &self.messages
+    }
+
+    /// Carries out one command: the only place the app's state changes. Returns what the
+    /// app must do outside the state, if anything.
+    pub fn apply(&mut self, command: Command) -> Option<Effect> {
+        match command {
+            Command::Run(c) => self.apply_run(c),
+            Command::View(c) => self.apply_view(c),
+            Command::Io(c) => return self.apply_io(c),
+            Command::Url(c) => return self.apply_url(c),
+            Command::Notify(m) => self.messages.push(m),
+            Command::Dismiss(i) => {
+                if i < self.messages.len() {
+                    self.messages.remove(i);
+                }
+            }
+        }
+        None
+    }
+
+    fn info(&mut self, text: impl Into<String>) {
+        self.messages.push(Message::info(text));
+    }
+
+    fn error(&mut self, text: impl Into<String>) {
+        self.messages.push(Message::error(text));
+    }
+}

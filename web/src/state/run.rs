@@ -1,0 +1,263 @@
+//! The run part: the simulation, its clock and speed, the seed, and a sweep in the
+//! background. It owns the commands that choose the lab, set parameters, reset, step and
+//! sweep, and the frame loop's ticks.
+
+use super::{AppState, ViewState};
+use attlab::analysis::sweep::Sweep;
+use attlab::model::{Lab, ParamValues, PlotTab};
+use attlab::sim::{Simulation, default_tab};
+use web_time::{Duration, Instant};
+
+/// Time the simulation may take per frame before it falls behind real time.
+pub const STEP_BUDGET: Duration = Duration::from_millis(12);
+
+/// Wall time per frame given to a background sweep.
+pub const SWEEP_BUDGET: Duration = Duration::from_millis(10);
+
+/// Smoothed frame statistics for the status line.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Simulation steps per wall-clock second.
+    pub steps_per_s: f64,
+    /// Frame-to-frame time (ms).
+    pub frame_ms: f64,
+    /// Time spent stepping in the last frame (ms).
+    pub step_ms: f64,
+    /// The simulation could not keep up with the requested speed.
+    pub behind: bool,
+}
+
+/// The run's clock, seed and background work.
+pub struct RunState {
+    /// Seed used at the next reset.
+    pub seed: u64,
+    /// Running or paused.
+    pub playing: bool,
+    /// Simulated seconds per wall-clock second.
+    pub speed: f64,
+    /// Status line values.
+    pub stats: Stats,
+    /// A parameter sweep running in the background (index into the lab's sweeps, sweep).
+    pub sweep: Option<(usize, Sweep)>,
+    last_frame: Option<Instant>,
+    step_debt: f64,
+}
+
+impl RunState {
+    /// Playing at `speed` with `seed`.
+    pub fn new(seed: u64, speed: f64) -> Self {
+        Self {
+            seed,
+            playing: true,
+            speed,
+            stats: Stats::default(),
+            sweep: None,
+            last_frame: None,
+            step_debt: 0.0,
+        }
+    }
+
+    /// A sweep is running and not finished.
+    pub fn sweeping(&self) -> bool {
+        self.sweep.as_ref().is_some_and(|(_, s)| !s.is_done())
+    }
+}
+
+/// What the run part does.
+#[derive(Clone, Copy)]
+pub enum RunCommand {
+    /// Switch lab (parameters to its defaults).
+    SelectLab(&'static dyn Lab),
+    /// Change one parameter.
+    SetParam(&'static str, f64),
+    /// Apply the lab's preset with this index.
+    ApplyPreset(usize),
+    /// All parameters back to their defaults.
+    RestoreDefaults,
+    /// Run or pause.
+    SetPlaying(bool),
+    /// Restart with the current seed.
+    Reset,
+    /// One step while paused.
+    StepOnce,
+    /// Use this seed from the next reset.
+    SetSeed(u64),
+    /// A fresh random seed, then reset.
+    NewSeed,
+    /// Simulated seconds per wall-clock second.
+    SetSpeed(f64),
+    /// Start the lab's sweep `i`.
+    RunSweep(usize),
+    /// Stop the running sweep.
+    CancelSweep,
+    /// A frame at `now`: step by the wall time since the last one × speed, within
+    /// [`STEP_BUDGET`].
+    Advance(Instant),
+    /// A frame at `now` that leaves the simulation where it is (a PNG capture in progress):
+    /// the next advance does not catch up on the time spent.
+    Hold(Instant),
+    /// Give the background sweep this much wall time.
+    AdvanceSweep(Duration),
+}
+
+impl AppState {
+    pub(super) fn apply_run(&mut self, command: RunCommand) {
+        match command {
+            RunCommand::SelectLab(lab) => self.select_lab(lab),
+            RunCommand::SetParam(key, value) => {
+                if let Err(e) = self.sim.set_param(key, value) {
+                    self.error(e.to_string());
+                }
+            }
+            RunCommand::ApplyPreset(i) => self.apply_preset(i),
+            RunCommand::RestoreDefaults => {
+                let lab = self.sim.lab();
+                let params = ParamValues::defaults(lab.params());
+                self.sim.release_recorder();
+                self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+                self.io.replaying = None;
+            }
+            RunCommand::SetPlaying(on) => self.run.playing = on,
+            RunCommand::Reset => {
+                self.sim.reset(self.run.seed);
+                self.run.step_debt = 0.0;
+            }
+            RunCommand::StepOnce => self.sim.step(),
+            RunCommand::SetSeed(seed) => self.run.seed = seed,
+            RunCommand::NewSeed => {
+                self.run.seed = fresh_seed();
+                self.apply_run(RunCommand::Reset);
+            }
+            RunCommand::SetSpeed(speed) => {
+                let (lo, hi) = attlab::state::SPEED_RANGE;
+                self.run.speed = speed.clamp(lo, hi);
+            }
+            RunCommand::RunSweep(i) => self.start_sweep(i),
+            RunCommand::CancelSweep => self.run.sweep = None,
+            RunCommand::Advance(now) => self.advance(now),
+            RunCommand::Hold(now) => self.run.last_frame = Some(now),
+            RunCommand::AdvanceSweep(budget) => self.advance_sweep(budget),
+        }
+    }
+
+    fn select_lab(&mut self, lab: &'static dyn Lab) {
+        self.view = ViewState {
+            presenter: self.view.presenter,
+            capturing: self.view.capturing,
+            ..ViewState::for_lab(lab)
+        };
+        self.sim.release_recorder();
+        self.run.sweep = None;
+        let params = ParamValues::defaults(lab.params());
+        self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+        self.io.replaying = None;
+        self.run.step_debt = 0.0;
+    }
+
+    fn apply_preset(&mut self, i: usize) {
+        let lab = self.sim.lab();
+        let Some(preset) = lab.presets().get(i) else {
+            return;
+        };
+        for (k, v) in preset.values {
+            self.apply_run(RunCommand::SetParam(k, *v));
+        }
+        let waiting = self.sim.pending_reset();
+        self.info(if waiting.is_empty() {
+            format!("preset {} applied", preset.name)
+        } else {
+            format!("preset {}: some values apply at Reset", preset.name)
+        });
+    }
+
+    fn start_sweep(&mut self, i: usize) {
+        let lab = self.sim.lab();
+        let Some(spec) = lab.sweeps().get(i) else {
+            return;
+        };
+        let params = self.sim.params().clone();
+        let fresh = || Sweep::new(lab, *spec, params.clone(), self.run.seed);
+        // While a log is replayed, a sweep that can run on it does.
+        let sweep = match self.sim.replay_log() {
+            Some(log) if spec.log_scoring.is_some() => {
+                fresh().on_log(log.clone()).unwrap_or_else(fresh)
+            }
+            _ => fresh(),
+        };
+        self.run.sweep = Some((i, sweep));
+    }
+
+    /// Runs the background sweep for at most `budget` of wall time.
+    fn advance_sweep(&mut self, budget: Duration) {
+        let Some((_, sweep)) = self.run.sweep.as_mut() else {
+            return;
+        };
+        let start = Instant::now();
+        while start.elapsed() < budget {
+            if sweep.advance(1000) {
+                break;
+            }
+        }
+    }
+
+    /// Advances the simulation by the wall-clock time since the last frame × speed, within
+    /// [`STEP_BUDGET`]; if it cannot keep up it drops the backlog instead of freezing.
+    fn advance(&mut self, now: Instant) {
+        let run = &mut self.run;
+        let frame_s = run
+            .last_frame
+            .map_or(0.0, |t| now.duration_since(t).as_secs_f64())
+            .min(0.1);
+        run.last_frame = Some(now);
+        run.stats.frame_ms = 0.9 * run.stats.frame_ms + 0.1 * frame_s * 1e3;
+        if !run.playing {
+            run.stats.steps_per_s *= 0.9;
+            return;
+        }
+        run.step_debt += run.speed * frame_s / self.sim.dt_s();
+        let mut steps = 0u32;
+        run.stats.behind = false;
+        while run.step_debt >= 1.0 {
+            self.sim.step();
+            run.step_debt -= 1.0;
+            steps += 1;
+            if steps.is_multiple_of(16) && now.elapsed() > STEP_BUDGET {
+                run.stats.behind = true;
+                run.step_debt = 0.0;
+            }
+        }
+        run.stats.step_ms = now.elapsed().as_secs_f64() * 1e3;
+        if frame_s > 0.0 {
+            run.stats.steps_per_s = 0.9 * run.stats.steps_per_s + 0.1 * f64::from(steps) / frame_s;
+        }
+    }
+}
+
+/// A simulation recording what `tab` shows.
+pub(super) fn simulation(
+    lab: &'static dyn Lab,
+    params: ParamValues,
+    seed: u64,
+    tab: PlotTab,
+) -> Simulation {
+    let mut sim = Simulation::new(lab, params, seed);
+    if tab == default_tab(lab) {
+        return sim;
+    }
+    // At t = 0 the re-run is immediate; on an error the run records the default tab's series.
+    let selection = super::view_selection(&sim, tab);
+    let _ = sim.reselect(selection);
+    sim
+}
+
+/// A new random seed from the operating system (the browser's crypto in the page).
+fn fresh_seed() -> u64 {
+    let mut bytes = [0u8; 8];
+    match getrandom::fill(&mut bytes) {
+        Ok(()) => u64::from_le_bytes(bytes) >> 16,
+        // No entropy source: fall back to the clock, still a new seed each time.
+        Err(_) => web_time::SystemTime::now()
+            .duration_since(web_time::UNIX_EPOCH)
+            .map_or(1, |d| d.as_nanos() as u64 >> 16),
+    }
+}

@@ -1,0 +1,142 @@
+//! The view part: which plot tab is shown and how, which view is at full size, which
+//! sources are hidden, presenter mode and the 3D ghost. It owns the commands that change
+//! them; a tab that draws series not recorded so far re-runs the simulation for them.
+
+use super::AppState;
+use crate::render::plots::PlotState;
+use attlab::model::{Lab, PlotTab};
+use attlab::sim::{Selection, Simulation};
+use web_time::Instant;
+
+/// What the central area shows: everything, or one view (or the plots) at full size.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Focus {
+    /// The lab's views on top, the plots below.
+    #[default]
+    All,
+    /// The lab's view with this index alone.
+    View(usize),
+    /// The plots alone.
+    Plots,
+}
+
+impl Focus {
+    /// The next focus for a lab with `views` views: each view, the plots, all.
+    pub fn next(self, views: usize) -> Self {
+        match self {
+            Self::All if views > 0 => Self::View(0),
+            Self::View(k) if k + 1 < views => Self::View(k + 1),
+            Self::All | Self::View(_) => Self::Plots,
+            Self::Plots => Self::All,
+        }
+    }
+}
+
+/// What is shown and how.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ViewState {
+    /// Plot tab and options.
+    pub plots: PlotState,
+    /// One view at full size, or all.
+    pub focus: Focus,
+    /// Sources (1 + estimator index) hidden in every view and plot.
+    pub hidden: Vec<usize>,
+    /// Presenter mode: large type, thick lines, only the controls that matter.
+    pub presenter: bool,
+    /// Which estimator the 3D ghost shows.
+    pub ghost_index: usize,
+    /// A PNG capture is running: the views hide their buttons and the simulation holds.
+    pub capturing: bool,
+}
+
+impl ViewState {
+    /// The view a lab opens with.
+    pub fn for_lab(lab: &dyn Lab) -> Self {
+        Self {
+            plots: PlotState::for_lab(lab),
+            focus: Focus::All,
+            hidden: Vec::new(),
+            presenter: false,
+            ghost_index: 0,
+            capturing: false,
+        }
+    }
+}
+
+/// What the view part does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ViewCommand {
+    /// Which estimator the 3D ghost shows.
+    SetGhost(usize),
+    /// Select a plot tab.
+    SelectTab(PlotTab),
+    /// Draw covariance elements as log10.
+    SetLogCovariance(bool),
+    /// Draw ±3σ bands around errors that have one.
+    SetShowBands(bool),
+    /// Shade (or not) the lab's outages on the plots.
+    SetShowOutages(bool),
+    /// Show the next view alone over the whole central area (then the plots, then all).
+    CycleFocus,
+    /// Hide (or show again) the source with this index (1 + estimator index) everywhere.
+    ToggleSource(usize),
+    /// Presenter mode on or off: large type, thick lines, only the controls that matter.
+    SetPresenter(bool),
+    /// A PNG capture started or ended.
+    SetCapturing(bool),
+}
+
+impl AppState {
+    pub(super) fn apply_view(&mut self, command: ViewCommand) {
+        let view = &mut self.view;
+        match command {
+            ViewCommand::SetGhost(i) => view.ghost_index = i,
+            ViewCommand::SelectTab(tab) => self.select_tab(tab),
+            ViewCommand::SetLogCovariance(on) => view.plots.log_covariance = on,
+            ViewCommand::SetShowBands(on) => view.plots.show_bands = on,
+            ViewCommand::SetShowOutages(on) => view.plots.show_outages = on,
+            ViewCommand::CycleFocus => view.focus = view.focus.next(self.sim.lab().views().len()),
+            ViewCommand::ToggleSource(i) => match view.hidden.iter().position(|h| *h == i) {
+                Some(k) => {
+                    view.hidden.remove(k);
+                }
+                None => view.hidden.push(i),
+            },
+            ViewCommand::SetPresenter(on) => view.presenter = on,
+            ViewCommand::SetCapturing(on) => view.capturing = on,
+        }
+    }
+
+    /// Shows `tab`; when it draws series not recorded so far, the run is re-simulated from
+    /// its start recording them (same seed, same parameter changes), so the new plot covers
+    /// the whole run too.
+    fn select_tab(&mut self, tab: PlotTab) {
+        self.view.plots.tab = tab;
+        let selection = view_selection(&self.sim, tab);
+        let Selection::View(wanted) = &selection else {
+            return;
+        };
+        let recorded = self.sim.specs();
+        if wanted.iter().all(|w| recorded.iter().any(|s| &s.name == w)) {
+            return;
+        }
+        let started = Instant::now();
+        match self.sim.reselect(selection) {
+            Ok(()) => {
+                let ms = started.elapsed().as_secs_f64() * 1e3;
+                if ms > 200.0 {
+                    let t_s = self.sim.t_s();
+                    self.info(format!(
+                        "re-ran {t_s:.0} s of simulation for this plot in {ms:.0} ms"
+                    ));
+                }
+            }
+            Err(e) => self.error(format!("cannot show this plot: {e}")),
+        }
+    }
+}
+
+/// What the page records while `tab` is shown (see [`Selection::for_tab`]).
+pub fn view_selection(sim: &Simulation, tab: PlotTab) -> Selection {
+    Selection::for_tab(sim.lab(), sim.available_specs(), tab)
+}
