@@ -151,7 +151,7 @@ impl AttLabApp {
             self.zoomed_for = Some(self.state.view().presenter);
         }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
-        panels::status_line(ui, &self.state);
+        panels::status_line(ui, &self.state, &mut commands);
         panels::controls(ui, &self.state, &mut commands);
         self.regions = Regions::default();
         panels::central(
@@ -251,8 +251,8 @@ impl AttLabApp {
 impl eframe::App for AttLabApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
-        let sweeping = self.state.run().sweeping();
-        if self.state.run().playing || sweeping {
+        let run = self.state.run();
+        if run.playing || run.sweeping() || run.job().is_some() {
             ui.ctx().request_repaint();
         }
     }

@@ -47,4 +47,13 @@ impl<W: Write> CsvSink<W> {
         self.writer.flush()?;
         Ok(self.rows)
     }
+
+    /// Flushes and hands the writer back with the number of rows written.
+    pub fn into_inner(self) -> Result<(W, u64), String> {
+        let rows = self.rows;
+        self.writer
+            .into_inner()
+            .map(|w| (w, rows))
+            .map_err(|e| e.error().to_string())
+    }
 }

@@ -12,6 +12,12 @@ struct Entry {
     value: f64,
 }
 
+/// How far a slice-at-a-time replay has got through a journal.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Cursor {
+    next: usize,
+}
+
 /// The changes of one run, in the order they were made.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub(super) struct Journal {
@@ -56,16 +62,50 @@ impl Journal {
         &self,
         sim: &mut Simulation,
         steps: u64,
-        mut each_step: impl FnMut(&Simulation) -> Result<(), E>,
+        each_step: impl FnMut(&Simulation) -> Result<(), E>,
     ) -> Result<(), ReplayError<E>> {
-        let mut next = 0;
+        let mut cursor = Cursor::default();
+        self.replay_some(sim, steps, &mut cursor, u64::MAX, each_step)?;
+        Ok(())
+    }
+
+    /// [`Journal::replay`] a slice at a time: at most `max_steps` more steps from where
+    /// `cursor` left off. Returns true when `sim` has reached `steps` and every change is in.
+    pub(super) fn replay_some<E>(
+        &self,
+        sim: &mut Simulation,
+        steps: u64,
+        cursor: &mut Cursor,
+        max_steps: u64,
+        mut each_step: impl FnMut(&Simulation) -> Result<(), E>,
+    ) -> Result<bool, ReplayError<E>> {
+        let mut taken = 0;
         while sim.steps() < steps {
-            next += self.apply_due(sim, next, Some(sim.steps()))?;
+            if taken == max_steps {
+                return Ok(false);
+            }
+            cursor.next += self.apply_due(sim, cursor.next, Some(sim.steps()))?;
             sim.step();
+            taken += 1;
             each_step(sim).map_err(ReplayError::Step)?;
         }
-        self.apply_due(sim, next, None)?;
-        Ok(())
+        cursor.next += self.apply_due(sim, cursor.next, None)?;
+        Ok(true)
+    }
+
+    /// Number of changes recorded.
+    pub(super) fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// The changes from entry `from` on, applied to `sim` now (those made to a run while a
+    /// re-run of it was under way).
+    pub(super) fn apply_from(&self, sim: &mut Simulation, from: usize) -> Result<(), Refused> {
+        match self.apply_due::<()>(sim, from, None) {
+            Ok(_) => Ok(()),
+            Err(ReplayError::Refused(r)) => Err(r),
+            Err(ReplayError::Step(())) => Ok(()),
+        }
     }
 
     /// Applies the entries from `from` on that are due before step `step` (every remaining
@@ -76,7 +116,10 @@ impl Journal {
         from: usize,
         step: Option<u64>,
     ) -> Result<usize, ReplayError<E>> {
-        let due = self.entries[from..]
+        let due = self
+            .entries
+            .get(from..)
+            .unwrap_or_default()
             .iter()
             .take_while(|e| step.is_none_or(|s| e.step == s));
         let mut applied = 0;

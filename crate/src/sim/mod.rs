@@ -23,7 +23,7 @@ pub use csv::{CsvSink, csv_cell};
 pub use export::write_output_file;
 pub use journal::{Refused, ReplayError};
 pub use layout::Layout;
-pub use rerun::{RerunError, RerunItem};
+pub use rerun::{RerunError, RerunItem, RerunJob};
 pub use selection::{Selection, UnknownSeries};
 
 use crate::model::{

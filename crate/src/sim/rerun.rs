@@ -2,7 +2,7 @@
 //! same parameter changes at the same steps ([`super::journal`]) — to hand every sample to a
 //! sink, or to record another selection of series with their whole history.
 
-use super::journal::ReplayError;
+use super::journal::{Cursor, Journal, Refused, ReplayError};
 use super::{Selection, SimOptions, Simulation};
 use crate::model::SeriesSpec;
 use crate::record::Recorder;
@@ -103,5 +103,77 @@ impl Simulation {
                 Err(e)
             }
         }
+    }
+}
+
+/// A re-run advanced a slice at a time, so the page never stalls a frame on it: a fresh run
+/// from the original's start, brought up to the step the original had reached when the job
+/// began, with the same parameter changes at the same steps.
+pub struct RerunJob {
+    sim: Simulation,
+    target_steps: u64,
+    journal: Journal,
+    cursor: Cursor,
+}
+
+impl RerunJob {
+    /// The re-run so far.
+    pub fn sim(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// Share of the steps done, 0 to 1.
+    pub fn progress(&self) -> f64 {
+        if self.target_steps == 0 {
+            1.0
+        } else {
+            self.sim.steps as f64 / self.target_steps as f64
+        }
+    }
+
+    /// At most `max_steps` more steps, calling `each_step` after every one; true when the
+    /// re-run has caught up.
+    pub fn advance<E>(
+        &mut self,
+        max_steps: u64,
+        each_step: impl FnMut(&Simulation) -> Result<(), E>,
+    ) -> Result<bool, ReplayError<E>> {
+        self.journal.replay_some(
+            &mut self.sim,
+            self.target_steps,
+            &mut self.cursor,
+            max_steps,
+            each_step,
+        )
+    }
+}
+
+impl Simulation {
+    /// A [`RerunJob`] of this run recording `selection` within `budget_bytes`.
+    pub fn rerun_job(&self, selection: Selection, budget_bytes: usize) -> Result<RerunJob, String> {
+        let sim = self.restart(SimOptions {
+            selection,
+            budget_bytes,
+        })?;
+        Ok(RerunJob {
+            sim,
+            target_steps: self.steps,
+            journal: self.journal.clone(),
+            cursor: Cursor::default(),
+        })
+    }
+
+    /// Takes a finished re-selection `job` of this run as the run: the job's series with
+    /// their whole history, and the parameter changes made here while it ran (this run
+    /// must not have stepped since the job began).
+    pub fn adopt(&mut self, job: RerunJob) -> Result<(), Refused> {
+        debug_assert_eq!(
+            job.sim.steps, self.steps,
+            "the run stepped during its re-run"
+        );
+        let mut sim = job.sim;
+        self.journal.apply_from(&mut sim, job.journal.len())?;
+        *self = sim;
+        Ok(())
     }
 }

@@ -339,6 +339,61 @@ fn reselect_in_place_equals_a_reselected_copy() {
     }
 }
 
+/// A re-run advanced a few steps at a time (the page's job) ends where the re-run in one go
+/// does, and adopting it keeps a change made to the run while it ran.
+#[test]
+fn a_rerun_job_in_slices_equals_the_rerun_in_one_go() {
+    for lab in labs::all() {
+        let mut sim = Simulation::new(*lab, ParamValues::defaults(lab.params()), 2);
+        let live = lab
+            .params()
+            .iter()
+            .find(|p| !p.needs_reset && !p.export_only);
+        for k in 0..120 {
+            if k == 60
+                && let Some(p) = live
+            {
+                sim.set_param(p.key, p.max).unwrap();
+            }
+            sim.step();
+        }
+        let whole = sim.reselected(Selection::All).expect("re-selected copy");
+        let mut job = sim
+            .rerun_job(Selection::All, sim.options().budget_bytes)
+            .unwrap();
+        let mut slices = 0;
+        while !job.advance(7, |_| Ok::<(), ()>(())).unwrap() {
+            slices += 1;
+            assert!(job.progress() < 1.0 && slices < 100, "{}", lab.id());
+        }
+        assert_eq!(slices, 120 / 7, "{}: one slice per 7 steps", lab.id());
+        if let Some(p) = live {
+            sim.set_param(p.key, p.min).unwrap();
+        }
+        sim.adopt(job).unwrap();
+        assert_eq!(sim.steps(), whole.steps(), "{}", lab.id());
+        let (a, b) = (sim.recorder(), whole.recorder());
+        assert_eq!(a.specs(), b.specs(), "{}", lab.id());
+        for j in 0..a.specs().len() {
+            assert!(
+                same_bits(&a.recent_vec(j), &b.recent_vec(j)),
+                "{}: series {} differs",
+                lab.id(),
+                a.specs()[j].name
+            );
+        }
+        if let Some(p) = live {
+            assert_eq!(
+                sim.params().get(p.key),
+                p.min,
+                "{}: the later change is kept",
+                lab.id()
+            );
+            assert_eq!(sim.applied_params().get(p.key), p.min, "{}", lab.id());
+        }
+    }
+}
+
 /// A diagram point that names an estimator names one the lab runs (it takes that
 /// estimator's colour in the page and hides with it); p5's eigenvalue points all do.
 #[test]

@@ -12,13 +12,27 @@ pub use central::central;
 pub use controls::controls;
 pub use keys::{shortcuts, tabs};
 
-use crate::state::AppState;
+use crate::state::{AppState, Command, RunCommand};
 use attlab::model::EstimatorStatus;
 
-/// The status line at the bottom: time, rates, frame time, recorder memory and estimator
-/// health.
-pub fn status_line(ui: &mut egui::Ui, app: &AppState) {
+/// The status line at the bottom: a re-run or export under way (with its progress and a
+/// button that stops it), time, rates, frame time, recorder memory and estimator health.
+pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command>) {
     egui::Panel::bottom("status").show(ui, |ui| {
+        if let Some(job) = app.run().job() {
+            ui.horizontal(|ui| {
+                let done = job.progress();
+                ui.add(
+                    egui::ProgressBar::new(done as f32)
+                        .desired_width(220.0)
+                        .text(format!("{} · {:.0} %", job.title(), 100.0 * done)),
+                );
+                ui.label("the simulation holds meanwhile");
+                if ui.small_button("Stop").clicked() {
+                    commands.push(Command::from(RunCommand::CancelJob));
+                }
+            });
+        }
         ui.horizontal_wrapped(|ui| {
             let s = &app.run().stats;
             let rec = app.sim().recorder();

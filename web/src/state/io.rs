@@ -71,12 +71,13 @@ pub enum IoCommand {
 impl AppState {
     pub(super) fn apply_io(&mut self, command: IoCommand) -> Option<Effect> {
         match command {
-            IoCommand::ExportCsv => self.export_csv(),
+            IoCommand::ExportCsv => self.start_csv_export(),
             IoCommand::ExportOutputFile => self.export_output_file(),
             IoCommand::LoadLog => platform::pick_text_file(&self.io.file_slot),
             IoCommand::TakePickedLog => self.take_picked_log(),
             IoCommand::EndReplay => {
                 self.io.replaying = None;
+                self.drop_jobs();
                 let (lab, params) = (self.sim.lab(), self.sim.params().clone());
                 self.sim.release_recorder();
                 self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
@@ -130,6 +131,7 @@ impl AppState {
         let (lab, params) = (self.sim.lab(), self.sim.params().clone());
         match Simulation::replay(lab, params, log, SimOptions::default()) {
             Ok(sim) => {
+                self.drop_jobs();
                 self.sim = sim;
                 self.run.sweep = None;
                 self.info(format!("{name}: replaying {samples} samples"));
@@ -140,7 +142,7 @@ impl AppState {
     }
 
     /// Saves `bytes` as `name`, with `what` after the saved path in the message.
-    fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, String>) {
+    pub(super) fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, String>) {
         let message = result.and_then(|what| {
             platform::save_file(name, "text/csv", bytes, self.io.save_dir.as_deref())
                 .map(|m| format!("{m} ({what})"))
@@ -149,16 +151,6 @@ impl AppState {
             Ok(m) => self.info(m),
             Err(e) => self.error(format!("export failed: {e}")),
         }
-    }
-
-    fn export_csv(&mut self) {
-        let mut buf = Vec::new();
-        let result = self
-            .sim
-            .export_csv(&mut buf)
-            .map(|rows| format!("{rows} rows, every sample, re-run from t = 0"));
-        let name = self.csv_name();
-        self.save(&name, buf, result);
     }
 
     fn export_output_file(&mut self) {

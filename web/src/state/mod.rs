@@ -11,11 +11,13 @@
 //! slider's value.
 
 mod io;
+mod jobs;
 mod run;
 mod url;
 mod view;
 
 pub use io::{IoCommand, IoState};
+pub use jobs::Job;
 pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
 pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};

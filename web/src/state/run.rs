@@ -2,7 +2,7 @@
 //! background. It owns the commands that choose the lab, set parameters, reset, step and
 //! sweep, and the frame loop's ticks.
 
-use super::{AppState, ViewState};
+use super::{AppState, ViewState, jobs::Job};
 use attlab::analysis::sweep::Sweep;
 use attlab::model::{Lab, ParamValues, PlotTab};
 use attlab::sim::{Simulation, default_tab};
@@ -39,6 +39,8 @@ pub struct RunState {
     pub stats: Stats,
     /// A parameter sweep running in the background (index into the lab's sweeps, sweep).
     pub sweep: Option<(usize, Sweep)>,
+    /// Re-runs and exports under way, the first one advancing.
+    pub(super) jobs: Vec<Job>,
     last_frame: Option<Instant>,
     step_debt: f64,
 }
@@ -52,9 +54,15 @@ impl RunState {
             speed,
             stats: Stats::default(),
             sweep: None,
+            jobs: Vec::new(),
             last_frame: None,
             step_debt: 0.0,
         }
+    }
+
+    /// The job advancing now (a re-run for a plot, an export), if any.
+    pub fn job(&self) -> Option<&Job> {
+        self.jobs.first()
     }
 
     /// A sweep is running and not finished.
@@ -90,6 +98,8 @@ pub enum RunCommand {
     RunSweep(usize),
     /// Stop the running sweep.
     CancelSweep,
+    /// Stop the re-run or export under way.
+    CancelJob,
     /// A frame at `now`: step by the wall time since the last one × speed, within
     /// [`STEP_BUDGET`].
     Advance(Instant),
@@ -113,16 +123,22 @@ impl AppState {
             RunCommand::RestoreDefaults => {
                 let lab = self.sim.lab();
                 let params = ParamValues::defaults(lab.params());
+                self.drop_jobs();
                 self.sim.release_recorder();
                 self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
                 self.io.replaying = None;
             }
             RunCommand::SetPlaying(on) => self.run.playing = on,
             RunCommand::Reset => {
+                self.drop_jobs();
                 self.sim.reset(self.run.seed);
                 self.run.step_debt = 0.0;
+                // A re-run for the tab stopped by the reset: at t = 0 it is done at once.
+                self.apply_view(super::ViewCommand::SelectTab(self.view.plots.tab));
             }
-            RunCommand::StepOnce => self.sim.step(),
+            // The run holds while a job brings a re-run up to it.
+            RunCommand::StepOnce if self.run.jobs.is_empty() => self.sim.step(),
+            RunCommand::StepOnce => {}
             RunCommand::SetSeed(seed) => self.run.seed = seed,
             RunCommand::NewSeed => {
                 self.run.seed = fresh_seed();
@@ -134,6 +150,7 @@ impl AppState {
             }
             RunCommand::RunSweep(i) => self.start_sweep(i),
             RunCommand::CancelSweep => self.run.sweep = None,
+            RunCommand::CancelJob => self.cancel_job(),
             RunCommand::Advance(now) => self.advance(now),
             RunCommand::Hold(now) => self.run.last_frame = Some(now),
             RunCommand::AdvanceSweep(budget) => self.advance_sweep(budget),
@@ -146,6 +163,7 @@ impl AppState {
             capturing: self.view.capturing,
             ..ViewState::for_lab(lab)
         };
+        self.drop_jobs();
         self.sim.release_recorder();
         self.run.sweep = None;
         let params = ParamValues::defaults(lab.params());
@@ -203,6 +221,12 @@ impl AppState {
     /// Advances the simulation by the wall-clock time since the last frame × speed, within
     /// [`STEP_BUDGET`]; if it cannot keep up it drops the backlog instead of freezing.
     fn advance(&mut self, now: Instant) {
+        if !self.run.jobs.is_empty() {
+            // The simulation holds while a job runs (and does not catch up afterwards).
+            self.run.last_frame = Some(now);
+            self.advance_job(STEP_BUDGET);
+            return;
+        }
         let run = &mut self.run;
         let frame_s = run
             .last_frame

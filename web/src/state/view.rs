@@ -6,7 +6,6 @@ use super::AppState;
 use crate::render::plots::PlotState;
 use attlab::model::{Lab, PlotTab};
 use attlab::sim::{Selection, Simulation};
-use web_time::Instant;
 
 /// What the central area shows: everything, or one view (or the plots) at full size.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -108,8 +107,8 @@ impl AppState {
     }
 
     /// Shows `tab`; when it draws series not recorded so far, the run is re-simulated from
-    /// its start recording them (same seed, same parameter changes), so the new plot covers
-    /// the whole run too.
+    /// its start recording them (same seed, same parameter changes), a slice per frame, so
+    /// the new plot covers the whole run too.
     fn select_tab(&mut self, tab: PlotTab) {
         self.view.plots.tab = tab;
         let selection = view_selection(&self.sim, tab);
@@ -120,19 +119,7 @@ impl AppState {
         if wanted.iter().all(|w| recorded.iter().any(|s| &s.name == w)) {
             return;
         }
-        let started = Instant::now();
-        match self.sim.reselect(selection) {
-            Ok(()) => {
-                let ms = started.elapsed().as_secs_f64() * 1e3;
-                if ms > 200.0 {
-                    let t_s = self.sim.t_s();
-                    self.info(format!(
-                        "re-ran {t_s:.0} s of simulation for this plot in {ms:.0} ms"
-                    ));
-                }
-            }
-            Err(e) => self.error(format!("cannot show this plot: {e}")),
-        }
+        self.start_reselect(selection);
     }
 }
 

@@ -399,3 +399,50 @@ fn every_labs_legend_shows_human_labels_with_units() {
         );
     }
 }
+
+/// A plot tab that needs series not recorded so far re-runs the simulation as a job, a
+/// slice per frame, with its progress in the status line; the run holds meanwhile and the
+/// tab then has its whole history.
+#[test]
+fn a_tab_that_needs_a_rerun_is_a_job_with_its_progress() {
+    use attlab::model::{PlotTab, SeriesGroup};
+    use attlab_web::state::ViewCommand;
+    let mut h = harness("p2");
+    for _ in 0..1500 {
+        h.state_mut().apply(RunCommand::StepOnce.into());
+    }
+    let steps = h.state().state.sim().steps();
+    assert_eq!(steps, 1500);
+    let rates = PlotTab::Group(SeriesGroup::Rate);
+    assert!(
+        !h.state()
+            .state
+            .sim()
+            .specs()
+            .iter()
+            .any(|s| s.group == SeriesGroup::Rate),
+        "the rates are not recorded before"
+    );
+    h.state_mut().apply(ViewCommand::SelectTab(rates).into());
+    assert!(h.state().state.run().job().is_some(), "a job, not a stall");
+    h.step();
+    if h.state().state.run().job().is_some() {
+        h.get_by_label_contains("Re-running the simulation for this plot");
+    }
+    let mut frames = 1;
+    while h.state().state.run().job().is_some() {
+        h.step();
+        frames += 1;
+        assert!(frames < 5000, "the re-run never finished");
+    }
+    eprintln!("re-run of {steps} steps took {frames} frames");
+    let sim = h.state().state.sim();
+    assert_eq!(sim.steps(), steps, "the run held while it was re-run");
+    let i = sim
+        .specs()
+        .iter()
+        .position(|s| s.group == SeriesGroup::Rate)
+        .expect("the rates are recorded now");
+    let first = sim.recorder().plot_points(i, 10);
+    assert_eq!(first.first().map(|p| p[0]), Some(0.0), "from t = 0");
+}

@@ -1,0 +1,188 @@
+//! Long work as a job advanced a slice per frame, so the page never stalls on it: the
+//! re-run a plot tab needs for series not recorded so far, and the CSV export of every
+//! sample (a re-run from t = 0). While a job runs the simulation holds still; parameter
+//! changes made meanwhile are kept. Jobs run one after the other, a new re-run for a plot
+//! replacing one that has not finished.
+
+use super::AppState;
+use attlab::sim::{CsvSink, RerunJob, Selection};
+use web_time::{Duration, Instant};
+
+/// Steps a job takes between looks at the clock.
+const CHUNK_STEPS: u64 = 32;
+
+/// What a job is for.
+enum Purpose {
+    /// Record what the plot tab on screen draws (the run's new selection).
+    Reselect,
+    /// Write every sample to a CSV file of this name.
+    ExportCsv {
+        name: String,
+        sink: Box<CsvSink<Vec<u8>>>,
+    },
+}
+
+/// A job under way.
+pub struct Job {
+    purpose: Purpose,
+    rerun: RerunJob,
+    started: Instant,
+}
+
+impl Job {
+    /// What the job is doing, for the progress line.
+    pub fn title(&self) -> &'static str {
+        match self.purpose {
+            Purpose::Reselect => "Re-running the simulation for this plot",
+            Purpose::ExportCsv { .. } => "Exporting every sample as CSV",
+        }
+    }
+
+    /// Share done, 0 to 1.
+    pub fn progress(&self) -> f64 {
+        self.rerun.progress()
+    }
+}
+
+impl AppState {
+    /// Starts re-running the simulation to record `selection` (the plots show the series
+    /// as soon as it has caught up). The old recorder goes first, so the page holds one
+    /// recorder's memory at a time.
+    pub(super) fn start_reselect(&mut self, selection: Selection) {
+        let budget = self.sim.options().budget_bytes;
+        match self.sim.rerun_job(selection, budget) {
+            Ok(rerun) => {
+                self.sim.release_recorder();
+                self.start_job(Purpose::Reselect, rerun);
+            }
+            Err(e) => self.error(format!("cannot show this plot: {e}")),
+        }
+    }
+
+    /// Starts exporting every sample of the run so far as CSV.
+    pub(super) fn start_csv_export(&mut self) {
+        if self
+            .run
+            .jobs
+            .iter()
+            .any(|j| matches!(j.purpose, Purpose::ExportCsv { .. }))
+        {
+            return self.error("an export is under way: one at a time");
+        }
+        let name = self.csv_name();
+        let made = self
+            .sim
+            .rerun_job(Selection::All, 1 << 16)
+            .and_then(|rerun| {
+                let mut sink =
+                    CsvSink::new(Vec::new(), rerun.sim().specs()).map_err(|e| e.to_string())?;
+                sink.row(rerun.sim().last_row())
+                    .map_err(|e| e.to_string())?;
+                Ok((sink, rerun))
+            });
+        match made {
+            Ok((sink, rerun)) => {
+                let sink = Box::new(sink);
+                self.start_job(Purpose::ExportCsv { name, sink }, rerun)
+            }
+            Err(e) => self.error(format!("export failed: {e}")),
+        }
+    }
+
+    fn start_job(&mut self, purpose: Purpose, rerun: RerunJob) {
+        if matches!(purpose, Purpose::Reselect) {
+            self.run
+                .jobs
+                .retain(|j| !matches!(j.purpose, Purpose::Reselect));
+        }
+        self.run.jobs.push(Job {
+            purpose,
+            rerun,
+            started: Instant::now(),
+        });
+    }
+
+    /// Stops the job under way; a re-run for a plot leaves the run recording what it did
+    /// before (re-run at once).
+    pub(super) fn cancel_job(&mut self) {
+        if self.run.jobs.is_empty() {
+            return;
+        }
+        let job = self.run.jobs.remove(0);
+        if matches!(job.purpose, Purpose::Reselect) {
+            self.restore_recorder();
+        }
+    }
+
+    /// Drops every job: the simulation is being replaced.
+    pub(super) fn drop_jobs(&mut self) {
+        self.run.jobs.clear();
+    }
+
+    /// The run's recorder back after a re-run for a plot failed or was stopped: the run
+    /// records its previous selection again (re-run from its start at once).
+    fn restore_recorder(&mut self) {
+        let previous = self.sim.options().selection.clone();
+        if let Err(e) = self.sim.reselect(previous) {
+            self.error(format!("the plots lost their history: {e}"));
+        }
+    }
+
+    /// Moves the job on for at most `budget` of wall time, in chunks of [`CHUNK_STEPS`].
+    pub(super) fn advance_job(&mut self, budget: Duration) {
+        let Some(job) = self.run.jobs.first_mut() else {
+            return;
+        };
+        let start = Instant::now();
+        let outcome = loop {
+            let stepped = match &mut job.purpose {
+                Purpose::Reselect => job.rerun.advance(CHUNK_STEPS, |_| Ok::<(), String>(())),
+                Purpose::ExportCsv { sink, .. } => job.rerun.advance(CHUNK_STEPS, |s| {
+                    sink.row(s.last_row()).map_err(|e| e.to_string())
+                }),
+            };
+            match stepped {
+                Ok(false) if start.elapsed() < budget => continue,
+                Ok(false) => return,
+                Ok(true) => break Ok(()),
+                Err(e) => break Err(e.to_string()),
+            }
+        };
+        let job = self.run.jobs.remove(0);
+        self.finish_job(job, outcome);
+    }
+
+    fn finish_job(&mut self, job: Job, outcome: Result<(), String>) {
+        let ms = job.started.elapsed().as_secs_f64() * 1e3;
+        match (job.purpose, outcome) {
+            (Purpose::Reselect, Ok(())) => {
+                if let Err(e) = self.sim.adopt(job.rerun) {
+                    self.error(format!("cannot show this plot: {e}"));
+                    self.restore_recorder();
+                } else if ms > 1000.0 {
+                    let t_s = self.sim.t_s();
+                    self.info(format!(
+                        "re-ran {t_s:.0} s of simulation for this plot in {ms:.0} ms"
+                    ));
+                }
+            }
+            (Purpose::Reselect, Err(e)) => {
+                self.error(format!("cannot show this plot: {e}"));
+                self.restore_recorder();
+            }
+            (Purpose::ExportCsv { name, sink }, Ok(())) => {
+                let result = sink.into_inner().map(|(bytes, rows)| {
+                    (
+                        bytes,
+                        format!("{rows} rows, every sample, re-run from t = 0"),
+                    )
+                });
+                match result {
+                    Ok((bytes, what)) => self.save(&name, bytes, Ok(what)),
+                    Err(e) => self.error(format!("export failed: {e}")),
+                }
+            }
+            (Purpose::ExportCsv { .. }, Err(e)) => self.error(format!("export failed: {e}")),
+        }
+    }
+}
