@@ -11,7 +11,7 @@
 //! `binaryen` in `.tools/`, Chromium and chromedriver for `test`), without ever prompting.
 
 mod cmd;
-mod serve;
+use attlab_serve as serve;
 mod site;
 mod size;
 mod suite;

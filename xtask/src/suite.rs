@@ -2,7 +2,8 @@
 //! table and the plain closing line `N passed, M failed`.
 
 use crate::cmd::{self, Result};
-use crate::{serve, site, tools};
+use crate::{site, tools};
+use attlab_serve as serve;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -218,7 +219,7 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     browser.env("WASM_BINDGEN_TEST_TIMEOUT", "600");
     suite.tests("test (wasm, headless Chromium)", browser)?;
     let dist = suite.step("build site (dist/)", || site::build(true))?;
-    let server = suite.step("serve dist/", || serve::start(&dist, 0))?;
+    let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture --skip soak");
     page.env("ATTLAB_PAGE_URL", server.url());

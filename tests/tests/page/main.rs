@@ -11,23 +11,18 @@
 use base64::Engine as _;
 use serde_json::{Value, json};
 use std::collections::HashSet;
-use std::io::{BufRead, BufReader, Write};
 use std::net::{TcpListener, TcpStream};
 use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
 mod checks;
 mod driver;
-mod server;
 mod soak;
 
 use checks::*;
 use driver::*;
-use server::*;
 
 /// The real Chromium binary (`/usr/bin/chromium` is a wrapper script).
 const CHROMIUM: &str = "/usr/lib/chromium/chromium";
@@ -155,7 +150,7 @@ fn page_renders_without_errors() {
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_DIST"]
 fn page_works_offline_after_one_visit() {
     let dist = PathBuf::from(std::env::var("ATTLAB_DIST").expect("set ATTLAB_DIST to dist/"));
-    let mut server = StaticServer::start(dist);
+    let mut server = attlab_serve::start(&dist, 0).expect("serve dist/ on loopback");
     let url = server.url();
     let driver = Driver::start();
     let session = Session::new(&driver);
@@ -179,10 +174,10 @@ fn page_works_offline_after_one_visit() {
         start.elapsed().as_secs_f64()
     );
     let _ = session.console();
-    server.cut();
+    server.stop();
     // The network is cut: nothing listens on the port any more.
     assert!(
-        TcpStream::connect(("127.0.0.1", server.port)).is_err(),
+        TcpStream::connect(("127.0.0.1", server.port())).is_err(),
         "the server still answers"
     );
     session

@@ -1,12 +1,14 @@
 //! A small static file server for `dist/` on the loopback interface, with the MIME types a
-//! wasm page needs (`application/wasm` for `.wasm`, `text/javascript` for `.js`, …).
+//! wasm page needs (`application/wasm` for `.wasm`, `text/javascript` for `.js`, …). One
+//! server for `cargo xtask serve`, `cargo xtask test` and the page tests, which can stop it
+//! (the offline test's network cut).
 
-use crate::cmd::Result;
 use std::fs::File;
-use std::net::SocketAddr;
+use std::net::{SocketAddr, TcpStream};
 use std::path::{Component, Path, PathBuf};
 use std::sync::Arc;
 use std::thread;
+use std::time::{Duration, Instant};
 use tiny_http::{Header, Request, Response, Server};
 
 /// Worker threads answering requests.
@@ -16,6 +18,7 @@ const WORKERS: usize = 4;
 pub struct Running {
     /// The bound address (`127.0.0.1:PORT`).
     pub addr: SocketAddr,
+    server: Option<Arc<Server>>,
     workers: Vec<thread::JoinHandle<()>>,
 }
 
@@ -25,16 +28,46 @@ impl Running {
         format!("http://{}/", self.addr)
     }
 
+    /// The bound port.
+    pub fn port(&self) -> u16 {
+        self.addr.port()
+    }
+
     /// Blocks for as long as the server runs (until the process is stopped).
-    pub fn wait(self) {
-        for worker in self.workers {
+    pub fn wait(mut self) {
+        for worker in self.workers.drain(..) {
             let _ = worker.join();
+        }
+    }
+
+    /// Stops serving; returns once the port refuses connections (at most after 2 s).
+    pub fn stop(&mut self) {
+        if let Some(server) = self.server.take() {
+            for _ in 0..self.workers.len() {
+                server.unblock();
+            }
+        }
+        for worker in self.workers.drain(..) {
+            let _ = worker.join();
+        }
+        // The listener closes when tiny_http's accept thread sees the server gone.
+        let deadline = Instant::now() + Duration::from_secs(2);
+        while TcpStream::connect(self.addr).is_ok() && Instant::now() < deadline {
+            thread::sleep(Duration::from_millis(10));
+        }
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        if self.server.is_some() {
+            self.stop();
         }
     }
 }
 
 /// Starts serving `dir` on `127.0.0.1:port` (`0` picks a free port) in background threads.
-pub fn start(dir: &Path, port: u16) -> Result<Running> {
+pub fn start(dir: &Path, port: u16) -> Result<Running, String> {
     let server = Server::http(("127.0.0.1", port))
         .map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
     let addr = server
@@ -54,7 +87,11 @@ pub fn start(dir: &Path, port: u16) -> Result<Running> {
             })
         })
         .collect();
-    Ok(Running { addr, workers })
+    Ok(Running {
+        addr,
+        server: Some(server),
+        workers,
+    })
 }
 
 /// Answers one request with the file it names, or 404.
@@ -75,7 +112,7 @@ fn respond(root: &Path, request: Request) {
         }
     };
     if let Err(e) = result {
-        eprintln!("xtask serve: writing a response failed: {e}");
+        eprintln!("attlab-serve: writing a response failed: {e}");
     }
 }
 
@@ -169,5 +206,24 @@ mod tests {
         let root = std::env::temp_dir();
         assert_eq!(resolve(&root, "/../etc/passwd"), None);
         assert_eq!(resolve(&root, "/%2e%2e/etc/passwd"), None);
+    }
+
+    #[test]
+    fn serves_a_wasm_file_with_its_type_and_stops() {
+        use std::io::{Read, Write};
+        let dir = std::env::temp_dir().join(format!("attlab-serve-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("a.wasm"), b"\0asm").unwrap();
+        let mut server = start(&dir, 0).unwrap();
+        let mut stream = TcpStream::connect(server.addr).unwrap();
+        stream
+            .write_all(b"GET /a.wasm HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+            .unwrap();
+        let mut reply = String::new();
+        stream.read_to_string(&mut reply).unwrap();
+        assert!(reply.starts_with("HTTP/1.1 200"), "{reply}");
+        assert!(reply.contains("application/wasm"), "{reply}");
+        server.stop();
+        assert!(TcpStream::connect(server.addr).is_err(), "still listening");
     }
 }
