@@ -27,7 +27,6 @@ const LONG_FNS: &[(&str, &str, usize)] = &[
         "reproduce",
         119,
     ),
-    ("crate/src/labs/free_rotation.rs", "reproduce", 113),
     ("crate/src/labs/p2_tabletsat/sensors.rs", "sample", 101),
     ("web/src/render/plots.rs", "show", 96),
     ("crate/src/bin/cli/bench.rs", "bench", 95),
