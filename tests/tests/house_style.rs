@@ -22,11 +22,6 @@ const LONG_FNS: &[(&str, &str, usize)] = &[
     ("tests/tests/page/soak.rs", "run", 134),
     ("crate/src/labs/p4_quadrotor/reproduce.rs", "reproduce", 129),
     ("crate/src/sim/derived.rs", "derive", 122),
-    (
-        "crate/src/labs/p5_sensitivity/reproduce.rs",
-        "reproduce",
-        119,
-    ),
     ("crate/src/labs/p2_tabletsat/sensors.rs", "sample", 101),
     ("web/src/render/plots.rs", "show", 96),
     ("crate/src/bin/cli/bench.rs", "bench", 95),

@@ -1,0 +1,69 @@
+//! The truth: the reference attitude, held still (the paper's experiment) or turned at a
+//! constant or harmonic rate about a fixed axis.
+
+use crate::model::{ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
+use nalgebra::{UnitQuaternion, Vector3};
+
+/// The fixed rate axis of the turning profiles.
+fn rate_axis() -> Vector3<f64> {
+    Vector3::new(1.0, 2.0, 3.0).normalize()
+}
+
+/// The truth: the reference attitude turned by the profile's rate.
+pub(super) struct Turning {
+    q: UnitQuaternion<f64>,
+    t_s: f64,
+    profile: usize,
+    rate_rad_s: f64,
+    freq_rad_s: f64,
+    axes: [usize; 3],
+}
+
+impl Turning {
+    /// At `reference` (the sequence `axes`), moving as `p`'s profile says.
+    pub(super) fn new(p: &ParamValues, reference: UnitQuaternion<f64>, axes: [usize; 3]) -> Self {
+        Self {
+            q: reference,
+            t_s: 0.0,
+            profile: p.index("profile"),
+            rate_rad_s: p.get("rate_deg_s").to_radians(),
+            freq_rad_s: p.get("rate_freq_rad_s"),
+            axes,
+        }
+    }
+
+    fn rate(&self, t: f64) -> Vector3<f64> {
+        match self.profile {
+            0 => Vector3::zeros(),
+            1 => rate_axis() * self.rate_rad_s,
+            _ => rate_axis() * self.rate_rad_s * (self.freq_rad_s * t).sin(),
+        }
+    }
+}
+
+impl TruthModel for Turning {
+    fn apply_params(&mut self, _p: &ParamValues) {}
+
+    fn step(&mut self, dt_s: f64) {
+        let t0 = self.t_s;
+        self.q = crate::math::step_quaternion_rk4(&self.q, |f| self.rate(t0 + f * dt_s), dt_s);
+        self.t_s += dt_s;
+    }
+
+    fn state(&self) -> TruthState {
+        TruthState::new(self.t_s, self.q, self.rate(self.t_s))
+    }
+
+    fn extra_series(&self) -> Vec<SeriesSpec> {
+        (1..=3)
+            .map(|i| {
+                SeriesSpec::new(format!("truth.angle_{i}_rad"), "rad", SeriesGroup::Attitude)
+                    .labelled(format!("angle {i} of the sequence"))
+            })
+            .collect()
+    }
+
+    fn extra_values(&self, out: &mut [f64]) {
+        out.copy_from_slice(&crate::math::sequence_from_quaternion(self.axes, &self.q));
+    }
+}
