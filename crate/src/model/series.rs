@@ -76,7 +76,7 @@ pub struct SeriesSpec {
     /// `source.quantity`, e.g. `quat-rk4.err_deg`.
     pub name: String,
     /// What a legend shows, without the unit: the source and the quantity in words, e.g.
-    /// "ST+Gyro [λ,ω]: attitude error about x" (the name itself until someone labels it).
+    /// "ST+Gyro \[λ,ω\]: attitude error about x" (the name itself until someone labels it).
     pub label: String,
     /// Unit ("" when dimensionless).
     pub unit: &'static str,

@@ -1,4 +1,4 @@
-//! Panels: they read [`AppState`] and emit [`Command`](crate::state::Command)s, never changing the state
+//! Panels: they read [`AppState`] and emit [`Command`]s, never changing the state
 //! themselves. The generic lab panel serves every lab from its parameter specs and recorded
 //! series; a lab that needs its own controls gets its own file here.
 

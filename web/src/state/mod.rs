@@ -1,8 +1,9 @@
 //! The app's state and the one place that changes it. Panels read [`AppState`] and emit
 //! [`Command`]s; [`AppState::apply`] carries them out after the frame is drawn. The state is
-//! in parts, each owning its commands: the run ([`run`]: the simulation, the clock, sweeps),
-//! the view ([`view`]: tab, focus, hidden sources, presenter mode), I/O ([`io`]: logs,
-//! exports) and the link ([`url`]). Nothing outside `apply` changes it: the parts are read
+//! in parts, each owning its commands: the run ([`RunCommand`]: the simulation, the clock,
+//! sweeps, jobs), the view ([`ViewCommand`]: tab, focus, hidden sources, presenter mode), I/O
+//! ([`IoCommand`]: logs, exports) and the link ([`UrlCommand`]). Nothing outside `apply`
+//! changes it: the parts are read
 //! through `&` accessors, and what the app must do outside the state (copy to the
 //! clipboard, make a PNG) comes back from `apply` as an [`Effect`].
 //!
