@@ -1,7 +1,6 @@
 //! A small static file server for `dist/` on the loopback interface, with the MIME types a
-//! wasm page needs (`application/wasm` for `.wasm`, `text/javascript` for `.js`, …). One
-//! server for `cargo xtask serve`, `cargo xtask test` and the page tests, which can stop it
-//! (the offline test's network cut).
+//! wasm page needs (`application/wasm` for `.wasm`, `text/javascript` for `.js`, …), for
+//! `cargo xtask serve` and `cargo xtask test` (whose page tests load the site from it).
 
 use std::fs::File;
 use std::net::{SocketAddr, TcpStream};
@@ -40,7 +39,10 @@ impl Running {
         }
     }
 
-    /// Stops serving; returns once the port refuses connections (at most after 2 s).
+    /// Stops serving; returns once the port refuses new connections (at most after 2 s).
+    /// Connections a client keeps alive stay open with nobody answering on them (tiny_http
+    /// gives no way to close them), so a test that cuts the network under a browser serves
+    /// with a server of its own (`tests/tests/page/server.rs`).
     pub fn stop(&mut self) {
         if let Some(server) = self.server.take() {
             for _ in 0..self.workers.len() {
