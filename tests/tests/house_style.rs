@@ -20,7 +20,6 @@ const LONG_FNS: &[(&str, &str, usize)] = &[
     ("crate/src/labs/p2_tabletsat/reproduce.rs", "reproduce", 152),
     ("web/src/render/body3d.rs", "show", 142),
     ("tests/tests/page/soak.rs", "run", 134),
-    ("crate/src/labs/p4_quadrotor/reproduce.rs", "reproduce", 129),
     ("crate/src/sim/derived.rs", "derive", 122),
     ("crate/src/labs/p2_tabletsat/sensors.rs", "sample", 101),
     ("web/src/render/plots.rs", "show", 96),
