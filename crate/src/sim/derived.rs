@@ -8,6 +8,7 @@ use crate::math::{
     small_angle_error_body, wrap_pi,
 };
 use crate::model::{Attitude, Estimate, Estimator, StateKind, TruthState};
+use nalgebra::{UnitQuaternion, Vector3};
 
 /// Values derived from one attitude source in one step, computed only where needed.
 #[derive(Clone, Copy, Debug)]
@@ -55,39 +56,15 @@ pub(super) fn derive(
     single_axis: bool,
 ) -> Derived {
     let mut d = [f64::NAN; N_Q];
-    let has = |q: Q| needs & bit(q) != 0;
-    let deg = f64::to_degrees;
     if single_axis {
-        if let Some(a) = e.angle_rad {
-            d[Q::Angle as usize] = deg(a);
-            if let Some((t, _)) = truth
-                && let Some(ta) = t.angle_rad
-            {
-                d[Q::AngleErr as usize] = deg(a - ta);
-            }
-        }
-        if let Some(r) = e.rate_body_rad_s {
-            d[Q::Rate1 as usize] = deg(r.z);
-            if let Some((t, _)) = truth {
-                d[Q::RateErr1 as usize] = deg(r.z - t.rate_body_rad_s.z);
-            }
-        }
+        single_axis_values(&mut d, e, truth.map(|(t, _)| t));
         return Derived { values: d };
     }
     if let Some(r) = e.rate_body_rad_s {
-        if needs & (bit(Q::RateX) | bit(Q::RateY) | bit(Q::RateZ)) != 0 {
-            d[Q::RateX as usize] = deg(r.x);
-            d[Q::RateY as usize] = deg(r.y);
-            d[Q::RateZ as usize] = deg(r.z);
-        }
-        if let Some((t, _)) = truth {
-            let err = r - t.rate_body_rad_s;
-            d[Q::RateErrX as usize] = deg(err.x);
-            d[Q::RateErrY as usize] = deg(err.y);
-            d[Q::RateErrZ as usize] = deg(err.z);
-        }
+        rate_values(&mut d, needs, r, truth.map(|(t, _)| t));
     }
     // The full attitude as a quaternion, converted from (w, z) only if a column needs it.
+    let has = |q: Q| needs & bit(q) != 0;
     let q_bits = bit(Q::Yaw) | bit(Q::ErrDeg) | bit(Q::ErrX) | bit(Q::ErrY) | bit(Q::ErrZ);
     let z_from_q = has(Q::Z) && !matches!(e.attitude, Attitude::Wz(w) if w.chart == WzChart::North);
     let q = if needs & q_bits != 0 || z_from_q {
@@ -98,64 +75,17 @@ pub(super) fn derive(
     if has(Q::Yaw)
         && let Some(q) = q
     {
-        d[Q::Yaw as usize] = deg(EulerYpr::yaw_of(&q));
+        d[Q::Yaw as usize] = EulerYpr::yaw_of(&q).to_degrees();
     }
     let sphere_bits =
         bit(Q::Pitch) | bit(Q::Roll) | bit(Q::Kx) | bit(Q::Ky) | bit(Q::Kz) | bit(Q::U) | bit(Q::V);
-    let tilt_bits = bit(Q::TiltErr) | bit(Q::PitchErr) | bit(Q::RollErr);
-    let k = if needs & (sphere_bits | tilt_bits) != 0 {
-        e.attitude.vertical_in_body()
-    } else {
-        None
-    };
-    if let Some(k) = k {
-        if needs & (bit(Q::Pitch) | bit(Q::Roll) | tilt_bits) != 0 {
-            // Pitch and roll depend on the vertical only (paper 3, eqs. 24–25), so a
-            // tilt-only estimate still has them.
-            let (pitch, roll) = pitch_roll_of_vertical(&k);
-            d[Q::Pitch as usize] = deg(pitch);
-            d[Q::Roll as usize] = deg(roll);
-        }
-        d[Q::Kx as usize] = k.x;
-        d[Q::Ky as usize] = k.y;
-        d[Q::Kz as usize] = k.z;
-        if has(Q::U) || has(Q::V) {
-            // w = (a′ + jb′)/(1 + c′) (paper 3, eq. 12), recorded only away from the pole.
-            let w = if 1.0 + k.z > 0.0 {
-                Some((k.x / (1.0 + k.z), k.y / (1.0 + k.z)))
-            } else {
-                None
-            };
-            if let Some((u, v)) = w.filter(|(u, v)| u * u + v * v < W_RECORD_LIMIT * W_RECORD_LIMIT)
-            {
-                d[Q::U as usize] = u;
-                d[Q::V as usize] = v;
-            }
-        }
-        if let Some((_, td)) = truth
-            && needs & tilt_bits != 0
-        {
-            let kt = nalgebra::Vector3::new(
-                td.values[Q::Kx as usize],
-                td.values[Q::Ky as usize],
-                td.values[Q::Kz as usize],
-            );
-            let (pt, rt) = pitch_roll_of_vertical(&kt);
-            if has(Q::TiltErr) {
-                d[Q::TiltErr as usize] = deg(kt.cross(&k).norm().atan2(kt.dot(&k)));
-            }
-            d[Q::PitchErr as usize] = d[Q::Pitch as usize] - deg(pt);
-            d[Q::RollErr as usize] = deg(wrap_pi(d[Q::Roll as usize].to_radians() - rt));
-        }
+    if needs & (sphere_bits | TILT_BITS) != 0
+        && let Some(k) = e.attitude.vertical_in_body()
+    {
+        vertical_values(&mut d, needs, &k, truth.map(|(_, td)| td));
     }
     if has(Q::Z) {
-        // z is chart dependent; record it in paper 3's chart where that chart exists.
-        d[Q::Z as usize] = match (e.attitude, q) {
-            (Attitude::Wz(w), _) if w.chart == WzChart::North => deg(w.z_rad),
-            (_, Some(q)) => WzAttitude::from_dcm_in_chart(&dcm_from_quaternion(&q), WzChart::North)
-                .map_or(f64::NAN, |w| deg(w.z_rad)),
-            _ => f64::NAN,
-        };
+        d[Q::Z as usize] = z_deg(e, q);
     }
     if let (Some((t, _)), Some(q)) = (truth, q)
         && needs & (bit(Q::ErrDeg) | bit(Q::ErrX) | bit(Q::ErrY) | bit(Q::ErrZ)) != 0
@@ -163,12 +93,99 @@ pub(super) fn derive(
         // The error rotation in body axes, once: its angle is the total error, its
         // scaled axis the error per axis.
         let err = small_angle_error_body(&t.q_ref_from_body, &q);
-        d[Q::ErrDeg as usize] = deg(err.norm());
-        d[Q::ErrX as usize] = deg(err.x);
-        d[Q::ErrY as usize] = deg(err.y);
-        d[Q::ErrZ as usize] = deg(err.z);
+        d[Q::ErrDeg as usize] = err.norm().to_degrees();
+        d[Q::ErrX as usize] = err.x.to_degrees();
+        d[Q::ErrY as usize] = err.y.to_degrees();
+        d[Q::ErrZ as usize] = err.z.to_degrees();
     }
     Derived { values: d }
+}
+
+/// The tilt errors' bits: they need the vertical of the estimate and of the truth.
+const TILT_BITS: u32 =
+    (1 << Q::TiltErr as u32) | (1 << Q::PitchErr as u32) | (1 << Q::RollErr as u32);
+
+/// A single-axis source's angle and rate (about its z), with their errors.
+fn single_axis_values(d: &mut [f64; N_Q], e: &Estimate, truth: Option<&TruthState>) {
+    let deg = f64::to_degrees;
+    if let Some(a) = e.angle_rad {
+        d[Q::Angle as usize] = deg(a);
+        if let Some(ta) = truth.and_then(|t| t.angle_rad) {
+            d[Q::AngleErr as usize] = deg(a - ta);
+        }
+    }
+    if let Some(r) = e.rate_body_rad_s {
+        d[Q::Rate1 as usize] = deg(r.z);
+        if let Some(t) = truth {
+            d[Q::RateErr1 as usize] = deg(r.z - t.rate_body_rad_s.z);
+        }
+    }
+}
+
+/// A three-axis source's body rate `r` (if asked for) and its error against the truth.
+fn rate_values(d: &mut [f64; N_Q], needs: u32, r: Vector3<f64>, truth: Option<&TruthState>) {
+    let deg = f64::to_degrees;
+    if needs & (bit(Q::RateX) | bit(Q::RateY) | bit(Q::RateZ)) != 0 {
+        d[Q::RateX as usize] = deg(r.x);
+        d[Q::RateY as usize] = deg(r.y);
+        d[Q::RateZ as usize] = deg(r.z);
+    }
+    if let Some(t) = truth {
+        let err = r - t.rate_body_rad_s;
+        d[Q::RateErrX as usize] = deg(err.x);
+        d[Q::RateErrY as usize] = deg(err.y);
+        d[Q::RateErrZ as usize] = deg(err.z);
+    }
+}
+
+/// What the vertical `k` in body axes gives: pitch and roll, k itself, w = u + jv away from
+/// the pole, and (with the truth's derived values) the tilt errors.
+fn vertical_values(d: &mut [f64; N_Q], needs: u32, k: &Vector3<f64>, truth: Option<&Derived>) {
+    let has = |q: Q| needs & bit(q) != 0;
+    let deg = f64::to_degrees;
+    if needs & (bit(Q::Pitch) | bit(Q::Roll) | TILT_BITS) != 0 {
+        // Pitch and roll depend on the vertical only (paper 3, eqs. 24–25), so a tilt-only
+        // estimate still has them.
+        let (pitch, roll) = pitch_roll_of_vertical(k);
+        d[Q::Pitch as usize] = deg(pitch);
+        d[Q::Roll as usize] = deg(roll);
+    }
+    d[Q::Kx as usize] = k.x;
+    d[Q::Ky as usize] = k.y;
+    d[Q::Kz as usize] = k.z;
+    if (has(Q::U) || has(Q::V)) && 1.0 + k.z > 0.0 {
+        // w = (a′ + jb′)/(1 + c′) (paper 3, eq. 12), recorded only away from the pole.
+        let (u, v) = (k.x / (1.0 + k.z), k.y / (1.0 + k.z));
+        if u * u + v * v < W_RECORD_LIMIT * W_RECORD_LIMIT {
+            d[Q::U as usize] = u;
+            d[Q::V as usize] = v;
+        }
+    }
+    if let Some(td) = truth
+        && needs & TILT_BITS != 0
+    {
+        let kt = Vector3::new(
+            td.values[Q::Kx as usize],
+            td.values[Q::Ky as usize],
+            td.values[Q::Kz as usize],
+        );
+        let (pt, rt) = pitch_roll_of_vertical(&kt);
+        if has(Q::TiltErr) {
+            d[Q::TiltErr as usize] = deg(kt.cross(k).norm().atan2(kt.dot(k)));
+        }
+        d[Q::PitchErr as usize] = d[Q::Pitch as usize] - deg(pt);
+        d[Q::RollErr as usize] = deg(wrap_pi(d[Q::Roll as usize].to_radians() - rt));
+    }
+}
+
+/// z (deg), chart dependent: in paper 3's chart where that chart exists.
+fn z_deg(e: &Estimate, q: Option<UnitQuaternion<f64>>) -> f64 {
+    match (e.attitude, q) {
+        (Attitude::Wz(w), _) if w.chart == WzChart::North => w.z_rad.to_degrees(),
+        (_, Some(q)) => WzAttitude::from_dcm_in_chart(&dcm_from_quaternion(&q), WzChart::North)
+            .map_or(f64::NAN, |w| w.z_rad.to_degrees()),
+        _ => f64::NAN,
+    }
 }
 
 #[cfg(test)]
