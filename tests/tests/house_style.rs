@@ -17,7 +17,6 @@ const LONG_FILES: &[(&str, usize)] = &[];
 const LONG_FNS: &[(&str, &str, usize)] = &[
     ("web/src/render/body3d.rs", "show", 142),
     ("tests/tests/page/soak.rs", "run", 134),
-    ("crate/src/labs/p2_tabletsat/sensors.rs", "sample", 101),
     ("web/src/render/plots.rs", "show", 96),
     ("crate/src/bin/cli/bench.rs", "bench", 95),
     ("web/src/panels/sweeps.rs", "heat_map", 91),

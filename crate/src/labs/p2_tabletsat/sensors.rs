@@ -160,6 +160,90 @@ impl Sensors {
         s
     }
 
+    /// The sun in orbital axes: the real one, or (the degenerate-geometry experiment) the
+    /// field direction turned by the chosen angle about an axis across it.
+    fn sun_orbit(
+        &self,
+        b_true_orbit: &Vector3<f64>,
+        q_eci_orbit: &UnitQuaternion<f64>,
+        sun_eci: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        match self.sun_along_field_rad {
+            Some(angle) => {
+                let b = b_true_orbit.normalize();
+                let across = b
+                    .cross(&Vector3::x())
+                    .try_normalize(1e-9)
+                    .unwrap_or_else(Vector3::y);
+                UnitQuaternion::from_scaled_axis(across * angle) * b
+            }
+            None => q_eci_orbit.inverse_transform_vector(sun_eci),
+        }
+    }
+
+    /// The gyro's reading when its clock ticks: rate + bias + bias walk + noise, clipped
+    /// to ±250 °/s (the walk moves every step).
+    fn gyro_reading(
+        &mut self,
+        truth: &TruthState,
+        dt_s: f64,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<Vector3<f64>> {
+        for w in &mut self.gyro_walk {
+            w.step(dt_s, rng);
+        }
+        let walk = Vector3::new(
+            self.gyro_walk[0].value,
+            self.gyro_walk[1].value,
+            self.gyro_walk[2].value,
+        );
+        if !self.gyro_clock.tick() {
+            return None;
+        }
+        let noise = WhiteNoise {
+            sigma: self.gyro_sigma_rad_s,
+        };
+        let range = 250f64.to_radians();
+        let g = truth.rate_body_rad_s
+            + self.gyro_bias_rad_s
+            + walk
+            + Vector3::from_fn(|_, _| noise.sample(rng));
+        Some(g.map(|x| x.clamp(-range, range)))
+    }
+
+    /// The magnetometer's reading of the true field: + bias + noise, clipped to ±200 µT;
+    /// none if it is not finite.
+    fn mag_reading(
+        &self,
+        q_orbit_from_body: &UnitQuaternion<f64>,
+        b_true_orbit: &Vector3<f64>,
+        rng: &mut ChaCha8Rng,
+    ) -> Option<Vector3<f64>> {
+        let noise = WhiteNoise {
+            sigma: self.mag_sigma_nt,
+        };
+        let b = q_orbit_from_body.inverse_transform_vector(b_true_orbit)
+            + self.mag_bias_nt
+            + Vector3::from_fn(|_, _| noise.sample(rng));
+        b.iter()
+            .all(|x| x.is_finite())
+            .then(|| b.map(|x| x.clamp(-200_000.0, 200_000.0)))
+    }
+
+    /// Whether the star tracker can give an attitude: slow enough, the sun outside its
+    /// exclusion angle (or eclipsed), the Earth's limb outside its own.
+    fn star_available(&self, truth: &TruthState, sun_body: &Vector3<f64>, eclipse: bool) -> bool {
+        let q = truth.q_ref_from_body;
+        let boresight = Vector3::from(STAR_BORESIGHT);
+        let nadir_body = q.inverse_transform_vector(&-Vector3::z());
+        let earth_radius_angle = (EARTH_RADIUS_M / self.orbit.radius_m).asin();
+        let w_rel = truth.rate_body_rad_s
+            - q.inverse_transform_vector(&self.orbit.frame_rate_orbit_rad_s());
+        truth.rate_body_rad_s.norm().max(w_rel.norm()) <= self.star_max_rate_rad_s
+            && (eclipse || boresight.angle(sun_body) > self.star_sun_exclusion_rad)
+            && boresight.angle(&nadir_body) > earth_radius_angle + self.star_earth_exclusion_rad
+    }
+
     /// The inertial position (m), the sun direction (unit, inertial) and `q_eci_from_orbit`.
     fn geometry(&self, t_s: f64) -> (Vector3<f64>, Vector3<f64>, UnitQuaternion<f64>) {
         let jd = self.epoch.julian_date(t_s);
@@ -284,52 +368,16 @@ impl SensorModel for Sensors {
             );
         }
         let (b_true_orbit, mag_ref) = self.fields;
-        let sun_orbit = match self.sun_along_field_rad {
-            // The field direction turned by the angle about an axis across it.
-            Some(angle) => {
-                let b = b_true_orbit.normalize();
-                let across = b
-                    .cross(&Vector3::x())
-                    .try_normalize(1e-9)
-                    .unwrap_or_else(Vector3::y);
-                UnitQuaternion::from_scaled_axis(across * angle) * b
-            }
-            None => q_eci_orbit.inverse_transform_vector(&sun_eci),
-        };
+        let sun_orbit = self.sun_orbit(&b_true_orbit, &q_eci_orbit, &sun_eci);
         let sun_body = q.inverse_transform_vector(&sun_orbit);
-        for w in &mut self.gyro_walk {
-            w.step(dt_s, rng);
-        }
-        let walk = Vector3::new(
-            self.gyro_walk[0].value,
-            self.gyro_walk[1].value,
-            self.gyro_walk[2].value,
-        );
+        // The random draws keep their order: gyro walk and noise, magnetometer, sun, star.
         let mut m = Measurements {
             t_s: t,
+            gyro_body_rad_s: self.gyro_reading(truth, dt_s, rng),
             ..Measurements::default()
         };
-        if self.gyro_clock.tick() {
-            let noise = WhiteNoise {
-                sigma: self.gyro_sigma_rad_s,
-            };
-            let range = 250f64.to_radians();
-            let g = truth.rate_body_rad_s
-                + self.gyro_bias_rad_s
-                + walk
-                + Vector3::from_fn(|_, _| noise.sample(rng));
-            m.gyro_body_rad_s = Some(g.map(|x| x.clamp(-range, range)));
-        }
         if mag_due {
-            let noise = WhiteNoise {
-                sigma: self.mag_sigma_nt,
-            };
-            let b = q.inverse_transform_vector(&b_true_orbit)
-                + self.mag_bias_nt
-                + Vector3::from_fn(|_, _| noise.sample(rng));
-            if b.iter().all(|x| x.is_finite()) {
-                m.mag_body_nt = Some(b.map(|x| x.clamp(-200_000.0, 200_000.0)));
-            }
+            m.mag_body_nt = self.mag_reading(&q, &b_true_orbit, rng);
         }
         let sun_seen = !eclipse
             && SUN_HEADS
@@ -338,14 +386,7 @@ impl SensorModel for Sensors {
         if self.sun_clock.tick() && sun_seen {
             m.sun_body = Some(noisy_direction(&sun_body, self.sun_sigma_rad, rng).normalize());
         }
-        let boresight = Vector3::from(STAR_BORESIGHT);
-        let nadir_body = q.inverse_transform_vector(&-Vector3::z());
-        let earth_radius_angle = (EARTH_RADIUS_M / self.orbit.radius_m).asin();
-        let w_rel = truth.rate_body_rad_s
-            - q.inverse_transform_vector(&self.orbit.frame_rate_orbit_rad_s());
-        let star_ok = truth.rate_body_rad_s.norm().max(w_rel.norm()) <= self.star_max_rate_rad_s
-            && (eclipse || boresight.angle(&sun_body) > self.star_sun_exclusion_rad)
-            && boresight.angle(&nadir_body) > earth_radius_angle + self.star_earth_exclusion_rad;
+        let star_ok = self.star_available(truth, &sun_body, eclipse);
         if self.star_clock.tick() && star_ok {
             let noise = WhiteNoise {
                 sigma: self.star_sigma_rad,
