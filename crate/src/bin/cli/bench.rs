@@ -66,91 +66,92 @@ pub(super) fn bench(steps: usize, only: Option<&'static dyn Lab>) {
     );
     let selected: Vec<&'static dyn Lab> = only.map_or_else(|| labs::all().to_vec(), |l| vec![l]);
     for lab in &selected {
-        let params = ParamValues::defaults(lab.params());
-        let mut sim = Simulation::new(*lab, params.clone(), 1);
-        let step_ns = time_ns(steps, || sim.step());
-        let memory = sim.recorder().memory_bytes();
-        let series = sim.specs().len();
-        let mut all = Simulation::with_options(*lab, params.clone(), 1, all_series())
-            .map_err(|e| e.to_string());
-        let all_ns = match &mut all {
-            Ok(sim) => time_ns(steps, || sim.step()),
-            Err(_) => f64::NAN,
-        };
-        let mut bare = Simulation::with_options(*lab, params.clone(), 1, SimOptions::named(&[]))
-            .map_err(|e| e.to_string());
-        let bare_ns = match &mut bare {
-            Ok(sim) => time_ns(steps, || sim.step()),
-            Err(_) => f64::NAN,
-        };
-
-        let mut rng = ChaCha8Rng::seed_from_u64(1);
-        let mut run = lab.build(&params, &mut rng);
-        let dt = lab.dt_s(&params);
-        let trace = run.measurement_trace(dt, steps, &mut rng);
-        let mut sum = 0.0;
-        let mut lines = Vec::new();
-        for est in &mut run.estimators {
-            // Best of five chunks of the trace, like the simulation step.
-            let ns = trace
-                .chunks(trace.len().div_ceil(5).max(1))
-                .map(|chunk| {
-                    let t0 = Instant::now();
-                    for m in chunk {
-                        est.step(m, dt);
-                    }
-                    t0.elapsed().as_nanos() as f64 / chunk.len() as f64
-                })
-                .fold(f64::INFINITY, f64::min);
-            std::hint::black_box(est.estimate());
-            sum += ns;
-            lines.push((format!("estimator {}", est.id()), ns));
-        }
-        let aim = 2.0 * sum + 500.0;
-        println!(
-            "{:<14} {:<38} {:>10.0} {:>10}",
-            lab.id(),
-            format!("simulation step (page: {series} series)"),
-            step_ns,
-            if step_ns <= aim {
-                "within aim"
-            } else {
-                "OVER AIM"
-            }
-        );
-        println!(
-            "{:<14} {:<38} {:>10.0}",
-            "", "simulation step (every series)", all_ns
-        );
-        println!(
-            "{:<14} {:<38} {:>10.0}",
-            "", "simulation step (time only)", bare_ns
-        );
-        for (name, ns) in lines {
-            println!("{:<14} {:<38} {:>10.0}", "", name, ns);
-        }
-        println!(
-            "{:<14} {:<38} {:>10.0} {:>10}",
-            "",
-            "sum of estimator steps",
-            sum,
-            format!("×{:.2}", step_ns / sum.max(1.0))
-        );
-        println!(
-            "{:<14} {:<38} {:>10.0} {:>10}",
-            "",
-            "aim: 2 × sum + 500 ns",
-            aim,
-            format!("{:.2} of aim", step_ns / aim)
-        );
-        println!(
-            "{:<14} {:<38} {:>10.1} {:>10}",
-            "",
-            "recorder memory (MiB, fixed)",
-            memory as f64 / (1 << 20) as f64,
-            format!("{} rows full rate", sim.recorder().window())
-        );
+        bench_lab(*lab, steps);
         print_timings(*lab, steps * 10);
     }
     let _ = std::io::stdout().flush();
+}
+
+/// Nanoseconds per step of `lab`'s simulation recording `options`, best of five chunks
+/// (NaN if the selection does not exist).
+fn step_ns(lab: &'static dyn Lab, params: &ParamValues, steps: usize, options: SimOptions) -> f64 {
+    match Simulation::with_options(lab, params.clone(), 1, options) {
+        Ok(mut sim) => time_ns(steps, || sim.step()),
+        Err(_) => f64::NAN,
+    }
+}
+
+/// Each estimator's nanoseconds per step on the same measurements, best of five chunks.
+fn estimator_ns(lab: &'static dyn Lab, params: &ParamValues, steps: usize) -> Vec<(String, f64)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let mut run = lab.build(params, &mut rng);
+    let dt = lab.dt_s(params);
+    let trace = run.measurement_trace(dt, steps, &mut rng);
+    let mut lines = Vec::new();
+    for est in &mut run.estimators {
+        let ns = trace
+            .chunks(trace.len().div_ceil(5).max(1))
+            .map(|chunk| {
+                let t0 = Instant::now();
+                for m in chunk {
+                    est.step(m, dt);
+                }
+                t0.elapsed().as_nanos() as f64 / chunk.len() as f64
+            })
+            .fold(f64::INFINITY, f64::min);
+        std::hint::black_box(est.estimate());
+        lines.push((format!("estimator {}", est.id()), ns));
+    }
+    lines
+}
+
+/// One lab's table: the page's step against the aim of 2 × its estimators + 500 ns, the
+/// step recording every series and none, each estimator, and the recorder's memory.
+fn bench_lab(lab: &'static dyn Lab, steps: usize) {
+    let params = ParamValues::defaults(lab.params());
+    let mut sim = Simulation::new(lab, params.clone(), 1);
+    let page_ns = time_ns(steps, || sim.step());
+    let all_ns = step_ns(lab, &params, steps, all_series());
+    let bare_ns = step_ns(lab, &params, steps, SimOptions::named(&[]));
+    let lines = estimator_ns(lab, &params, steps);
+    let sum: f64 = lines.iter().map(|(_, ns)| ns).sum();
+    let aim = 2.0 * sum + 500.0;
+    let verdict = if page_ns <= aim {
+        "within aim"
+    } else {
+        "OVER AIM"
+    };
+    let series = sim.specs().len();
+    let row = |name: &str, ns: f64, note: &str| {
+        println!("{:<14} {:<38} {:>10.0} {:>10}", "", name, ns, note);
+    };
+    println!(
+        "{:<14} {:<38} {:>10.0} {:>10}",
+        lab.id(),
+        format!("simulation step (page: {series} series)"),
+        page_ns,
+        verdict
+    );
+    row("simulation step (every series)", all_ns, "");
+    row("simulation step (time only)", bare_ns, "");
+    for (name, ns) in &lines {
+        row(name, *ns, "");
+    }
+    row(
+        "sum of estimator steps",
+        sum,
+        &format!("×{:.2}", page_ns / sum.max(1.0)),
+    );
+    row(
+        "aim: 2 × sum + 500 ns",
+        aim,
+        &format!("{:.2} of aim", page_ns / aim),
+    );
+    println!(
+        "{:<14} {:<38} {:>10.1} {:>10}",
+        "",
+        "recorder memory (MiB, fixed)",
+        sim.recorder().memory_bytes() as f64 / (1 << 20) as f64,
+        format!("{} rows full rate", sim.recorder().window())
+    );
 }
