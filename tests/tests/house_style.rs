@@ -17,8 +17,6 @@ const LONG_FILES: &[(&str, usize)] = &[];
 const LONG_FNS: &[(&str, &str, usize)] = &[
     ("web/src/render/body3d.rs", "show", 142),
     ("tests/tests/page/soak.rs", "run", 134),
-    ("web/src/render/plots.rs", "show", 96),
-    ("web/src/panels/sweeps.rs", "heat_map", 91),
     ("web/src/render/body3d.rs", "init", 88),
 ];
 

@@ -290,18 +290,8 @@ fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         ui.label("A heat map needs at least two positive values on each axis.");
         return;
     }
-    let log = |v: &[f64]| -> Vec<f64> { v.iter().map(|x| x.log10()).collect() };
-    let (lx, ly) = (log(xs), log(ys));
-    let dx = (lx[lx.len() - 1] - lx[0]) / (lx.len() - 1) as f64;
-    let dy = (ly[ly.len() - 1] - ly[0]) / (ly.len() - 1) as f64;
-    // Row by row from the bottom: row = grid value, column = first value.
-    let mut values = vec![f64::NAN; xs.len() * ys.len()];
-    for (k, p) in s.points.iter().enumerate() {
-        let (col, row) = (k / ys.len(), k % ys.len());
-        if let Some(j) = p.objectives.first().filter(|j| **j > 0.0) {
-            values[row * xs.len() + col] = j.log10();
-        }
-    }
+    let grid = LogGrid::new(xs, ys);
+    let values = grid_values(s, xs.len(), ys.len());
     let finite: Vec<f64> = values.iter().copied().filter(|v| v.is_finite()).collect();
     let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -322,12 +312,10 @@ fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         .small(),
     );
     let heat = Heatmap::new(values, xs.len())
-        .at(PlotPoint::new(lx[0] - dx / 2.0, ly[0] - dy / 2.0))
-        .tile_size(dx as f32, dy as f32)
+        .at(PlotPoint::new(grid.x0, grid.y0))
+        .tile_size(grid.dx as f32, grid.dy as f32)
         .show_labels(false)
         .custom_mapping(Box::new(move |v| palette((v - lo) / span)));
-    let (x0, x1) = (lx[0] - dx / 2.0, lx[lx.len() - 1] + dx / 2.0);
-    let (y0, y1) = (ly[0] - dy / 2.0, ly[ly.len() - 1] + dy / 2.0);
     let lines = scoring
         .overlay
         .map_or_else(Vec::new, |f| f(app.sim().params()));
@@ -336,38 +324,84 @@ fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(format!("log10 {}", spec.key))
         .y_axis_label(format!("log10 {}", axis.key))
-        .include_x(x0)
-        .include_x(x1)
-        .include_y(y0)
-        .include_y(y1)
+        .include_x(grid.x0)
+        .include_x(grid.x1)
+        .include_y(grid.y0)
+        .include_y(grid.y1)
         .show(ui, |plot| {
             plot.add(heat);
             for (k, (label, pts)) in lines.iter().enumerate() {
-                // In the map's log coordinates, clipped to it.
-                let pts: Vec<[f64; 2]> = pts
-                    .iter()
-                    .filter(|p| p[0] > 0.0 && p[1] > 0.0)
-                    .map(|p| [p[0].log10(), p[1].log10()])
-                    .filter(|p| (x0..=x1).contains(&p[0]) && (y0..=y1).contains(&p[1]))
-                    .collect();
                 plot.line(
-                    Line::new(label.clone(), pts)
+                    Line::new(label.clone(), grid.clip(pts))
                         .color(source_color(k + 1))
                         .width(2.0),
                 );
             }
             if let Some((b, g)) = best.and_then(|b| b.grid_value.map(|g| (b, g))) {
-                let xy = [b.value.log10(), g.log10()];
-                plot.points(
-                    Points::new("optimum", vec![xy])
-                        .radius(8.0)
-                        .filled(false)
-                        .color(Color32::WHITE),
-                );
-                plot.text(
-                    Text::new("", PlotPoint::new(xy[0], xy[1] + dy * 0.6), "optimum")
-                        .color(Color32::WHITE),
-                );
+                mark_optimum(plot, [b.value.log10(), g.log10()], grid.dy);
             }
         });
+}
+
+/// A heat map's cells in log10 coordinates: their size and the map's edges.
+struct LogGrid {
+    dx: f64,
+    dy: f64,
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+}
+
+impl LogGrid {
+    /// Cells centred on log10 of `xs` and `ys` (positive, at least two each).
+    fn new(xs: &[f64], ys: &[f64]) -> Self {
+        let log = |v: &[f64]| -> Vec<f64> { v.iter().map(|x| x.log10()).collect() };
+        let (lx, ly) = (log(xs), log(ys));
+        let dx = (lx[lx.len() - 1] - lx[0]) / (lx.len() - 1) as f64;
+        let dy = (ly[ly.len() - 1] - ly[0]) / (ly.len() - 1) as f64;
+        Self {
+            dx,
+            dy,
+            x0: lx[0] - dx / 2.0,
+            x1: lx[lx.len() - 1] + dx / 2.0,
+            y0: ly[0] - dy / 2.0,
+            y1: ly[ly.len() - 1] + dy / 2.0,
+        }
+    }
+
+    /// `pts` in the map's log coordinates, clipped to it.
+    fn clip(&self, pts: &[[f64; 2]]) -> Vec<[f64; 2]> {
+        pts.iter()
+            .filter(|p| p[0] > 0.0 && p[1] > 0.0)
+            .map(|p| [p[0].log10(), p[1].log10()])
+            .filter(|p| (self.x0..=self.x1).contains(&p[0]) && (self.y0..=self.y1).contains(&p[1]))
+            .collect()
+    }
+}
+
+/// log10 of the first objective per cell, row by row from the bottom (row = grid value,
+/// column = first value); NaN where a cell is not run yet or not positive.
+fn grid_values(s: &Sweep, columns: usize, rows: usize) -> Vec<f64> {
+    let mut values = vec![f64::NAN; columns * rows];
+    for (k, p) in s.points.iter().enumerate() {
+        let (col, row) = (k / rows, k % rows);
+        if let Some(j) = p.objectives.first().filter(|j| **j > 0.0) {
+            values[row * columns + col] = j.log10();
+        }
+    }
+    values
+}
+
+/// The optimum ringed and named on the map.
+fn mark_optimum(plot: &mut egui_plot::PlotUi<'_>, xy: [f64; 2], dy: f64) {
+    plot.points(
+        Points::new("optimum", vec![xy])
+            .radius(8.0)
+            .filled(false)
+            .color(Color32::WHITE),
+    );
+    plot.text(
+        Text::new("", PlotPoint::new(xy[0], xy[1] + dy * 0.6), "optimum").color(Color32::WHITE),
+    );
 }

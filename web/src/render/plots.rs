@@ -158,9 +158,39 @@ pub fn show(
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
         t => t,
     };
-    // (series index, colour): by source, so an estimator has one colour everywhere; a figure
-    // that shows several series of one source tells them apart by position.
-    let lines: Vec<(usize, Color32)> = match tab {
+    let lines = tab_lines(rec, figures, tab);
+    let log = match tab {
+        Tab::Figure(f) => figures[f].log,
+        Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
+    };
+    Plot::new(("series_plot", format!("{tab:?}")))
+        .legend(Legend::default().text_style(egui::TextStyle::Small))
+        .x_axis_label("t [s]")
+        .show(ui, |plot| {
+            if state.show_outages {
+                shade_outages(plot, rec, outages);
+            }
+            for (i, color) in lines {
+                let spec = &rec.specs()[i];
+                if spec.source > 0 && hidden.contains(&spec.source) {
+                    continue;
+                }
+                let style = LineLook {
+                    color,
+                    width: line_width,
+                    log,
+                    bands: state.show_bands,
+                };
+                draw_series(plot, rec, i, style);
+            }
+        });
+}
+
+/// The series a tab draws with their colours: by source, so an estimator has one colour
+/// everywhere; a figure that shows several series of one source tells them apart by
+/// position.
+fn tab_lines(rec: &Recorder, figures: &[Figure], tab: Tab) -> Vec<(usize, Color32)> {
+    match tab {
         Tab::Figure(f) => {
             let idx: Vec<usize> = figures[f]
                 .series
@@ -177,69 +207,74 @@ pub fn show(
             .filter(|(_, s)| s.group == g)
             .map(|(i, s)| (i, source_color(s.source)))
             .collect(),
+    }
+}
+
+/// The intervals of every outage the lab declares, shaded.
+fn shade_outages(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, outages: &[Outage]) {
+    for (k, o) in outages.iter().enumerate() {
+        let Some(i) = rec.index_of(o.series) else {
+            continue;
+        };
+        for [t0, t1] in outage_intervals(rec, i, o.out_when) {
+            plot.span(
+                Span::new(o.label, t0..=t1)
+                    .fill(outage_color(k))
+                    .border_width(0.0),
+            );
+        }
+    }
+}
+
+/// How one series is drawn.
+#[derive(Clone, Copy)]
+struct LineLook {
+    color: Color32,
+    width: f32,
+    /// log10 of the values.
+    log: bool,
+    /// ±3σ bands where the series has one.
+    bands: bool,
+}
+
+/// Series `i`, broken at its missing samples, with its ±3σ band from the variance series it
+/// names (never from its name).
+fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look: LineLook) {
+    let spec = &rec.specs()[i];
+    let mut pts = rec.plot_points(i, MAX_POINTS);
+    let mut label = spec.legend();
+    if look.log {
+        for p in &mut pts {
+            p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
+        }
+        label = format!("log10 {label}");
+    }
+    for piece in Recorder::split_at_gaps(&pts) {
+        plot.line(
+            Line::new(label.clone(), piece)
+                .color(look.color)
+                .width(look.width),
+        );
+    }
+    let band = spec.band.as_ref().filter(|_| look.bands && !look.log);
+    let Some((var, scale)) = band.and_then(|(name, scale)| rec.index_of(name).map(|v| (v, *scale)))
+    else {
+        return;
     };
-    let log = match tab {
-        Tab::Figure(f) => figures[f].log,
-        Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
+    let sigma3 = |sign: f64| -> Vec<[f64; 2]> {
+        rec.plot_points(var, MAX_POINTS)
+            .into_iter()
+            .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * scale])
+            .collect()
     };
-    Plot::new(("series_plot", format!("{tab:?}")))
-        .legend(Legend::default().text_style(egui::TextStyle::Small))
-        .x_axis_label("t [s]")
-        .show(ui, |plot| {
-            for (k, o) in outages.iter().enumerate().filter(|_| state.show_outages) {
-                let Some(i) = rec.index_of(o.series) else {
-                    continue;
-                };
-                for [t0, t1] in outage_intervals(rec, i, o.out_when) {
-                    plot.span(
-                        Span::new(o.label, t0..=t1)
-                            .fill(outage_color(k))
-                            .border_width(0.0),
-                    );
-                }
-            }
-            for (i, color) in lines {
-                let spec = &rec.specs()[i];
-                if spec.source > 0 && hidden.contains(&spec.source) {
-                    continue;
-                }
-                let mut pts = rec.plot_points(i, MAX_POINTS);
-                let mut label = spec.legend();
-                if log {
-                    for p in &mut pts {
-                        p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
-                    }
-                    label = format!("log10 {label}");
-                }
-                for piece in Recorder::split_at_gaps(&pts) {
-                    plot.line(
-                        Line::new(label.clone(), piece)
-                            .color(color)
-                            .width(line_width),
-                    );
-                }
-                // ±3σ from the variance the series names (never from its name).
-                let band = spec.band.as_ref().filter(|_| state.show_bands && !log);
-                if let Some(var) =
-                    band.and_then(|(name, scale)| rec.index_of(name).map(|v| (v, *scale)))
-                {
-                    let sigma3 = |sign: f64| -> Vec<[f64; 2]> {
-                        rec.plot_points(var.0, MAX_POINTS)
-                            .into_iter()
-                            .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * var.1])
-                            .collect()
-                    };
-                    let name = format!("{} ±3σ", spec.label);
-                    for sign in [1.0, -1.0] {
-                        plot.line(
-                            Line::new(name.clone(), sigma3(sign))
-                                .color(color.gamma_multiply(0.6))
-                                .style(LineStyle::dashed_loose()),
-                        );
-                    }
-                }
-            }
-        });
+    let name = format!("{} ±3σ", spec.label);
+    for sign in [1.0, -1.0] {
+        plot.line(
+            Line::new(name.clone(), sigma3(sign))
+                .color(look.color.gamma_multiply(0.6))
+                .style(LineStyle::dashed_loose()),
+        );
+    }
 }
 
 #[cfg(test)]
