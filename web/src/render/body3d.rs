@@ -94,10 +94,6 @@ struct Body3dResources {
 /// Creates the pipeline once; call from the app's creation context.
 pub fn init(render_state: &egui_wgpu::RenderState) {
     let device = &render_state.device;
-    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("attlab_body3d"),
-        source: wgpu::ShaderSource::Wgsl(include_str!("body3d.wgsl").into()),
-    });
     let uniform_buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("attlab_body3d_uniforms"),
         size: std::mem::size_of::<Uniforms>() as u64,
@@ -125,40 +121,7 @@ pub fn init(render_state: &egui_wgpu::RenderState) {
             resource: uniform_buffer.as_entire_binding(),
         }],
     });
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some("attlab_body3d_pipeline_layout"),
-        bind_group_layouts: &[Some(&layout)],
-        immediate_size: 0,
-    });
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("attlab_body3d_pipeline"),
-        layout: Some(&pipeline_layout),
-        vertex: wgpu::VertexState {
-            module: &shader,
-            entry_point: Some("vs_main"),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: std::mem::size_of::<Vertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
-            })],
-            compilation_options: wgpu::PipelineCompilationOptions::default(),
-        },
-        primitive: wgpu::PrimitiveState { cull_mode: None, ..wgpu::PrimitiveState::default() },
-        depth_stencil: None,
-        multisample: wgpu::MultisampleState::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: &shader,
-            entry_point: Some("fs_main"),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: render_state.target_format,
-                blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-            compilation_options: wgpu::PipelineCompilationOptions::default(),
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
+    let pipeline = pipeline(device, &layout, render_state.target_format);
     let vertex_capacity = 4096;
     let vertex_buffer = new_vertex_buffer(device, vertex_capacity);
     let srgb = render_state.target_format.is_srgb();
@@ -179,6 +142,53 @@ pub fn init(render_state: &egui_wgpu::RenderState) {
             vertex_count: 0,
         });
     SRGB_TARGET.get_or_init(|| srgb);
+}
+
+/// The render pipeline: body3d.wgsl over triangles of [`Vertex`], blended with
+/// premultiplied alpha into `format`.
+fn pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
+    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("attlab_body3d"),
+        source: wgpu::ShaderSource::Wgsl(include_str!("body3d.wgsl").into()),
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("attlab_body3d_pipeline_layout"),
+        bind_group_layouts: &[Some(layout)],
+        immediate_size: 0,
+    });
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("attlab_body3d_pipeline"),
+        layout: Some(&pipeline_layout),
+        vertex: wgpu::VertexState {
+            module: &shader,
+            entry_point: Some("vs_main"),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: std::mem::size_of::<Vertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
+            })],
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+        },
+        primitive: wgpu::PrimitiveState { cull_mode: None, ..wgpu::PrimitiveState::default() },
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &shader,
+            entry_point: Some("fs_main"),
+            targets: &[Some(wgpu::ColorTargetState {
+                format,
+                blend: Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
 }
 
 static SRGB_TARGET: OnceLock<bool> = OnceLock::new();
@@ -274,18 +284,56 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         );
         return;
     }
-    let eye = camera.eye();
+    let (tris, labels) = scene_triangles(scene, &camera.eye());
+    let vp = camera.view_proj(f64::from(rect.width() / rect.height().max(1.0)));
+    painter.add(egui_wgpu::Callback::new_paint_callback(
+        rect,
+        Body3dCallback {
+            uniforms: uniforms(&vp),
+            vertices: sorted_vertices(tris),
+        },
+    ));
+    for (p, text, color) in labels {
+        if let Some(at) = to_screen(&vp, rect, &p) {
+            painter.text(
+                at,
+                egui::Align2::LEFT_BOTTOM,
+                text,
+                egui::FontId::proportional(12.0),
+                color,
+            );
+        }
+    }
+    if let Some(orbit) = &scene.orbit {
+        let side = rect.width().min(rect.height()) * 0.34;
+        let area = Rect::from_min_size(
+            rect.right_bottom() - egui::vec2(side + 6.0, side + 6.0),
+            egui::vec2(side, side),
+        );
+        orbit_picture(&painter, area, orbit);
+    }
+    captions(&painter, rect, scene);
+}
+
+/// A label at a world point: (point, text, colour).
+type Label<'a> = (Vector3<f64>, &'a str, Color32);
+
+/// A triangle ready to sort back to front: (distance from the eye, vertices).
+type Placed = (f64, [Vertex; 3]);
+
+/// The scene's triangles seen from `eye` — the body, its ghost, the reference vectors, the
+/// unobservable axis, the string — and the labels at the tips of the vectors.
+fn scene_triangles<'a>(scene: &Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Vec<Label<'a>>) {
     let body = mesh(scene.shape);
     let mut tris = Vec::with_capacity(body.len() * 2 + 64);
     let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
     let truth_at = Vector3::new(0.0, -spacing, 0.0);
     let ghost_at = Vector3::new(0.0, spacing, 0.0);
-    place(body, &scene.truth, truth_at, 1.0, &eye, &mut tris);
+    place(body, &scene.truth, truth_at, 1.0, eye, &mut tris);
     if let Some((q, _)) = scene.ghost {
-        place(body, &q, ghost_at, 0.35, &eye, &mut tris);
+        place(body, &q, ghost_at, 0.35, eye, &mut tris);
     }
-    // Labels at the tips of the drawn vectors: (world point, text, colour).
-    let mut labels: Vec<(Vector3<f64>, &str, Color32)> = Vec::new();
+    let mut labels: Vec<Label<'a>> = Vec::new();
     let mut rods = Vec::new();
     for v in scene.vectors {
         let tip = truth_at + v.dir_ref * 1.5;
@@ -313,31 +361,23 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
             Color32::from_rgb(242, 77, 217),
         ));
     }
-    place(
-        &rods,
-        &UnitQuaternion::identity(),
-        Vector3::zeros(),
-        1.0,
-        &eye,
-        &mut tris,
-    );
+    let world = UnitQuaternion::identity();
+    place(&rods, &world, Vector3::zeros(), 1.0, eye, &mut tris);
     if scene.suspended {
         let top = Vector3::new(0.0, 0.0, 0.3);
         let mut bodies = vec![(scene.truth, -spacing, 1.0)];
         bodies.extend(scene.ghost.map(|(q, _)| (q, spacing, 0.35)));
         for (q, y, alpha) in bodies {
             let attach = q * top + Vector3::new(0.0, y, 0.0);
-            place(
-                &string_mesh(attach, 4.0),
-                &UnitQuaternion::identity(),
-                Vector3::zeros(),
-                alpha,
-                &eye,
-                &mut tris,
-            );
+            let string = string_mesh(attach, 4.0);
+            place(&string, &world, Vector3::zeros(), alpha, eye, &mut tris);
         }
     }
-    let vp = camera.view_proj(f64::from(rect.width() / rect.height().max(1.0)));
+    (tris, labels)
+}
+
+/// The shader's uniforms for the view-projection `vp`.
+fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
     let mut view_proj = [[0.0f32; 4]; 4];
     for (c, col) in view_proj.iter_mut().enumerate() {
         for (r, v) in col.iter_mut().enumerate() {
@@ -345,35 +385,15 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         }
     }
     let srgb = SRGB_TARGET.get().copied().unwrap_or(false);
-    let uniforms = Uniforms {
+    Uniforms {
         view_proj,
         light_dir: [0.4, -0.6, 0.8, 0.28],
         flags: [if srgb { 1.0 } else { 0.0 }, 0.0, 0.0, 0.0],
-    };
-    let callback = Body3dCallback {
-        uniforms,
-        vertices: sorted_vertices(tris),
-    };
-    painter.add(egui_wgpu::Callback::new_paint_callback(rect, callback));
-    for (p, text, color) in labels {
-        if let Some(at) = to_screen(&vp, rect, &p) {
-            painter.text(
-                at,
-                egui::Align2::LEFT_BOTTOM,
-                text,
-                egui::FontId::proportional(12.0),
-                color,
-            );
-        }
     }
-    if let Some(orbit) = &scene.orbit {
-        let side = rect.width().min(rect.height()) * 0.34;
-        let area = Rect::from_min_size(
-            rect.right_bottom() - egui::vec2(side + 6.0, side + 6.0),
-            egui::vec2(side, side),
-        );
-        orbit_picture(&painter, area, orbit);
-    }
+}
+
+/// What is solid and what is the ghost, and how to move the camera.
+fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) {
     let font = egui::FontId::proportional(13.0);
     let dim = egui::Color32::from_gray(200);
     painter.text(
