@@ -30,7 +30,6 @@ pub(crate) fn run() {
     let total = Duration::from_secs_f64(minutes * 60.0);
     let rounds = 2;
     let per_lab = total / (rounds * labs.len() as u32);
-    let every = Duration::from_secs(60).min(per_lab / 2);
     let mut end_of_first_round: Option<usize> = None;
     let driver = Driver::start();
     let session = Session::new(&driver);
@@ -39,10 +38,50 @@ pub(crate) fn run() {
         .open(&format!("{base}#lab={first}&speed=1000"))
         .expect("navigate");
     let status = wait_for_frames(&session);
-    let mut problems = status_problems(&status);
-    let start = Instant::now();
-    let mut samples: Vec<Sample> = Vec::new();
-    let sample = |session: &Session<'_>, lab: &str| -> Result<Sample, String> {
+    let mut soak = Soak {
+        start: Instant::now(),
+        per_lab,
+        every: Duration::from_secs(60).min(per_lab / 2),
+        samples: Vec::new(),
+        problems: status_problems(&status),
+    };
+    let order: Vec<_> = (0..rounds as usize).flat_map(|_| labs.iter()).collect();
+    for (k, lab) in order.iter().enumerate() {
+        let id = lab.id();
+        if k == labs.len() {
+            end_of_first_round = soak.samples.len().checked_sub(1);
+        }
+        if k > 0 {
+            // A link pasted into the open tab: the app switches lab without a reload.
+            let script = format!("location.hash = 'lab={id}&speed=1000'; return true;");
+            if let Err(e) = session.execute(&script) {
+                soak.problems.push(format!("{id}: switching failed: {e}"));
+            }
+        }
+        soak.one_lab(&session, id);
+    }
+    drop(session);
+    let label = format!("{minutes} min, {rounds} rounds over {} labs", labs.len());
+    soak.judge(end_of_first_round, &label);
+    assert!(
+        soak.problems.is_empty(),
+        "soak failed:\n  - {}",
+        soak.problems.join("\n  - ")
+    );
+}
+
+/// A soak under way: its clock, the samples so far and the problems found.
+struct Soak {
+    start: Instant,
+    per_lab: Duration,
+    every: Duration,
+    samples: Vec<Sample>,
+    problems: Vec<String>,
+}
+
+impl Soak {
+    /// The page's memory and steps now, on lab `lab`.
+    fn sample(&self, session: &Session<'_>, lab: &str) -> Result<Sample, String> {
         let v = session.execute(
             "const s = window.attlabStatus || {}; return JSON.stringify({ lab: s.lab, wasm: s.wasmBytes, rec: s.recorderBytes, steps: s.simSteps, errors: s.errors, js: performance.memory ? performance.memory.usedJSHeapSize : null });",
         )?;
@@ -56,38 +95,31 @@ pub(crate) fn run() {
         }
         let num = |k: &str| v[k].as_f64().ok_or(format!("no {k} in the status: {v}"));
         Ok(Sample {
-            at_s: start.elapsed().as_secs_f64(),
+            at_s: self.start.elapsed().as_secs_f64(),
             lab: lab.to_string(),
             wasm_bytes: num("wasm")?,
             js_heap_bytes: num("js")?,
             recorder_bytes: num("rec")?,
             sim_steps: num("steps")?,
         })
-    };
-    let order: Vec<_> = (0..rounds as usize).flat_map(|_| labs.iter()).collect();
-    for (k, lab) in order.iter().enumerate() {
-        let id = lab.id();
-        if k == labs.len() {
-            end_of_first_round = samples.len().checked_sub(1);
-        }
-        if k > 0 {
-            // A link pasted into the open tab: the app switches lab without a reload.
-            let script = format!("location.hash = 'lab={id}&speed=1000'; return true;");
-            if let Err(e) = session.execute(&script) {
-                problems.push(format!("{id}: switching failed: {e}"));
-            }
-        }
+    }
+
+    /// Lab `id` for its share of the soak: samples every so often, the simulation must
+    /// move on between them and the console stay clean.
+    fn one_lab(&mut self, session: &Session<'_>, id: &str) {
         let lab_start = Instant::now();
         let mut steps_before: Option<f64> = None;
-        while lab_start.elapsed() < per_lab {
-            sleep(every.min(per_lab.saturating_sub(lab_start.elapsed())));
-            match sample(&session, id) {
+        while lab_start.elapsed() < self.per_lab {
+            sleep(
+                self.every
+                    .min(self.per_lab.saturating_sub(lab_start.elapsed())),
+            );
+            match self.sample(session, id) {
                 Ok(s) => {
                     if steps_before.is_some_and(|b| s.sim_steps <= b) {
-                        problems.push(format!(
-                            "{id}: the simulation stopped at {} steps",
-                            s.sim_steps
-                        ));
+                        let stopped =
+                            format!("{id}: the simulation stopped at {} steps", s.sim_steps);
+                        self.problems.push(stopped);
                     }
                     steps_before = Some(s.sim_steps);
                     println!(
@@ -99,56 +131,53 @@ pub(crate) fn run() {
                         s.recorder_bytes / 1048576.0,
                         s.sim_steps
                     );
-                    samples.push(s);
+                    self.samples.push(s);
                 }
-                Err(e) => problems.push(format!("{id}: {e}")),
+                Err(e) => self.problems.push(format!("{id}: {e}")),
             }
             match session.console() {
-                Ok(entries) => problems.extend(
+                Ok(entries) => self.problems.extend(
                     console_problems(&entries)
                         .into_iter()
                         .map(|p| format!("{id}: {p}")),
                 ),
-                Err(e) => problems.push(format!("{id}: reading the console failed: {e}")),
+                Err(e) => self
+                    .problems
+                    .push(format!("{id}: reading the console failed: {e}")),
             }
         }
     }
-    drop(session);
-    let budget = samples.iter().map(|s| s.recorder_bytes).fold(0.0, f64::max);
-    let mib = |b: f64| b / 1048576.0;
-    match (
-        samples.first(),
-        end_of_first_round.and_then(|k| samples.get(k)),
-        samples.last(),
-    ) {
-        (Some(a), Some(m), Some(b)) => {
-            let wasm_growth = b.wasm_bytes - m.wasm_bytes;
-            let js_growth = b.js_heap_bytes - m.js_heap_bytes;
-            println!(
-                "soak: {minutes} min, {rounds} rounds over {} labs: first round wasm {:.1} → {:.1} MiB (the high-water mark), second round {:+.1} MiB; JS heap second round {:+.1} MiB (recorder budget {:.1} MiB)",
-                labs.len(),
-                mib(a.wasm_bytes),
-                mib(m.wasm_bytes),
-                mib(wasm_growth),
-                mib(js_growth),
-                mib(budget)
-            );
-            if wasm_growth.is_nan() || wasm_growth > budget {
-                problems.push(format!(
-                    "wasm memory grew {wasm_growth} B in the second round, beyond the recorder's budget {budget} B"
-                ));
-            }
-            if js_growth.is_nan() || js_growth > budget {
-                problems.push(format!(
-                    "JS heap grew {js_growth} B in the second round, beyond the recorder's budget {budget} B"
+
+    /// The second round's growth of wasm memory and JS heap against the recorder's budget.
+    fn judge(&mut self, end_of_first_round: Option<usize>, label: &str) {
+        let samples = &self.samples;
+        let budget = samples.iter().map(|s| s.recorder_bytes).fold(0.0, f64::max);
+        let mib = |b: f64| b / 1048576.0;
+        let (Some(a), Some(m), Some(b)) = (
+            samples.first(),
+            end_of_first_round.and_then(|k| samples.get(k)),
+            samples.last(),
+        ) else {
+            return self
+                .problems
+                .push("too few memory samples for two rounds".into());
+        };
+        let wasm_growth = b.wasm_bytes - m.wasm_bytes;
+        let js_growth = b.js_heap_bytes - m.js_heap_bytes;
+        println!(
+            "soak: {label}: first round wasm {:.1} → {:.1} MiB (the high-water mark), second round {:+.1} MiB; JS heap second round {:+.1} MiB (recorder budget {:.1} MiB)",
+            mib(a.wasm_bytes),
+            mib(m.wasm_bytes),
+            mib(wasm_growth),
+            mib(js_growth),
+            mib(budget)
+        );
+        for (what, growth) in [("wasm memory", wasm_growth), ("JS heap", js_growth)] {
+            if growth.is_nan() || growth > budget {
+                self.problems.push(format!(
+                    "{what} grew {growth} B in the second round, beyond the recorder's budget {budget} B"
                 ));
             }
         }
-        _ => problems.push("too few memory samples for two rounds".into()),
     }
-    assert!(
-        problems.is_empty(),
-        "soak failed:\n  - {}",
-        problems.join("\n  - ")
-    );
 }
