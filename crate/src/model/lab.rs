@@ -1,6 +1,7 @@
 //! The lab contract: truth, sensors, estimators, parameters, figures and anchors.
 
 use super::estimate::{ControlInput, Estimator, Measurements};
+use super::log::LogFormat;
 use super::page::{BodyShape, DEFAULT_VIEWS, Diagram, Figure, Outage, SceneExtras, ViewKind};
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
@@ -176,14 +177,10 @@ pub trait Lab: Sync {
     fn suspended(&self) -> bool {
         false
     }
-    /// True when the lab's estimators can run on a recorded single-axis gyro log.
-    fn accepts_rate_log(&self) -> bool {
-        false
-    }
-    /// True when the lab's estimators can run on a recorded IMU log (time, accelerometer,
-    /// gyro; paper 4's Arduino and MPU-6050).
-    fn accepts_imu_log(&self) -> bool {
-        false
+    /// The kind of recorded log the lab's estimators can run on instead of simulated
+    /// sensors (its laboratory mode), if any.
+    fn log_format(&self) -> Option<&'static LogFormat> {
+        None
     }
     /// A log the lab ships for its laboratory mode, if it has one.
     fn example_log(&self) -> Option<ExampleLog> {

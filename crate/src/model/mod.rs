@@ -8,6 +8,7 @@
 
 mod estimate;
 mod lab;
+mod log;
 mod page;
 mod params;
 mod report;
@@ -19,6 +20,7 @@ pub use estimate::{
     Onboard, Outputs, STATUS_OK, StateInfo, StateKind,
 };
 pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};
+pub use log::{LogFormat, LogLineError, RateLog};
 pub use page::{
     BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage,
     SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,

@@ -11,7 +11,8 @@
 //!
 //! The roll axis is x: the rate is gx and the accelerometer angle atan2(ay, az).
 
-use super::rate_log::{LogLineError, RateLog, TimeUnit};
+use super::rate_log::{TIME_UNIT_NAMES, TimeUnit, time_unit};
+use crate::model::{LogFormat, LogLineError, ParamSpec, ParamValues, RateLog};
 use nalgebra::Vector3;
 
 /// Unit of the accelerometer columns.
@@ -230,9 +231,81 @@ pub fn parse_imu_log(text: &str, scales: ImuScales) -> RateLog {
     log
 }
 
+/// Names of the accelerometer units, as [`AccelUnit::ALL`] orders them (`--accel-unit`).
+const ACCEL_UNIT_NAMES: &[&str] = &["counts2", "counts4", "counts8", "counts16", "g", "mps2"];
+
+/// Names of the gyro units, as [`GyroUnit::ALL`] orders them (`--gyro-unit`).
+const GYRO_UNIT_NAMES: &[&str] = &[
+    "counts250",
+    "counts500",
+    "counts1000",
+    "counts2000",
+    "deg_s",
+    "rad_s",
+];
+
+/// An Arduino MPU-6050 log (paper 4's rig): `time, ax, ay, az, gx, gy, gz` lines.
+pub const IMU_LOG: LogFormat = LogFormat {
+    id: "mpu6050",
+    name: "an MPU-6050 IMU log (time, accelerometer, gyro)",
+    title: "Real data: an Arduino MPU-6050 log",
+    help: "CSV lines `time, ax, ay, az, gx, gy, gz` (comma, semicolon, tab or space separated) \
+           as a sketch prints them; banner lines before the header and bad lines are listed \
+           with their numbers and skipped. The roll axis is x: rate gx, angle atan2(ay, az). \
+           Defaults: the chip's power-on ranges in counts, time in ms.",
+    load_label: "Load MPU-6050 log…",
+    units: &[
+        ParamSpec::choice("accel_unit", "accel", ACCEL_UNIT_NAMES, 0).help(
+            "Accelerometer columns: raw counts of a ±2/4/8/16 g range (power-on: ±2 g), g or m/s².",
+        ),
+        ParamSpec::choice("gyro_unit", "gyro", GYRO_UNIT_NAMES, 0).help(
+            "Gyro columns: raw counts of a ±250/500/1000/2000 °/s range (power-on: ±250 °/s), °/s or rad/s.",
+        ),
+        ParamSpec::choice("time_unit", "time", TIME_UNIT_NAMES, 1)
+            .help("Time column: seconds, or milliseconds (Arduino millis())."),
+    ],
+    parse: parse_imu_with,
+};
+
+/// [`parse_imu_log`] with the unit choices of [`IMU_LOG`].
+fn parse_imu_with(text: &str, units: &ParamValues) -> RateLog {
+    let defaults = ImuScales::default();
+    let scales = ImuScales {
+        time: time_unit(units, "time_unit"),
+        accel: AccelUnit::ALL
+            .get(units.index("accel_unit"))
+            .map_or(defaults.accel, |(u, _)| *u),
+        gyro: GyroUnit::ALL
+            .get(units.index("gyro_unit"))
+            .map_or(defaults.gyro, |(u, _)| *u),
+    };
+    parse_imu_log(text, scales)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[test]
+    fn the_formats_unit_names_follow_the_units_order() {
+        for (i, (_, name)) in AccelUnit::ALL.iter().enumerate() {
+            assert_eq!(ACCEL_UNIT_NAMES[i], *name);
+        }
+        for (i, (_, name)) in GyroUnit::ALL.iter().enumerate() {
+            assert_eq!(GYRO_UNIT_NAMES[i], *name);
+        }
+        // The defaults are the chip's power-on ranges in counts and Arduino millis().
+        let units = IMU_LOG.default_units();
+        let log = (IMU_LOG.parse)("1000,0,0,16384,131,0,0\n1010,0,0,16384,131,0,0\n", &units);
+        assert_eq!(log.t_s, vec![1.0, 1.01]);
+        // ±250 °/s over 16 bits: 131 counts are 131·250/32768 ≈ 0.9995 °/s.
+        let expected = (131.0 * 250.0 / 32768.0f64).to_radians();
+        assert!(
+            (log.rate_rad_s[0] - expected).abs() < 1e-12,
+            "{}",
+            log.rate_rad_s[0]
+        );
+        assert!((log.accel_g[0].z - 1.0).abs() < 1e-12, "16384 counts = 1 g");
+    }
 
     #[test]
     fn scaled_units_and_semicolons_read_too() {

@@ -5,7 +5,8 @@ mod imu_log;
 mod noise;
 mod rate_log;
 
+pub use crate::model::{LogFormat, LogLineError, RateLog};
 pub use gyro::{Gyro3, Gyro3Config};
-pub use imu_log::{AccelUnit, GyroUnit, ImuScales, parse_imu_log};
+pub use imu_log::{AccelUnit, GyroUnit, IMU_LOG, ImuScales, parse_imu_log};
 pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};
-pub use rate_log::{LogLineError, RateLog, RateUnit, TimeUnit, parse_rate_log};
+pub use rate_log::{RATE_LOG, RateUnit, TimeUnit, parse_rate_log};

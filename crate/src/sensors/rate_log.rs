@@ -2,7 +2,7 @@
 //! (and, read by [`super::parse_imu_log`], paper 4's IMU logs with their accelerometer),
 //! parsed leniently — every good line is kept, every bad one reported with its line number.
 
-use thiserror::Error;
+use crate::model::{LogFormat, LogLineError, ParamSpec, ParamValues, RateLog};
 
 /// Unit of the rate column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -45,48 +45,6 @@ pub enum TimeUnit {
     Seconds,
     /// Milliseconds (the paper's lab software).
     Milliseconds,
-}
-
-/// One line that could not be used.
-#[derive(Clone, Debug, Error, PartialEq)]
-#[error("line {line}: {reason}: `{text}`")]
-pub struct LogLineError {
-    /// 1-based line number.
-    pub line: usize,
-    /// The line as read (shortened).
-    pub text: String,
-    /// What was wrong.
-    pub reason: String,
-}
-
-/// A parsed gyro log.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct RateLog {
-    /// Sample times (s), strictly increasing.
-    pub t_s: Vec<f64>,
-    /// Rates (rad/s).
-    pub rate_rad_s: Vec<f64>,
-    /// Accelerometer readings (g), one per sample for an IMU log, empty for a rate log.
-    pub accel_g: Vec<nalgebra::Vector3<f64>>,
-    /// Lines that were skipped, with the reason.
-    pub errors: Vec<LogLineError>,
-}
-
-impl RateLog {
-    /// Median sample interval (s), if there are at least two samples.
-    pub fn median_dt_s(&self) -> Option<f64> {
-        let mut d: Vec<f64> = self.t_s.windows(2).map(|w| w[1] - w[0]).collect();
-        if d.is_empty() {
-            return None;
-        }
-        d.sort_by(f64::total_cmp);
-        let n = d.len();
-        Some(if n % 2 == 1 {
-            d[n / 2]
-        } else {
-            0.5 * (d[n / 2 - 1] + d[n / 2])
-        })
-    }
 }
 
 fn number(s: &str) -> Option<f64> {
@@ -214,9 +172,63 @@ pub fn parse_rate_log(text: &str, rate_unit: RateUnit, time_unit: TimeUnit) -> R
     log
 }
 
+/// Names of the rate units, as [`RateUnit::ALL`] orders them (the CLI's `--rate-unit`).
+const RATE_UNIT_NAMES: &[&str] = &["deg_s", "mdeg_s", "rad_s"];
+
+/// Names of the time units (the CLI's `--time-unit`).
+pub(super) const TIME_UNIT_NAMES: &[&str] = &["s", "ms"];
+
+/// The time unit chosen as `key` in `units` (seconds if out of range).
+pub(super) fn time_unit(units: &ParamValues, key: &str) -> TimeUnit {
+    if units.index(key) == 1 {
+        TimeUnit::Milliseconds
+    } else {
+        TimeUnit::Seconds
+    }
+}
+
+/// A one-axis gyro log (paper 1's laboratory software): `time, rate` lines.
+pub const RATE_LOG: LogFormat = LogFormat {
+    id: "gyro-rate",
+    name: "a one-axis gyro log (time, rate)",
+    title: "Laboratory mode: recorded gyro log",
+    help: "CSV lines `time, rate` (comma, semicolon, tab or space separated). Bad lines are \
+           listed with their numbers and skipped.",
+    load_label: "Load gyro log…",
+    units: &[
+        ParamSpec::choice("rate_unit", "rate", RATE_UNIT_NAMES, 0)
+            .help("Unit of the rate column: °/s, m°/s (the paper's lab software) or rad/s."),
+        ParamSpec::choice("time_unit", "time", TIME_UNIT_NAMES, 0)
+            .help("Unit of the time column: seconds or milliseconds."),
+    ],
+    parse: parse_rate_with,
+};
+
+/// [`parse_rate_log`] with the unit choices of [`RATE_LOG`].
+fn parse_rate_with(text: &str, units: &ParamValues) -> RateLog {
+    let rate = RateUnit::ALL
+        .get(units.index("rate_unit"))
+        .map_or(RateUnit::DegPerS, |(u, _)| *u);
+    parse_rate_log(text, rate, time_unit(units, "time_unit"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[test]
+    fn the_formats_unit_names_follow_the_units_order() {
+        for (i, (_, name)) in RateUnit::ALL.iter().enumerate() {
+            assert_eq!(RATE_UNIT_NAMES[i], *name);
+        }
+        let mut units = RATE_LOG.default_units();
+        units
+            .set_text(RATE_LOG.units, "rate_unit", "mdeg_s")
+            .unwrap();
+        units.set_text(RATE_LOG.units, "time_unit", "ms").unwrap();
+        let log = (RATE_LOG.parse)("0,1000\n10,2000\n", &units);
+        assert_eq!(log.t_s, vec![0.0, 0.01]);
+        assert!((log.rate_rad_s[1] - 2f64.to_radians()).abs() < 1e-12);
+    }
 
     #[test]
     fn a_banner_before_the_header_is_reported_and_a_stray_quote_swallows_nothing() {

@@ -197,7 +197,7 @@ fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 /// One widget for one parameter; returns the new value if the user changed it.
-fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
+pub(super) fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
     let mut v = value;
     let hint = if spec.needs_reset {
         format!("{} (applies at Reset)", spec.help)

@@ -4,7 +4,6 @@
 
 use crate::render::plots::source_color;
 use crate::state::{AppState, Command, IoCommand, ViewCommand};
-use attlab::sensors::{RateUnit, TimeUnit};
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, Points};
 
@@ -104,107 +103,43 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
         });
 }
 
-/// Loading a recorded gyro log (CSV: time, rate) for labs that accept one.
+/// The laboratory mode of a lab that reads a kind of recorded log: its unit choices (the
+/// format's parameter specs, drawn like the lab's own), the file, the lab's example log,
+/// and the way back to the simulation.
 pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    if app.sim().lab().accepts_imu_log() {
-        return imu_log(ui, app, commands);
-    }
-    if !app.sim().lab().accepts_rate_log() {
+    let Some(format) = app.sim().lab().log_format() else {
         return;
-    }
-    egui::CollapsingHeader::new("Laboratory mode: recorded gyro log").default_open(false).show(ui, |ui| {
-        ui.label("CSV lines `time, rate` (comma, semicolon, tab or space separated). Bad lines are listed with their numbers and skipped.");
-        ui.horizontal(|ui| {
-            let (rate, time) = app.io().log_units;
-            egui::ComboBox::from_label("rate").selected_text(unit_name(rate)).show_ui(ui, |ui| {
-                for (u, name) in RateUnit::ALL {
-                    if ui.selectable_label(u == rate, name).clicked() {
-                        commands.push(Command::from(IoCommand::SetLogUnits(u, time)));
+    };
+    egui::CollapsingHeader::new(format.title)
+        .default_open(false)
+        .show(ui, |ui| {
+            ui.label(format.help);
+            let units = app.io().units_for(format);
+            ui.horizontal_wrapped(|ui| {
+                for spec in format.units {
+                    if let Some(v) = super::controls::param_widget(ui, spec, units.get(spec.key)) {
+                        commands.push(Command::from(IoCommand::SetLogUnit(spec.key, v)));
                     }
                 }
             });
-            egui::ComboBox::from_label("time").selected_text(if time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
-                for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
-                    if ui.selectable_label(t == time, name).clicked() {
-                        commands.push(Command::from(IoCommand::SetLogUnits(rate, t)));
-                    }
+            ui.horizontal_wrapped(|ui| {
+                if ui.button(format.load_label).clicked() {
+                    commands.push(Command::from(IoCommand::LoadLog));
                 }
-            });
-        });
-        ui.horizontal(|ui| {
-            if ui.button("Load gyro log…").clicked() {
-                commands.push(Command::from(IoCommand::LoadLog));
-            }
-            if let Some((name, n)) = &app.io().replaying {
-                ui.label(format!("replaying {name} ({n} samples)"));
-                if ui.button("Back to simulation").clicked() {
-                    commands.push(Command::from(IoCommand::EndReplay));
+                if let Some(example) = app.sim().lab().example_log()
+                    && ui
+                        .button("Replay the example log")
+                        .on_hover_text(example.name)
+                        .clicked()
+                {
+                    commands.push(Command::from(IoCommand::LoadExampleLog));
                 }
-            }
-        });
-    });
-}
-
-fn unit_name(u: RateUnit) -> &'static str {
-    RateUnit::ALL
-        .iter()
-        .find(|(v, _)| *v == u)
-        .map_or("?", |(_, n)| n)
-}
-
-/// Loading a recorded Arduino MPU-6050 log (paper 4): units, the file or the shipped example.
-fn imu_log(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    use attlab::sensors::{AccelUnit, GyroUnit};
-    egui::CollapsingHeader::new("Real data: an Arduino MPU-6050 log").default_open(false).show(ui, |ui| {
-        ui.label(
-            "CSV lines `time, ax, ay, az, gx, gy, gz` (comma, semicolon, tab or space separated) as a sketch prints them; \
-             banner lines before the header and bad lines are listed with their numbers and skipped. \
-             The roll axis is x: rate gx, angle atan2(ay, az). Defaults: the chip's power-on ranges in counts, time in ms.",
-        );
-        let s = app.io().imu_scales;
-        ui.horizontal_wrapped(|ui| {
-            let name_of = |all: &[(AccelUnit, &'static str)], u: AccelUnit| all.iter().find(|(x, _)| *x == u).map_or("?", |(_, n)| *n);
-            egui::ComboBox::from_label("accel").selected_text(name_of(&AccelUnit::ALL, s.accel)).show_ui(ui, |ui| {
-                for (u, name) in AccelUnit::ALL {
-                    if ui.selectable_label(u == s.accel, name).clicked() {
-                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { accel: u, ..s })));
-                    }
-                }
-            });
-            let gyro_name = GyroUnit::ALL.iter().find(|(x, _)| *x == s.gyro).map_or("?", |(_, n)| *n);
-            egui::ComboBox::from_label("gyro").selected_text(gyro_name).show_ui(ui, |ui| {
-                for (u, name) in GyroUnit::ALL {
-                    if ui.selectable_label(u == s.gyro, name).clicked() {
-                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { gyro: u, ..s })));
-                    }
-                }
-            });
-            egui::ComboBox::from_label("time").selected_text(if s.time == TimeUnit::Seconds { "s" } else { "ms" }).show_ui(ui, |ui| {
-                for (t, name) in [(TimeUnit::Seconds, "s"), (TimeUnit::Milliseconds, "ms")] {
-                    if ui.selectable_label(t == s.time, name).clicked() {
-                        commands.push(Command::from(IoCommand::SetImuScales(attlab::sensors::ImuScales { time: t, ..s })));
+                if let Some((name, n)) = &app.io().replaying {
+                    ui.label(format!("replaying {name} ({n} samples)"));
+                    if ui.button("Back to simulation").clicked() {
+                        commands.push(Command::from(IoCommand::EndReplay));
                     }
                 }
             });
         });
-        ui.horizontal_wrapped(|ui| {
-            if ui.button("Load MPU-6050 log…").clicked() {
-                commands.push(Command::from(IoCommand::LoadLog));
-            }
-            if let Some(example) = app.sim().lab().example_log()
-                && ui
-                    .button("Replay the example log")
-                    .on_hover_text(example.name)
-                    .clicked()
-            {
-                commands.push(Command::from(IoCommand::LoadExampleLog));
-            }
-            if let Some((name, n)) = &app.io().replaying {
-                ui.label(format!("replaying {name} ({n} samples)"));
-                if ui.button("Back to simulation").clicked() {
-                    commands.push(Command::from(IoCommand::EndReplay));
-                }
-            }
-        });
-    });
 }

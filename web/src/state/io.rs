@@ -5,15 +5,15 @@
 use super::{AppState, Effect, PngTarget, run::simulation};
 use crate::platform;
 use attlab::model::PlotTab;
-use attlab::sensors::{ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log};
+use attlab::model::{LogFormat, ParamValues};
 use attlab::sim::{SimOptions, Simulation};
+use std::collections::BTreeMap;
 
 /// Logs to load and where exports go.
+#[derive(Default)]
 pub struct IoState {
-    /// Units of a gyro log to load.
-    pub log_units: (RateUnit, TimeUnit),
-    /// Units of an IMU log to load.
-    pub imu_scales: ImuScales,
+    /// The unit choices of each log format changed from its defaults (by format id).
+    units: BTreeMap<&'static str, ParamValues>,
     /// Name and sample count of the log being replayed.
     pub replaying: Option<(String, usize)>,
     /// Where exports go without a dialog (desktop scripting and tests); `None` asks.
@@ -21,19 +21,15 @@ pub struct IoState {
     file_slot: platform::FileSlot,
 }
 
-impl Default for IoState {
-    fn default() -> Self {
-        Self {
-            log_units: (RateUnit::DegPerS, TimeUnit::Seconds),
-            imu_scales: ImuScales::default(),
-            replaying: None,
-            save_dir: None,
-            file_slot: platform::FileSlot::default(),
-        }
-    }
-}
-
 impl IoState {
+    /// The unit choices for logs of `format`.
+    pub fn units_for(&self, format: &LogFormat) -> ParamValues {
+        self.units
+            .get(format.id)
+            .cloned()
+            .unwrap_or_else(|| format.default_units())
+    }
+
     /// Keeps where exports go and a log being picked from `old` (a link loaded).
     pub(super) fn keep_from(&mut self, old: &mut IoState) {
         self.save_dir = old.save_dir.take();
@@ -54,10 +50,9 @@ pub enum IoCommand {
     TakePickedLog,
     /// Leave the replay and simulate again.
     EndReplay,
-    /// Units of the gyro log to load.
-    SetLogUnits(RateUnit, TimeUnit),
-    /// Units of the IMU log to load (paper 4).
-    SetImuScales(ImuScales),
+    /// One unit choice (`key`, one of the format's unit parameters) for logs of the lab's
+    /// format.
+    SetLogUnit(&'static str, f64),
     /// Replay the log the lab ships.
     LoadExampleLog,
     /// Copy a pandas snippet that loads the exported CSV and draws the current plot tab.
@@ -82,8 +77,7 @@ impl AppState {
                 self.sim.release_recorder();
                 self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
             }
-            IoCommand::SetLogUnits(rate, time) => self.io.log_units = (rate, time),
-            IoCommand::SetImuScales(scales) => self.io.imu_scales = scales,
+            IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::LoadExampleLog => match self.sim.lab().example_log() {
                 Some(log) => self.start_replay(log.name.into(), log.text),
                 None => self.error("this lab ships no example log"),
@@ -112,13 +106,27 @@ impl AppState {
         }
     }
 
+    /// Sets unit choice `key` of the lab's log format (a value out of its range is a
+    /// message, the choice stays).
+    fn set_log_unit(&mut self, key: &'static str, value: f64) {
+        let Some(format) = self.sim.lab().log_format() else {
+            return self.error("this lab replays no logs");
+        };
+        let mut units = self.io.units_for(format);
+        match units.set(format.units, key, value) {
+            Ok(()) => {
+                self.io.units.insert(format.id, units);
+            }
+            Err(e) => self.error(e.to_string()),
+        }
+    }
+
     /// Parses `text` as the lab's kind of log and replays it.
     fn start_replay(&mut self, name: String, text: &str) {
-        let log = if self.sim.lab().accepts_imu_log() {
-            parse_imu_log(text, self.io.imu_scales)
-        } else {
-            parse_rate_log(text, self.io.log_units.0, self.io.log_units.1)
+        let Some(format) = self.sim.lab().log_format() else {
+            return self.error(format!("{name}: this lab replays no logs"));
         };
+        let log = (format.parse)(text, &self.io.units_for(format));
         const SHOWN: usize = 12;
         for e in log.errors.iter().take(SHOWN) {
             self.error(format!("{name}: skipped {e}"));

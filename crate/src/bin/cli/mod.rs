@@ -87,21 +87,21 @@ enum Command {
         /// The log file.
         #[arg(long)]
         log: PathBuf,
-        /// Gyro logs: unit of the rate column, deg_s, mdeg_s or rad_s.
-        #[arg(long, default_value = "deg_s")]
-        rate_unit: String,
+        /// Gyro logs: unit of the rate column, deg_s (default), mdeg_s or rad_s.
+        #[arg(long)]
+        rate_unit: Option<String>,
         /// Unit of the time column, s or ms (default: s for a gyro log, ms — Arduino
         /// millis() — for an IMU log).
         #[arg(long)]
         time_unit: Option<String>,
         /// IMU logs: accelerometer columns in counts of ±2/4/8/16 g (counts2 … counts16; the
         /// chip's power-on counts2 by default), g or mps2.
-        #[arg(long, default_value = "counts2")]
-        accel_unit: String,
+        #[arg(long)]
+        accel_unit: Option<String>,
         /// IMU logs: gyro columns in counts of ±250/500/1000/2000 °/s (counts250 …; the
         /// power-on counts250 by default), deg_s or rad_s.
-        #[arg(long, default_value = "counts250")]
-        gyro_unit: String,
+        #[arg(long)]
+        gyro_unit: Option<String>,
         /// Output CSV file.
         #[arg(long)]
         csv: PathBuf,
@@ -166,10 +166,10 @@ pub fn main() -> ExitCode {
             &lab,
             &log,
             LogUnits {
-                rate: &rate_unit,
+                rate: rate_unit.as_deref(),
                 time: time_unit.as_deref(),
-                accel: &accel_unit,
-                gyro: &gyro_unit,
+                accel: accel_unit.as_deref(),
+                gyro: gyro_unit.as_deref(),
             },
             &csv,
             &set,

@@ -80,11 +80,13 @@ pub(super) fn run(
 }
 
 /// The unit flags of `attlab replay`.
+/// The unit flags given on the command line, by the name of the unit (`--rate-unit` is
+/// `rate`).
 pub(super) struct LogUnits<'a> {
-    pub(super) rate: &'a str,
+    pub(super) rate: Option<&'a str>,
     pub(super) time: Option<&'a str>,
-    pub(super) accel: &'a str,
-    pub(super) gyro: &'a str,
+    pub(super) accel: Option<&'a str>,
+    pub(super) gyro: Option<&'a str>,
 }
 
 pub(super) fn replay(
@@ -94,57 +96,22 @@ pub(super) fn replay(
     csv_path: &Path,
     set: &[String],
 ) -> Result<(), String> {
-    use attlab::sensors::{
-        AccelUnit, GyroUnit, ImuScales, RateUnit, TimeUnit, parse_imu_log, parse_rate_log,
-    };
     let lab = find_lab(lab_id)?;
-    let names = |all: &[&str]| all.join(", ");
-    let imu = lab.accepts_imu_log();
-    if !imu && !lab.accepts_rate_log() {
-        return Err(format!(
-            "lab {lab_id} does not replay logs: use p1 (gyro log) or p4 (IMU log)"
-        ));
-    }
-    let time_unit = match units.time.unwrap_or(if imu { "ms" } else { "s" }) {
-        "s" => TimeUnit::Seconds,
-        "ms" => TimeUnit::Milliseconds,
-        other => return Err(format!("--time-unit `{other}`: use s or ms")),
-    };
+    let format = lab.log_format().ok_or_else(|| {
+        let replaying: Vec<&str> = attlab::labs::all()
+            .iter()
+            .filter(|l| l.log_format().is_some())
+            .map(|l| l.id())
+            .collect();
+        format!(
+            "lab {lab_id} does not replay logs; these do: {}",
+            replaying.join(", ")
+        )
+    })?;
+    let unit_values = log_units(format, &units)?;
     let text = std::fs::read_to_string(log_path)
         .map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
-    let log = if imu {
-        let accel = AccelUnit::from_name(units.accel).ok_or_else(|| {
-            format!(
-                "--accel-unit `{}`: use one of {}",
-                units.accel,
-                names(&AccelUnit::ALL.map(|(_, n)| n))
-            )
-        })?;
-        let gyro = GyroUnit::from_name(units.gyro).ok_or_else(|| {
-            format!(
-                "--gyro-unit `{}`: use one of {}",
-                units.gyro,
-                names(&GyroUnit::ALL.map(|(_, n)| n))
-            )
-        })?;
-        parse_imu_log(
-            &text,
-            ImuScales {
-                time: time_unit,
-                accel,
-                gyro,
-            },
-        )
-    } else {
-        let rate_unit = RateUnit::from_name(units.rate).ok_or_else(|| {
-            format!(
-                "--rate-unit `{}`: use one of {}",
-                units.rate,
-                names(&RateUnit::ALL.map(|(_, n)| n))
-            )
-        })?;
-        parse_rate_log(&text, rate_unit, time_unit)
-    };
+    let log = (format.parse)(&text, &unit_values);
     for e in &log.errors {
         eprintln!("attlab: {}: skipped {e}", log_path.display());
     }
@@ -220,4 +187,79 @@ fn stream_csv(sim: &mut Simulation, duration_s: f64, csv_path: &Path) -> Result<
         out.row(sim.last_row()).map_err(io)?;
     }
     out.finish().map_err(io)
+}
+
+/// The unit choices of `format` with the flags given: each flag `--<name>-unit` sets the
+/// format's `<name>_unit` by an option's name. A flag the format has no such unit for is an
+/// error naming the units it has.
+fn log_units(
+    format: &attlab::model::LogFormat,
+    units: &LogUnits<'_>,
+) -> Result<ParamValues, String> {
+    let mut values = format.default_units();
+    let given = [
+        ("rate", units.rate),
+        ("time", units.time),
+        ("accel", units.accel),
+        ("gyro", units.gyro),
+    ];
+    let has = || {
+        format
+            .units
+            .iter()
+            .map(|s| match s.kind {
+                attlab::model::ParamKind::Choice(options) => {
+                    format!("--{} {}", s.key.replace('_', "-"), options.join("|"))
+                }
+                _ => format!("--{}", s.key.replace('_', "-")),
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    for (name, value) in given {
+        let Some(value) = value else { continue };
+        let key = format!("{name}_unit");
+        if !format.units.iter().any(|s| s.key == key) {
+            return Err(format!(
+                "--{name}-unit: {} has no {name} column (its units: {})",
+                format.name,
+                has()
+            ));
+        }
+        values
+            .set_text(format.units, &key, value)
+            .map_err(|e| format!("--{name}-unit `{value}`: {e} (units: {})", has()))?;
+    }
+    Ok(values)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn units(rate: Option<&'static str>, accel: Option<&'static str>) -> LogUnits<'static> {
+        LogUnits {
+            rate,
+            time: None,
+            accel,
+            gyro: None,
+        }
+    }
+
+    #[test]
+    fn a_unit_flag_the_format_lacks_is_an_error_that_names_its_units() {
+        let err = log_units(&attlab::sensors::RATE_LOG, &units(None, Some("g"))).unwrap_err();
+        assert!(err.contains("--accel-unit"), "{err}");
+        assert!(err.contains("--rate-unit deg_s|mdeg_s|rad_s"), "{err}");
+        let err =
+            log_units(&attlab::sensors::RATE_LOG, &units(Some("furlongs"), None)).unwrap_err();
+        assert!(err.contains("furlongs"), "{err}");
+        let ok = log_units(&attlab::sensors::IMU_LOG, &units(None, Some("mps2"))).unwrap();
+        assert_eq!(ok.index("accel_unit"), 5);
+        assert_eq!(
+            ok.index("time_unit"),
+            1,
+            "an IMU log's time is in ms by default"
+        );
+    }
 }

@@ -316,8 +316,8 @@ impl Lab for SuspendedMockup {
         SWEEPS
     }
 
-    fn accepts_rate_log(&self) -> bool {
-        true
+    fn log_format(&self) -> Option<&'static crate::model::LogFormat> {
+        Some(&crate::sensors::RATE_LOG)
     }
 
     fn suspended(&self) -> bool {

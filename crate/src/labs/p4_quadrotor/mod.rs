@@ -266,8 +266,8 @@ impl Lab for QuadrotorRoll {
         tuning::SWEEPS
     }
 
-    fn accepts_imu_log(&self) -> bool {
-        true
+    fn log_format(&self) -> Option<&'static crate::model::LogFormat> {
+        Some(&crate::sensors::IMU_LOG)
     }
 
     fn example_log(&self) -> Option<ExampleLog> {
