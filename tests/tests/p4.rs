@@ -176,18 +176,9 @@ fn the_page_gamma_sweep_gives_the_medians_of_runs_made_one_by_one() {
 /// reproduces the γ* run exactly, and the grid's points come row by row.
 #[test]
 fn q_set_by_elements_at_the_gamma_mapping_reproduces_the_gamma_run() {
-    use attlab::estimators::RollTuning;
     let lab = attlab_tests::lab("p4");
     let params = attlab::model::ParamValues::defaults(lab.params());
-    let tuning = RollTuning {
-        gamma: 0.0,
-        input_on: true,
-        sigma_angle_rad: 0.0,
-        sigma_rate_rad_s: 0.0,
-        bias_walk: 0.0,
-        q_elements: None,
-    }
-    .read(&params);
+    let tuning = attlab::labs::p4_quadrotor::tuning_of(&params);
     let dt = 1.0 / params.get("sample_hz");
     let [qa, qr] = tuning.q_block(dt);
     let deg2 = (180.0 / std::f64::consts::PI).powi(2);

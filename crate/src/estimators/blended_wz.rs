@@ -11,11 +11,8 @@
 //! channels HPF(u), HPF(v), LPF(uᵃ), LPF(vᵃ) are published for the paper's Fig. 10.
 
 use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk4};
-use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues, Quantity};
+use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues, Quantity, Tuner};
 use nalgebra::Vector3;
-
-/// Parameter key of the blend time constant T (s).
-pub const BLEND_TIME_CONSTANT_KEY: &str = "blend_time_const_s";
 
 /// First-order low-pass `y ← y + dt/(T + dt)·(x − y)`.
 fn low_pass(y: &mut f64, x: f64, dt_s: f64, t_s: f64) {
@@ -32,6 +29,7 @@ pub struct BlendedWz {
     /// Display channels: LPF(u), LPF(v), LPF(uᵃ), LPF(vᵃ).
     channels: [f64; 4],
     time_constant_s: f64,
+    tuner: Option<Tuner<f64>>,
 }
 
 impl BlendedWz {
@@ -44,7 +42,15 @@ impl BlendedWz {
             correction: (0.0, 0.0),
             channels: [0.0; 4],
             time_constant_s,
+            tuner: None,
         }
+    }
+
+    /// Takes the time constant T (s) from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<f64>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 
     fn blended(&self) -> WzAttitude {
@@ -96,8 +102,8 @@ impl Estimator for BlendedWz {
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
-        if let Ok(t) = params.try_get(BLEND_TIME_CONSTANT_KEY) {
-            self.time_constant_s = t;
+        if let Some(f) = self.tuner {
+            self.time_constant_s = f(params);
         }
     }
 

@@ -18,21 +18,19 @@ mod wz_integration;
 mod wz_kalman;
 
 pub use accel_wz::AccelWz;
-pub use blended_wz::{BLEND_TIME_CONSTANT_KEY, BlendedWz};
+pub use blended_wz::BlendedWz;
 pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops};
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
 pub use quaternion_integration::QuaternionIntegration;
-pub use roll_kf::{
-    ComplementaryRoll, RollInput, RollKf, RollTuning, accel_angle_rad, keys as roll_keys,
-};
+pub use roll_kf::{ComplementaryRoll, RollInput, RollKf, RollTuning, accel_angle_rad};
 pub use sensitivity::{
     Method, SensitivityCorrection, SensitivitySettings, UpdateInfo, linearised_eigenvalues,
     sensitivity_finite_difference_check,
 };
 pub use wz_integration::WzIntegration;
-pub use wz_kalman::{ACCEL_NOISE_KEY, KF_Q_SCALE_KEY, WzKalman};
+pub use wz_kalman::{WzKalman, WzKalmanTuning};
 
-use crate::model::{ParamValues, StateInfo, StateKind};
+use crate::model::{StateInfo, StateKind};
 
 /// The states of an attitude error about the three body axes (rad): the covariance the
 /// integrators publish.
@@ -81,17 +79,20 @@ impl IntegrationErrorModel {
     }
 }
 
-/// Parameter keys through which a lab tells its integrators the gyro's error budget.
-pub const GYRO_NOISE_KEY: &str = "gyro_noise_deg_s";
-/// See [`GYRO_NOISE_KEY`].
-pub const GYRO_BIAS_KEY: &str = "gyro_bias_deg_s";
+/// The gyro's error budget an integrator publishes its covariance from (a lab's
+/// [`Tuner`](crate::model::Tuner) gives it from the lab's parameters).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GyroErrors {
+    /// White-noise σ per sample (rad/s).
+    pub noise_sigma_rad_s: f64,
+    /// 1σ of the unknown bias (rad/s).
+    pub bias_sigma_rad_s: f64,
+}
 
-/// Takes the gyro's noise and bias from the lab's parameters, where the lab has them.
-fn update_error_model(model: &mut IntegrationErrorModel, params: &ParamValues) {
-    if let Ok(noise) = params.try_get(GYRO_NOISE_KEY) {
-        model.noise_sigma_rad_s = noise.to_radians();
-    }
-    if let Ok(bias) = params.try_get(GYRO_BIAS_KEY) {
-        model.bias_sigma_rad_s = bias.to_radians();
+impl IntegrationErrorModel {
+    /// The same model with the gyro's new error budget (what has accumulated stays).
+    fn retune(&mut self, g: GyroErrors) {
+        self.noise_sigma_rad_s = g.noise_sigma_rad_s;
+        self.bias_sigma_rad_s = g.bias_sigma_rad_s;
     }
 }

@@ -2,10 +2,10 @@
 //! Poisson equation in quaternion form, cited by paper 3 §2), by RK4 with the rate linear
 //! between samples. The reference every other attitude estimator is compared with.
 
-use super::{ATTITUDE_AXES, IntegrationErrorModel};
+use super::{ATTITUDE_AXES, GyroErrors, IntegrationErrorModel};
 use crate::math::{RateSegment, step_quaternion_rk4};
 use crate::model::{
-    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo,
+    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo, Tuner,
 };
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
@@ -16,6 +16,7 @@ pub struct QuaternionIntegration {
     last_rate_rad_s: Option<Vector3<f64>>,
     error_model: IntegrationErrorModel,
     cov: Matrix3<f64>,
+    tuner: Option<Tuner<GyroErrors>>,
 }
 
 impl QuaternionIntegration {
@@ -26,7 +27,15 @@ impl QuaternionIntegration {
             last_rate_rad_s: None,
             error_model,
             cov: Matrix3::zeros(),
+            tuner: None,
         }
+    }
+
+    /// Re-tunes the published variance from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<GyroErrors>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 }
 
@@ -51,7 +60,9 @@ impl Estimator for QuaternionIntegration {
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
-        super::update_error_model(&mut self.error_model, params);
+        if let Some(f) = self.tuner {
+            self.error_model.retune(f(params));
+        }
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {

@@ -17,31 +17,9 @@
 use super::kf::{KalmanState, LinearObservation};
 use crate::model::{
     Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
-    StateInfo, StateKind,
+    StateInfo, StateKind, Tuner,
 };
 use nalgebra::{SMatrix, SVector, Vector3};
-
-/// Parameter keys the roll filters read.
-pub mod keys {
-    /// γ = det Q / det R.
-    pub const GAMMA: &str = "gamma";
-    /// Feed the controller's u_v to the paper's filter (toggle).
-    pub const INPUT: &str = "kf_input";
-    /// The filter's assumed accelerometer-angle σ (deg).
-    pub const SIGMA_ANGLE: &str = "kf_sigma_angle_deg";
-    /// The filter's assumed gyro σ (deg/s).
-    pub const SIGMA_RATE: &str = "kf_sigma_rate_deg_s";
-    /// Random-walk density of the bias state (deg/s/√s).
-    pub const BIAS_WALK: &str = "kf_bias_walk";
-    /// Complementary-filter gain a.
-    pub const CF_GAIN: &str = "cf_gain";
-    /// Where Q comes from: 0 = γ (the paper), 1 = two elements.
-    pub const Q_FROM: &str = "kf_q_from";
-    /// Q's angle element per step (deg²), when Q is set element by element.
-    pub const Q_ANGLE: &str = "kf_q_angle_deg2";
-    /// Q's rate element per step ((deg/s)²), when Q is set element by element.
-    pub const Q_RATE: &str = "kf_q_rate_deg2_s2";
-}
 
 /// What the filter is fed as the model input.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,7 +31,7 @@ pub enum RollInput {
     WithConstant,
 }
 
-/// The filter's settings, from the lab's parameters.
+/// The filter's settings (a lab's [`Tuner`] gives them from its parameters).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RollTuning {
     /// γ.
@@ -71,37 +49,6 @@ pub struct RollTuning {
 }
 
 impl RollTuning {
-    /// The tuning in `p` (keys in [`keys`]); missing keys keep `self`'s values.
-    pub fn read(mut self, p: &ParamValues) -> Self {
-        if let Ok(g) = p.try_get(keys::GAMMA) {
-            self.gamma = g;
-        }
-        if let Ok(v) = p.try_get(keys::INPUT) {
-            self.input_on = v >= 0.5;
-        }
-        if let Ok(v) = p.try_get(keys::SIGMA_ANGLE) {
-            self.sigma_angle_rad = v.to_radians();
-        }
-        if let Ok(v) = p.try_get(keys::SIGMA_RATE) {
-            self.sigma_rate_rad_s = v.to_radians();
-        }
-        if let Ok(v) = p.try_get(keys::BIAS_WALK) {
-            self.bias_walk = v.to_radians();
-        }
-        if let Ok(from) = p.try_get(keys::Q_FROM) {
-            let deg2 = std::f64::consts::PI.powi(2) / 180f64.powi(2);
-            self.q_elements = match (
-                from >= 0.5,
-                p.try_get(keys::Q_ANGLE),
-                p.try_get(keys::Q_RATE),
-            ) {
-                (true, Ok(a), Ok(r)) => Some([a * deg2, r * deg2]),
-                _ => None,
-            };
-        }
-        self
-    }
-
     /// The [θ, ω] block of Q for a step of `dt_s`: by γ, or element by element.
     pub fn q_block(&self, dt_s: f64) -> [f64; 2] {
         match self.q_elements {
@@ -142,6 +89,7 @@ pub struct RollKf<const N: usize> {
     label: &'static str,
     input: RollInput,
     tuning: RollTuning,
+    tuner: Option<Tuner<RollTuning>>,
     kf: KalmanState<N>,
     innovation: [f64; 2],
     status: EstimatorStatus,
@@ -166,10 +114,18 @@ impl<const N: usize> RollKf<N> {
             label,
             input,
             tuning,
+            tuner: None,
             kf: KalmanState::new(SVector::zeros(), p0),
             innovation: [0.0; 2],
             status: EstimatorStatus::Ok,
         }
+    }
+
+    /// Re-tunes the filter from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<RollTuning>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 
     /// The covariance.
@@ -198,7 +154,9 @@ impl<const N: usize> Estimator for RollKf<N> {
     }
 
     fn apply_params(&mut self, p: &ParamValues) {
-        self.tuning = self.tuning.read(p);
+        if let Some(f) = self.tuner {
+            self.tuning = f(p);
+        }
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {
@@ -297,6 +255,7 @@ impl<const N: usize> Estimator for RollKf<N> {
 #[derive(Clone, Debug)]
 pub struct ComplementaryRoll {
     gain: f64,
+    tuner: Option<Tuner<f64>>,
     angle_rad: f64,
     rate_rad_s: f64,
     started: bool,
@@ -307,10 +266,18 @@ impl ComplementaryRoll {
     pub fn new(gain: f64) -> Self {
         Self {
             gain,
+            tuner: None,
             angle_rad: 0.0,
             rate_rad_s: 0.0,
             started: false,
         }
+    }
+
+    /// Takes the gain a from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<f64>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 }
 
@@ -324,8 +291,8 @@ impl Estimator for ComplementaryRoll {
     }
 
     fn apply_params(&mut self, p: &ParamValues) {
-        if let Ok(a) = p.try_get(keys::CF_GAIN) {
-            self.gain = a;
+        if let Some(f) = self.tuner {
+            self.gain = f(p);
         }
     }
 

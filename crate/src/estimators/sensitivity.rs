@@ -23,7 +23,7 @@
 
 use crate::math::{sequence_from_quaternion, symmetrize, wrap_pi};
 use crate::model::{
-    Attitude, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+    Attitude, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity, Tuner,
 };
 use nalgebra::{
     Complex, Matrix2, Matrix3, Matrix4, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector4,
@@ -145,6 +145,7 @@ pub struct SensitivityCorrection {
     label: &'static str,
     method: Method,
     settings: SensitivitySettings,
+    tuner: Option<Tuner<SensitivitySettings>>,
     q: Quaternion<f64>,
     u: SMatrix<f64, 4, 3>,
     p: Vector3<f64>,
@@ -173,6 +174,7 @@ impl SensitivityCorrection {
             label,
             method,
             settings,
+            tuner: None,
             q: q0.into_inner(),
             u: SMatrix::zeros(),
             p: if method == Method::Uncorrected {
@@ -188,6 +190,14 @@ impl SensitivityCorrection {
             last_reference: None,
             status: EstimatorStatus::Ok,
         }
+    }
+
+    /// Re-tunes ε, Q, the tolerance and the renormalisation from the lab's parameters on
+    /// every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<SensitivitySettings>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 
     /// The correction p (rad/s).
@@ -324,18 +334,9 @@ impl Estimator for SensitivityCorrection {
     }
 
     fn apply_params(&mut self, p: &ParamValues) {
-        if let Ok(e) = p.try_get("eps") {
-            self.settings.eps = e;
+        if let Some(f) = self.tuner {
+            self.settings = f(p);
         }
-        for (i, w) in self.settings.weights.iter_mut().enumerate() {
-            if let Ok(v) = p.try_get(["q_weight_0", "q_weight_1", "q_weight_2", "q_weight_3"][i]) {
-                *w = v;
-            }
-        }
-        if let Ok(t) = p.try_get("tolerance_rad") {
-            self.settings.tolerance_rad = t;
-        }
-        self.settings.renormalise = p.try_get("renormalise").is_ok_and(|v| v >= 0.5);
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {

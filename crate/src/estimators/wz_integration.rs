@@ -3,10 +3,10 @@
 //! down) it switches to the flipped chart s = 1/w (digest §3) with hysteresis, so it runs
 //! through any attitude.
 
-use super::{ATTITUDE_AXES, IntegrationErrorModel};
+use super::{ATTITUDE_AXES, GyroErrors, IntegrationErrorModel};
 use crate::math::{RateSegment, WzAttitude, step_uvz_rk4};
 use crate::model::{
-    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo,
+    Attitude, Covariance, Estimate, Estimator, Measurements, ParamValues, StateInfo, Tuner,
 };
 use nalgebra::{Matrix3, Vector3};
 
@@ -18,6 +18,7 @@ pub struct WzIntegration {
     error_model: IntegrationErrorModel,
     cov: Matrix3<f64>,
     chart_switches: u32,
+    tuner: Option<Tuner<GyroErrors>>,
 }
 
 impl WzIntegration {
@@ -28,8 +29,16 @@ impl WzIntegration {
             last_rate_rad_s: None,
             error_model,
             cov: Matrix3::zeros(),
+            tuner: None,
             chart_switches: 0,
         }
+    }
+
+    /// Re-tunes the published variance from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<GyroErrors>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 
     /// How many times the chart has switched so far.
@@ -59,7 +68,9 @@ impl Estimator for WzIntegration {
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
-        super::update_error_model(&mut self.error_model, params);
+        if let Some(f) = self.tuner {
+            self.error_model.retune(f(params));
+        }
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {

@@ -13,20 +13,39 @@
 //! is exact (the NEES test). `kf_q_scale` scales the process noise.
 
 use super::kf::KalmanState;
-use super::{GYRO_BIAS_KEY, GYRO_NOISE_KEY};
 use crate::math::{
     RateSegment, WzAttitude, WzChart, chart_coords_of_vertical, step_uvz_rk4, symmetrize,
 };
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues,
-    Quantity, StateInfo, StateKind,
+    Quantity, StateInfo, StateKind, Tuner,
 };
 use nalgebra::{Matrix2, Matrix2x3, Vector2, Vector3};
 
-/// Parameter key of the accelerometer noise σ (g).
-pub const ACCEL_NOISE_KEY: &str = "accel_noise_g";
-/// Parameter key of the process-noise scale.
-pub const KF_Q_SCALE_KEY: &str = "kf_q_scale";
+/// The noise the (u, v) filter assumes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WzKalmanTuning {
+    /// Gyro white-noise σ per sample (rad/s).
+    pub gyro_sigma_rad_s: f64,
+    /// 1σ of an unmodelled constant gyro bias (rad/s), turned into process noise.
+    pub bias_sigma_rad_s: f64,
+    /// Accelerometer noise σ per axis (g).
+    pub accel_sigma_g: f64,
+    /// Scale of the process noise.
+    pub q_scale: f64,
+}
+
+impl Default for WzKalmanTuning {
+    /// A noiseless gyro and a 0.01-g accelerometer.
+    fn default() -> Self {
+        Self {
+            gyro_sigma_rad_s: 0.0,
+            bias_sigma_rad_s: 0.0,
+            accel_sigma_g: 0.01,
+            q_scale: 1.0,
+        }
+    }
+}
 
 /// Correlation time (s) with which an unmodelled constant gyro bias is turned into process
 /// noise.
@@ -39,10 +58,8 @@ pub struct WzKalman {
     /// (u, v) and their covariance, in the current chart.
     kf: KalmanState<2>,
     last_rate_rad_s: Option<Vector3<f64>>,
-    gyro_sigma_rad_s: f64,
-    bias_sigma_rad_s: f64,
-    accel_sigma_g: f64,
-    q_scale: f64,
+    tuning: WzKalmanTuning,
+    tuner: Option<Tuner<WzKalmanTuning>>,
     innovation: [f64; 2],
     status: EstimatorStatus,
 }
@@ -89,13 +106,18 @@ impl WzKalman {
             wz: wz0,
             kf: KalmanState::new(Vector2::new(wz0.u, wz0.v), p0),
             last_rate_rad_s: None,
-            gyro_sigma_rad_s: 0.0,
-            bias_sigma_rad_s: 0.0,
-            accel_sigma_g: 0.01,
-            q_scale: 1.0,
+            tuning: WzKalmanTuning::default(),
+            tuner: None,
             innovation: [0.0; 2],
             status: EstimatorStatus::Ok,
         }
+    }
+
+    /// Re-tunes the filter from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<WzKalmanTuning>) -> Self {
+        self.tuner = Some(tuner);
+        self
     }
 
     fn rates_in_chart(&self, rate: &Vector3<f64>) -> Vector3<f64> {
@@ -117,9 +139,9 @@ impl WzKalman {
         // White gyro noise: σ² per sample enters as σ² dt². The unmodelled bias b enters as
         // rate noise of spectral density b²·τ (τ = BIAS_CORRELATION_S), so the predicted
         // error from it after τ seconds is b·τ, what a constant bias really does by then.
-        let angle_var = (self.gyro_sigma_rad_s * dt_s).powi(2)
-            + self.bias_sigma_rad_s.powi(2) * BIAS_CORRELATION_S * dt_s;
-        let q = g * g.transpose() * (angle_var * self.q_scale);
+        let angle_var = (self.tuning.gyro_sigma_rad_s * dt_s).powi(2)
+            + self.tuning.bias_sigma_rad_s.powi(2) * BIAS_CORRELATION_S * dt_s;
+        let q = g * g.transpose() * (angle_var * self.tuning.q_scale);
         let before = self.wz;
         self.wz = step_uvz_rk4(&self.wz, |f| seg.at(f), dt_s);
         self.kf
@@ -144,7 +166,7 @@ impl WzKalman {
         // (uᵃ, vᵃ) are computed from the normalised reading, so only noise across k matters.
         let j = jacobian_accel(&k_chart)
             * (nalgebra::Matrix3::identity() - k_chart * k_chart.transpose());
-        let r = symmetrize(&(j * j.transpose() * self.accel_sigma_g.powi(2)));
+        let r = symmetrize(&(j * j.transpose() * self.tuning.accel_sigma_g.powi(2)));
         let y = Vector2::new(ua - self.wz.u, va - self.wz.v);
         match self.kf.update_with(y, &Matrix2::identity(), &r) {
             Ok(_) => {
@@ -208,15 +230,13 @@ impl Estimator for WzKalman {
     }
 
     fn apply_params(&mut self, params: &ParamValues) {
-        let read = |key: &str, into: &mut f64, f: fn(f64) -> f64| {
-            if let Ok(v) = params.try_get(key) {
-                *into = f(v);
-            }
-        };
-        read(GYRO_NOISE_KEY, &mut self.gyro_sigma_rad_s, f64::to_radians);
-        read(GYRO_BIAS_KEY, &mut self.bias_sigma_rad_s, f64::to_radians);
-        read(ACCEL_NOISE_KEY, &mut self.accel_sigma_g, |x| x.max(1e-6));
-        read(KF_Q_SCALE_KEY, &mut self.q_scale, |x| x);
+        if let Some(f) = self.tuner {
+            let t = f(params);
+            self.tuning = WzKalmanTuning {
+                accel_sigma_g: t.accel_sigma_g.max(1e-6),
+                ..t
+            };
+        }
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {

@@ -285,6 +285,12 @@ impl Covariance<'_> {
     }
 }
 
+/// How a lab turns its parameters into an estimator's tuning: a function of the lab's own,
+/// so that only the lab reads its keys (an estimator never looks one up, and a key the lab
+/// lacks is the lab's own bug, which its tests find). An estimator built with one re-tunes
+/// on every live parameter change; one built without keeps the tuning it was built with.
+pub type Tuner<T> = fn(&ParamValues) -> T;
+
 /// An attitude estimator in the simulation loop. One file per estimator, each citing its
 /// paper and equations; a lab lists its estimators in [`super::LabRun::estimators`].
 pub trait Estimator: Send {

@@ -17,7 +17,7 @@ mod study;
 
 pub use estimate::{
     Attitude, ControlInput, Covariance, Estimate, Estimator, EstimatorStatus, Measurements,
-    Onboard, Outputs, STATUS_OK, StateInfo, StateKind,
+    Onboard, Outputs, STATUS_OK, StateInfo, StateKind, Tuner,
 };
 pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};
 pub use log::{LogFormat, LogLineError, RateLog};

@@ -10,7 +10,7 @@ mod reproduce;
 mod sensors;
 mod truth;
 
-use crate::estimators::{IntegrationErrorModel, QuaternionIntegration, WzIntegration};
+use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
 use crate::model::{
     Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, ReproError, Reproduction, SensorModel,
@@ -23,6 +23,14 @@ use truth::Tumble;
 
 /// The free-rotation lab.
 pub struct FreeRotation;
+
+/// The gyro's error budget the integrators publish their covariance from.
+fn gyro_errors(p: &ParamValues) -> GyroErrors {
+    GyroErrors {
+        noise_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
+        bias_sigma_rad_s: p.get("gyro_bias_deg_s").to_radians(),
+    }
+}
 
 impl Lab for FreeRotation {
     fn id(&self) -> &'static str {
@@ -64,11 +72,13 @@ impl Lab for FreeRotation {
         sensors.apply_params(params);
         let model = IntegrationErrorModel::new(0.0, 0.0);
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
-            Box::new(QuaternionIntegration::new(state.q_ref_from_body, model)),
-            Box::new(WzIntegration::new(
-                WzAttitude::from_quaternion(&state.q_ref_from_body),
-                model,
-            )),
+            Box::new(
+                QuaternionIntegration::new(state.q_ref_from_body, model).tuned_by(gyro_errors),
+            ),
+            Box::new(
+                WzIntegration::new(WzAttitude::from_quaternion(&state.q_ref_from_body), model)
+                    .tuned_by(gyro_errors),
+            ),
         ];
         estimators.iter_mut().for_each(|e| e.apply_params(params));
         LabRun {

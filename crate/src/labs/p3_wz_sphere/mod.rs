@@ -12,7 +12,8 @@ mod reproduce;
 
 use crate::dynamics::{AngleProfile, EulerMotion, RigidBody, RigidBodyState};
 use crate::estimators::{
-    AccelWz, BlendedWz, IntegrationErrorModel, QuaternionIntegration, WzIntegration, WzKalman,
+    AccelWz, BlendedWz, GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration,
+    WzKalman, WzKalmanTuning,
 };
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
@@ -175,6 +176,25 @@ const FIGURES: &[Figure] = &[
     Figure::new("KF variances (log10)", &["kf-uv.var_u", "kf-uv.var_v"]).log(),
 ];
 
+/// The gyro's error budget the integrators publish their covariance from.
+fn gyro_errors(p: &ParamValues) -> GyroErrors {
+    GyroErrors {
+        noise_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
+        bias_sigma_rad_s: p.get("gyro_bias_deg_s").to_radians(),
+    }
+}
+
+/// The (u, v) Kalman filter's noise: the gyro's, the accelerometer's and the Q scale.
+fn kf_tuning(p: &ParamValues) -> WzKalmanTuning {
+    let g = gyro_errors(p);
+    WzKalmanTuning {
+        gyro_sigma_rad_s: g.noise_sigma_rad_s,
+        bias_sigma_rad_s: g.bias_sigma_rad_s,
+        accel_sigma_g: p.get("accel_noise_g"),
+        q_scale: p.get("kf_q_scale"),
+    }
+}
+
 impl Lab for WzSphere {
     fn id(&self) -> &'static str {
         "p3"
@@ -222,11 +242,11 @@ impl Lab for WzSphere {
         let model = IntegrationErrorModel::new(0.0, 0.0);
         let p0 = Matrix2::identity() * 1e-6;
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
-            Box::new(WzIntegration::new(wz0, model)),
+            Box::new(WzIntegration::new(wz0, model).tuned_by(gyro_errors)),
             Box::new(AccelWz::new()),
-            Box::new(BlendedWz::new(wz0, 1.0)),
-            Box::new(WzKalman::new(wz0, p0)),
-            Box::new(QuaternionIntegration::new(q0, model)),
+            Box::new(BlendedWz::new(wz0, 1.0).tuned_by(|p| p.get("blend_time_const_s"))),
+            Box::new(WzKalman::new(wz0, p0).tuned_by(kf_tuning)),
+            Box::new(QuaternionIntegration::new(q0, model).tuned_by(gyro_errors)),
         ];
         estimators.iter_mut().for_each(|e| e.apply_params(params));
         LabRun {

@@ -3,12 +3,13 @@
 //! 2025). The paper gives the method, the γ grid and Table 1 but no plant numbers; every
 //! number here that is not the paper's is marked "ours" in the help and the README.
 
+pub mod keys;
 mod mpu6050;
 mod plant;
 mod reproduce;
 mod tuning;
 
-use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning, roll_keys};
+use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
     Estimator, ExampleLog, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError,
     Reproduction, SINGLE_AXIS_VIEWS, SweepSpec, ViewKind,
@@ -43,15 +44,15 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("vibration_g", "Propeller vibration at the IMU", "g", 0.0, 1.0, 0.2).help("Ours: the motors shake the accelerometer (RMS per axis); the datasheet noise alone is far smaller. It decides where the best γ lies: 0.2 g puts it at the paper's 2·10⁻³, a quieter rig favours larger γ."),
     ParamSpec::real("gyro_offset_deg_s", "Gyro zero-rate offset", "°/s", -20.0, 20.0, 0.5).help("Datasheet: up to ±20 °/s before calibration; what is left after a start-up calibration (ours: 0.5)."),
     ParamSpec::real("imu_offset_m", "IMU distance from the pivot", "m", 0.0, 0.3, 0.1).help("The accelerometer feels rθ̈ and rθ̇² besides gravity, so its angle is wrong during fast motion."),
-    ParamSpec::real(roll_keys::GAMMA, "γ = det Q / det R", "", 1e-8, 10.0, 2e-3).log().help("Small γ trusts the model (smooth, but an offset and a slow transient); large γ trusts the sensors (noisy). Paper's optimum: 2·10⁻³. Q = q·diag(dt³/3, dt) with q set so det Q = γ det R (ours)."),
-    ParamSpec::choice(roll_keys::Q_FROM, "KF's Q from", Q_FROM, 0).help("γ (the paper, with this project's mapping) or two elements set by hand (beyond the paper: the Q landscape sweep walks across lines of constant γ)."),
-    ParamSpec::real(roll_keys::Q_ANGLE, "Q angle element q_θ", "deg²", 1e-10, 1e-2, 2e-6).log().requires(roll_keys::Q_FROM).help("Per step; γ* with the γ mapping is q_θ ≈ 2·10⁻⁶ deg²."),
-    ParamSpec::real(roll_keys::Q_RATE, "Q rate element q_ω", "(deg/s)²", 1e-6, 100.0, 0.06).log().requires(roll_keys::Q_FROM).help("Per step; γ* with the γ mapping is q_ω ≈ 0.06 (deg/s)²."),
-    ParamSpec::toggle(roll_keys::INPUT, "Feed u_v to the KF", true).help("The paper's model x⁺ = Ax + Bu with the zero-mean u_v of the P–PI split."),
-    ParamSpec::real(roll_keys::SIGMA_ANGLE, "KF's R: accelerometer-angle σ", "°", 0.01, 5.0, 0.19).log().help("R = diag(σ_θ², σ_ω²), fixed while γ moves; the datasheet values at 44 Hz are 0.19° and 0.04 °/s."),
-    ParamSpec::real(roll_keys::SIGMA_RATE, "KF's R: gyro σ", "°/s", 0.005, 5.0, 0.04).log(),
-    ParamSpec::real(roll_keys::BIAS_WALK, "Bias KF: bias random walk", "°/s/√s", 1e-4, 1.0, 0.01).log().help("Beyond the paper: the [θ, ω, b] filter's bias process noise."),
-    ParamSpec::real(roll_keys::CF_GAIN, "Complementary gain a", "", 0.5, 0.999, 0.98).help("θ ← a(θ + ω dt) + (1 − a)θ_acc (ours: 0.98, τ ≈ 0.5 s at 100 Hz)."),
+    ParamSpec::real(keys::GAMMA, "γ = det Q / det R", "", 1e-8, 10.0, 2e-3).log().help("Small γ trusts the model (smooth, but an offset and a slow transient); large γ trusts the sensors (noisy). Paper's optimum: 2·10⁻³. Q = q·diag(dt³/3, dt) with q set so det Q = γ det R (ours)."),
+    ParamSpec::choice(keys::Q_FROM, "KF's Q from", Q_FROM, 0).help("γ (the paper, with this project's mapping) or two elements set by hand (beyond the paper: the Q landscape sweep walks across lines of constant γ)."),
+    ParamSpec::real(keys::Q_ANGLE, "Q angle element q_θ", "deg²", 1e-10, 1e-2, 2e-6).log().requires(keys::Q_FROM).help("Per step; γ* with the γ mapping is q_θ ≈ 2·10⁻⁶ deg²."),
+    ParamSpec::real(keys::Q_RATE, "Q rate element q_ω", "(deg/s)²", 1e-6, 100.0, 0.06).log().requires(keys::Q_FROM).help("Per step; γ* with the γ mapping is q_ω ≈ 0.06 (deg/s)²."),
+    ParamSpec::toggle(keys::INPUT, "Feed u_v to the KF", true).help("The paper's model x⁺ = Ax + Bu with the zero-mean u_v of the P–PI split."),
+    ParamSpec::real(keys::SIGMA_ANGLE, "KF's R: accelerometer-angle σ", "°", 0.01, 5.0, 0.19).log().help("R = diag(σ_θ², σ_ω²), fixed while γ moves; the datasheet values at 44 Hz are 0.19° and 0.04 °/s."),
+    ParamSpec::real(keys::SIGMA_RATE, "KF's R: gyro σ", "°/s", 0.005, 5.0, 0.04).log(),
+    ParamSpec::real(keys::BIAS_WALK, "Bias KF: bias random walk", "°/s/√s", 1e-4, 1.0, 0.01).log().help("Beyond the paper: the [θ, ω, b] filter's bias process noise."),
+    ParamSpec::real(keys::CF_GAIN, "Complementary gain a", "", 0.5, 0.999, 0.98).help("θ ← a(θ + ω dt) + (1 − a)θ_acc (ours: 0.98, τ ≈ 0.5 s at 100 Hz)."),
 ];
 
 const Q_FROM: &[&str] = &["γ (the paper)", "two elements"];
@@ -109,17 +110,17 @@ const PRESETS: &[Preset] = &[
     Preset {
         name: "γ* = 2·10⁻³ (the paper's optimum)",
         help: "The paper's choice",
-        values: &[(roll_keys::GAMMA, 2e-3)],
+        values: &[(keys::GAMMA, 2e-3)],
     },
     Preset {
         name: "γ = 10⁻⁵: offset, slow",
         help: "The filter trusts its model: smooth, but behind in the steps and off by the gyro offset",
-        values: &[(roll_keys::GAMMA, 1e-5)],
+        values: &[(keys::GAMMA, 1e-5)],
     },
     Preset {
         name: "γ = 0.2: noisy",
         help: "The filter trusts the sensors: fast, and it passes their noise",
-        values: &[(roll_keys::GAMMA, 0.2)],
+        values: &[(keys::GAMMA, 0.2)],
     },
     Preset {
         name: "quadrotor, asymmetric 15 %",
@@ -147,17 +148,20 @@ const PRESETS: &[Preset] = &[
     },
 ];
 
-/// The filters' settings in `p`.
-fn tuning_of(p: &ParamValues) -> RollTuning {
+/// The filters' settings in `p`: γ, the input switch, R's σ, the bias walk, and Q element
+/// by element when the lab is set to.
+pub fn tuning_of(p: &ParamValues) -> RollTuning {
+    let deg2 = std::f64::consts::PI.powi(2) / 180f64.powi(2);
     RollTuning {
-        gamma: 2e-3,
-        input_on: true,
-        sigma_angle_rad: 0.0,
-        sigma_rate_rad_s: 0.0,
-        bias_walk: 0.0,
-        q_elements: None,
+        gamma: p.get(keys::GAMMA),
+        input_on: p.flag(keys::INPUT),
+        sigma_angle_rad: p.get(keys::SIGMA_ANGLE).to_radians(),
+        sigma_rate_rad_s: p.get(keys::SIGMA_RATE).to_radians(),
+        bias_walk: p.get(keys::BIAS_WALK).to_radians(),
+        q_elements: p
+            .flag(keys::Q_FROM)
+            .then(|| [p.get(keys::Q_ANGLE) * deg2, p.get(keys::Q_RATE) * deg2]),
     }
-    .read(p)
 }
 
 /// The datasheet σ of one sample at `p`'s DLPF: (accelerometer angle °, gyro °/s).
@@ -214,25 +218,36 @@ impl Lab for QuadrotorRoll {
     fn build(&self, p: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
         let t = tuning_of(p);
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
-            Box::new(RollKf::<2>::new(
-                "kf",
-                "KF [θ, ω] tuned by γ (the paper)",
-                RollInput::PaperSwitch,
-                t,
-            )),
-            Box::new(ComplementaryRoll::new(p.get(roll_keys::CF_GAIN))),
-            Box::new(RollKf::<3>::new(
-                "kf-bias",
-                "Beyond the paper: KF [θ, ω, b]",
-                RollInput::PaperSwitch,
-                t,
-            )),
-            Box::new(RollKf::<2>::new(
-                "kf-u0",
-                "Beyond the paper: KF fed u_v + u₀",
-                RollInput::WithConstant,
-                t,
-            )),
+            Box::new(
+                RollKf::<2>::new(
+                    "kf",
+                    "KF [θ, ω] tuned by γ (the paper)",
+                    RollInput::PaperSwitch,
+                    t,
+                )
+                .tuned_by(tuning_of),
+            ),
+            Box::new(
+                ComplementaryRoll::new(p.get(keys::CF_GAIN)).tuned_by(|p| p.get(keys::CF_GAIN)),
+            ),
+            Box::new(
+                RollKf::<3>::new(
+                    "kf-bias",
+                    "Beyond the paper: KF [θ, ω, b]",
+                    RollInput::PaperSwitch,
+                    t,
+                )
+                .tuned_by(tuning_of),
+            ),
+            Box::new(
+                RollKf::<2>::new(
+                    "kf-u0",
+                    "Beyond the paper: KF fed u_v + u₀",
+                    RollInput::WithConstant,
+                    t,
+                )
+                .tuned_by(tuning_of),
+            ),
         ];
         estimators.iter_mut().for_each(|e| e.apply_params(p));
         LabRun {

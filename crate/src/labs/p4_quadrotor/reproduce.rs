@@ -9,11 +9,11 @@
 //! of the new set-point, θ̂ averaged over ±50 ms (the rest of the run, 4 s, when it never
 //! does).
 
+use super::keys as roll_keys;
 use super::{QuadrotorRoll, tuning};
 use crate::analysis::AnalysisError;
 use crate::analysis::scenario::params_with;
 use crate::analysis::sweep::Sweep;
-use crate::estimators::roll_keys;
 use crate::model::{Expectation, Lab, Reproduction, Row, SweepSpec, fmt_sig};
 
 /// The paper's γ grid (the exponent of the last one is lost in the OCR; n > 3) and its

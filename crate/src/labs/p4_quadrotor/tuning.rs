@@ -12,8 +12,8 @@
 //!   averaged; noise = RMS of the sample-to-sample differences of θ̂ − θ over the second
 //!   before the step, over √2 (a slow drift does not count as noise).
 
+use super::keys as roll_keys;
 use crate::analysis::stats;
-use crate::estimators::roll_keys;
 use crate::model::{ParamValues, SweepScoring, SweepSpec};
 
 /// The series the simulated runs are scored on.

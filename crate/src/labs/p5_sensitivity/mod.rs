@@ -11,7 +11,7 @@ mod reproduce;
 mod sensors;
 mod truth;
 
-use crate::estimators::{SensitivityCorrection, SensitivitySettings};
+use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
 use crate::model::{
     Diagram, Estimator, Figure, Lab, LabRun, OutputFile, ParamSpec, ParamValues, Preset,
@@ -85,24 +85,14 @@ impl Lab for SensitivityLab {
             p.get("p0_z_deg_s"),
         )
         .map(f64::to_radians);
-        let settings = SensitivitySettings {
-            eps: p.get("eps"),
-            weights: [
-                p.get("q_weight_0"),
-                p.get("q_weight_1"),
-                p.get("q_weight_2"),
-                p.get("q_weight_3"),
-            ],
-            renormalise: p.flag("renormalise"),
-            axes,
-            tolerance_rad: p.get("tolerance_rad"),
-        };
+        let settings = params::settings_of(p);
         let mut estimators: Vec<Box<dyn Estimator>> = METHODS
             .iter()
             .map(|(id, label, method)| -> Box<dyn Estimator> {
-                Box::new(SensitivityCorrection::new(
-                    id, label, *method, start, p0, settings,
-                ))
+                Box::new(
+                    SensitivityCorrection::new(id, label, *method, start, p0, settings)
+                        .tuned_by(params::settings_of),
+                )
             })
             .collect();
         estimators.iter_mut().for_each(|e| e.apply_params(p));

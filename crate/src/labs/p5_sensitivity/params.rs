@@ -1,7 +1,7 @@
 //! Paper 5's parameters: the motion, the gyro's errors, the references and their
 //! interval, each method's settings; the estimators the lab runs; its presets.
 
-use crate::estimators::Method;
+use crate::estimators::{Method, SensitivitySettings};
 use crate::math::ANGLE_SEQUENCES;
 use crate::model::{ParamSpec, ParamValues, Preset};
 
@@ -114,4 +114,21 @@ pub(super) fn axes_of(p: &ParamValues) -> [usize; 3] {
     ANGLE_SEQUENCES
         .get(p.index("sequence"))
         .map_or([2, 1, 0], |s| s.1)
+}
+
+/// Every method's settings in `p`: ε, the weights of Q, the renormalisation, the angle
+/// sequence and the tolerance.
+pub(super) fn settings_of(p: &ParamValues) -> SensitivitySettings {
+    SensitivitySettings {
+        eps: p.get("eps"),
+        weights: [
+            p.get("q_weight_0"),
+            p.get("q_weight_1"),
+            p.get("q_weight_2"),
+            p.get("q_weight_3"),
+        ],
+        renormalise: p.flag("renormalise"),
+        axes: axes_of(p),
+        tolerance_rad: p.get("tolerance_rad"),
+    }
 }
