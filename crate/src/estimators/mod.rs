@@ -20,7 +20,7 @@ mod wz_kalman;
 pub use accel_wz::AccelWz;
 pub use blended_wz::BlendedWz;
 pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops};
-pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, keys as one_axis_keys};
+pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 pub use quaternion_integration::QuaternionIntegration;
 pub use roll_kf::{ComplementaryRoll, RollInput, RollKf, RollTuning, accel_angle_rad};
 pub use sensitivity::{

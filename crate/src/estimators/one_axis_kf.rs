@@ -14,7 +14,7 @@ use super::covariance_matching::{
 };
 use crate::model::{
     Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
-    StateInfo, StateKind,
+    StateInfo, StateKind, Tuner,
 };
 use nalgebra::{Matrix2, Vector2, Vector3};
 
@@ -30,16 +30,14 @@ pub enum OneAxisModel {
     },
 }
 
-/// Parameter keys the filters read.
-pub mod keys {
-    /// Covariance-matching window N (0 = off).
-    pub const WINDOW: &str = "kf_window";
-    /// Adapt R as well (toggle).
-    pub const ADAPT_R: &str = "kf_adapt_r";
-    /// Adaptation mode (choice, in the order of `AdaptMode::ALL`).
-    pub const MODE: &str = "kf_adaptation";
-    /// Gyro noise σ per input sample (°/s).
-    pub const NOISE: &str = "gyro_noise_deg_s";
+/// What a lab tunes in the one-axis filters: the adaptation, and the gyro's noise σ per
+/// input sample (R = σ²/m for m averaged samples).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OneAxisTuning {
+    /// How the filter adapts.
+    pub adaptation: Adaptation,
+    /// Gyro noise σ per input sample (rad/s).
+    pub gyro_sigma_rad_s: f64,
 }
 
 /// How far (rad) the estimate may leave the integrated angle φ_int before the filter is
@@ -61,6 +59,7 @@ pub struct OneAxisKf {
     kf: AdaptiveKf,
     averaging: usize,
     model_from: Option<fn(&ParamValues) -> OneAxisModel>,
+    tuner: Option<Tuner<OneAxisTuning>>,
     last_z: Option<f64>,
     phi_int_rad: f64,
     rate_minus_sensor_rad_s: f64,
@@ -87,6 +86,7 @@ impl OneAxisKf {
             kf,
             averaging: averaging.max(1),
             model_from: None,
+            tuner: None,
             last_z: None,
             phi_int_rad: x0[0],
             rate_minus_sensor_rad_s: 0.0,
@@ -99,6 +99,13 @@ impl OneAxisKf {
     /// period from the string and inertia sliders).
     pub fn with_model_from(mut self, model_from: fn(&ParamValues) -> OneAxisModel) -> Self {
         self.model_from = Some(model_from);
+        self
+    }
+
+    /// Takes the adaptation and the gyro noise from the lab's parameters on every change.
+    #[must_use]
+    pub fn tuned_by(mut self, tuner: Tuner<OneAxisTuning>) -> Self {
+        self.tuner = Some(tuner);
         self
     }
 
@@ -183,20 +190,12 @@ impl Estimator for OneAxisKf {
         if let Some(f) = self.model_from {
             self.model = f(p);
         }
-        let window = p.get(keys::WINDOW);
-        self.kf.adaptation = Adaptation {
-            window: if window.is_finite() {
-                window.max(0.0) as usize
-            } else {
-                0
-            },
-            adapt_r: p.flag(keys::ADAPT_R),
-            mode: AdaptMode::ALL
-                .get(p.index(keys::MODE))
-                .copied()
-                .unwrap_or(AdaptMode::SawTooth),
+        let Some(tuner) = self.tuner else {
+            return;
         };
-        let sigma = p.get(keys::NOISE).to_radians();
+        let t = tuner(p);
+        self.kf.adaptation = t.adaptation;
+        let sigma = t.gyro_sigma_rad_s;
         if sigma.is_finite() && !(self.kf.adaptation.adapt_r && self.kf.resets > 0) {
             self.kf.r = (sigma * sigma / self.averaging as f64).max(1e-16);
         }

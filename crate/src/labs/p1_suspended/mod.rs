@@ -7,7 +7,8 @@
 mod reproduce;
 
 use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
-use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel};
+use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
+use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
     Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, ReproError,
     Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesSpec, SweepSpec, TruthModel,
@@ -200,6 +201,27 @@ fn torsion_model(p: &ParamValues) -> OneAxisModel {
     }
 }
 
+/// Both filters' adaptation (window N, R adapted or not, the reading of Table 2.3) and the
+/// gyro noise their R is built from.
+fn filter_tuning(p: &ParamValues) -> OneAxisTuning {
+    let window = p.get("kf_window");
+    OneAxisTuning {
+        adaptation: Adaptation {
+            window: if window.is_finite() {
+                window.max(0.0) as usize
+            } else {
+                0
+            },
+            adapt_r: p.flag("kf_adapt_r"),
+            mode: AdaptMode::ALL
+                .get(p.index("kf_adaptation"))
+                .copied()
+                .unwrap_or(AdaptMode::SawTooth),
+        },
+        gyro_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
+    }
+}
+
 impl Lab for SuspendedMockup {
     fn id(&self) -> &'static str {
         "p1"
@@ -269,8 +291,14 @@ impl Lab for SuspendedMockup {
         let p0 = Matrix2::new(a0, 1e-4, 1e-4, 2e-4) * 1f64.to_radians().powi(2);
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
             Box::new(AngleIntegration::new(xe[0])),
-            Box::new(OneAxisKf::new(OneAxisModel::PermanentRotation, xe, p0, m)),
-            Box::new(OneAxisKf::new(torsion_model(p), xe, p0, m).with_model_from(torsion_model)),
+            Box::new(
+                OneAxisKf::new(OneAxisModel::PermanentRotation, xe, p0, m).tuned_by(filter_tuning),
+            ),
+            Box::new(
+                OneAxisKf::new(torsion_model(p), xe, p0, m)
+                    .with_model_from(torsion_model)
+                    .tuned_by(filter_tuning),
+            ),
         ];
         estimators.iter_mut().for_each(|e| e.apply_params(p));
         LabRun {
