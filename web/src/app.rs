@@ -6,8 +6,8 @@ use crate::panels;
 use crate::platform;
 use crate::render::body3d;
 use crate::state::{
-    AppState, Command, Effect, IoCommand, Message, PngTarget, RunCommand, SWEEP_BUDGET, UrlCommand,
-    View, ViewCommand,
+    AppState, Command, Effect, IoCommand, Message, PngTarget, RunCommand, STEP_BUDGET,
+    SWEEP_BUDGET, UrlCommand, View, ViewCommand,
 };
 use attlab::model::{Lab, ParamValues, ViewKind};
 use web_time::Instant;
@@ -129,7 +129,11 @@ impl AttLabApp {
                 RunCommand::Hold(now).into(),
                 ViewCommand::SelectTab(capture.tab()).into(),
             ],
-            Some(_) => vec![RunCommand::Hold(now).into()],
+            // A tab's re-run goes on while the capture waits for it.
+            Some(_) => vec![
+                RunCommand::Hold(now).into(),
+                RunCommand::AdvanceJob(STEP_BUDGET).into(),
+            ],
             None => vec![RunCommand::Advance(now).into()],
         };
         commands.extend([
@@ -196,6 +200,11 @@ impl AttLabApp {
         let Some(capture) = self.capture.as_mut() else {
             return;
         };
+        if self.state.run().job().is_some() {
+            // The tab shown is being re-run for its series: picture it when it has them.
+            ctx.request_repaint();
+            return;
+        }
         let Step::Done(result) = capture.after_frame(ctx, &self.regions) else {
             return;
         };

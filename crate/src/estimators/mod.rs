@@ -89,6 +89,16 @@ pub struct GyroErrors {
     pub bias_sigma_rad_s: f64,
 }
 
+impl GyroErrors {
+    /// From a white-noise σ and a bias 1σ in °/s, as the labs' sliders give them.
+    pub fn from_deg_s(noise_sigma_deg_s: f64, bias_sigma_deg_s: f64) -> Self {
+        Self {
+            noise_sigma_rad_s: noise_sigma_deg_s.to_radians(),
+            bias_sigma_rad_s: bias_sigma_deg_s.to_radians(),
+        }
+    }
+}
+
 impl IntegrationErrorModel {
     /// The same model with the gyro's new error budget (what has accumulated stays).
     fn retune(&mut self, g: GyroErrors) {

@@ -108,6 +108,9 @@ pub enum RunCommand {
     Hold(Instant),
     /// Give the background sweep this much wall time.
     AdvanceSweep(Duration),
+    /// Move the job under way on for this much wall time without stepping the run (a PNG
+    /// capture waits for the re-run of each tab it shows).
+    AdvanceJob(Duration),
 }
 
 impl AppState {
@@ -154,6 +157,7 @@ impl AppState {
             RunCommand::Advance(now) => self.advance(now),
             RunCommand::Hold(now) => self.run.last_frame = Some(now),
             RunCommand::AdvanceSweep(budget) => self.advance_sweep(budget),
+            RunCommand::AdvanceJob(budget) => self.advance_job(budget),
         }
     }
 

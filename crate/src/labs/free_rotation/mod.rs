@@ -26,10 +26,7 @@ pub struct FreeRotation;
 
 /// The gyro's error budget the integrators publish their covariance from.
 fn gyro_errors(p: &ParamValues) -> GyroErrors {
-    GyroErrors {
-        noise_sigma_rad_s: p.get("gyro_noise_deg_s").to_radians(),
-        bias_sigma_rad_s: p.get("gyro_bias_deg_s").to_radians(),
-    }
+    GyroErrors::from_deg_s(p.get("gyro_noise_deg_s"), p.get("gyro_bias_deg_s"))
 }
 
 impl Lab for FreeRotation {
