@@ -123,6 +123,8 @@ impl AttLabApp {
             self.apply(Command::Notify(stopped));
         }
         let now = Instant::now();
+        // The capture flag first: a tab the capture selects knows it is being captured.
+        self.apply(ViewCommand::SetCapturing(self.capture.is_some()).into());
         let mut commands: Vec<Command> = match &self.capture {
             // Every part of a capture shows the same instant.
             Some(capture) if self.state.view().plots.tab != capture.tab() => vec![
@@ -137,7 +139,6 @@ impl AttLabApp {
             None => vec![RunCommand::Advance(now).into()],
         };
         commands.extend([
-            ViewCommand::SetCapturing(self.capture.is_some()).into(),
             RunCommand::AdvanceSweep(SWEEP_BUDGET).into(),
             IoCommand::TakePickedLog.into(),
         ]);

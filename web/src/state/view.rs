@@ -119,7 +119,15 @@ impl AppState {
         if wanted.iter().all(|w| recorded.iter().any(|s| &s.name == w)) {
             return;
         }
-        self.start_reselect(selection);
+        if self.view.capturing {
+            // A PNG capture shows each tab for a few frames with the run held: re-run at
+            // once, so the picture has the tab's whole history.
+            if let Err(e) = self.sim.reselect(selection) {
+                self.error(format!("cannot show this plot: {e}"));
+            }
+        } else {
+            self.start_reselect(selection);
+        }
     }
 }
 
