@@ -18,7 +18,7 @@ fn perfect_model_tracks_the_truth() {
         &["quat-rk4.err_deg", "uvz-rk4.err_deg"],
     );
     for id in ["quat-rk4", "uvz-rk4"] {
-        let err = s.last(&format!("{id}.err_deg")).unwrap();
+        let err = s.last(format!("{id}.err_deg")).unwrap();
         assert!(
             err < 1e-3,
             "{id}: {err} deg after 30 s without sensor errors"

@@ -117,7 +117,7 @@ fn upside_down_tumble_keeps_every_estimate_bounded() {
     );
     assert!(stats::min(s.series("truth.k_z").unwrap()).unwrap() < -0.95);
     for id in ["blend", "kf-uv"] {
-        let m = stats::max(s.series(&format!("{id}.tilt_err_deg")).unwrap()).unwrap();
+        let m = stats::max(s.series(format!("{id}.tilt_err_deg")).unwrap()).unwrap();
         assert!(m < 2.0, "{id}: max tilt error {m} deg through w = ∞");
     }
     let d: Vec<f64> = s

@@ -3,7 +3,7 @@
 //! series is an error, never an empty list or a NaN.
 
 use super::AnalysisError;
-use crate::model::{Lab, ParamValues};
+use crate::model::{Lab, ParamValues, SeriesRef};
 use crate::sim::{SimOptions, Simulation};
 
 /// The lab's defaults with `assignments` (`key=value`) applied; any bad assignment is an
@@ -30,10 +30,11 @@ pub struct Trace {
 
 impl Trace {
     /// Every value of series `name`, from t = 0.
-    pub fn series(&self, name: &str) -> Result<&[f64], AnalysisError> {
+    pub fn series(&self, name: impl SeriesRef) -> Result<&[f64], AnalysisError> {
+        let name = name.series_name();
         self.names
             .iter()
-            .position(|n| n == name)
+            .position(|n| *n == *name)
             .map(|i| self.columns[i].as_slice())
             .ok_or_else(|| {
                 AnalysisError::UnknownSeries(format!(
@@ -50,7 +51,7 @@ impl Trace {
     }
 
     /// Values of `name` for t > `after_s`.
-    pub fn after(&self, name: &str, after_s: f64) -> Result<Vec<f64>, AnalysisError> {
+    pub fn after(&self, name: impl SeriesRef, after_s: f64) -> Result<Vec<f64>, AnalysisError> {
         let y = self.series(name)?;
         Ok(self
             .t_s()
@@ -62,8 +63,9 @@ impl Trace {
     }
 
     /// The last value of `name`.
-    pub fn last(&self, name: &str) -> Result<f64, AnalysisError> {
-        self.series(name)?
+    pub fn last(&self, name: impl SeriesRef) -> Result<f64, AnalysisError> {
+        let name = name.series_name();
+        self.series(name.as_ref())?
             .last()
             .copied()
             .ok_or_else(|| AnalysisError::UnknownSeries(format!("`{name}` has no values")))
@@ -86,9 +88,11 @@ pub fn run_trace_with(
     params: ParamValues,
     seed: u64,
     duration_s: f64,
-    series: &[&str],
+    series: &[impl SeriesRef],
 ) -> Result<Trace, AnalysisError> {
-    let mut sim = Simulation::with_options(lab, params, seed, SimOptions::named(series))
+    let wanted: Vec<_> = series.iter().map(SeriesRef::series_name).collect();
+    let wanted: Vec<&str> = wanted.iter().map(AsRef::as_ref).collect();
+    let mut sim = Simulation::with_options(lab, params, seed, SimOptions::named(&wanted))
         .map_err(|e| AnalysisError::UnknownSeries(e.to_string()))?;
     let names: Vec<String> = sim.specs().iter().map(|s| s.name.clone()).collect();
     let rows = (duration_s / sim.dt_s()).ceil() as usize + 2;
@@ -118,7 +122,7 @@ pub fn run_trace(
     assignments: &[&str],
     seed: u64,
     duration_s: f64,
-    series: &[&str],
+    series: &[impl SeriesRef],
 ) -> Result<Trace, AnalysisError> {
     run_trace_with(
         lab,

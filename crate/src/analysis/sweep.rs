@@ -5,7 +5,7 @@
 //! run on a recorded log instead of the simulation (one run per value, no truth).
 
 use super::stats;
-use crate::model::{Lab, ParamValues, SweepScoring, SweepSpec};
+use crate::model::{Lab, ParamValues, SeriesKey, SeriesSpec, SweepScoring, SweepSpec};
 use crate::sensors::RateLog;
 use crate::sim::{SimOptions, Simulation};
 
@@ -66,6 +66,8 @@ pub struct Sweep {
     next_run: usize,
     current: Option<Running>,
     gathered: Gathered,
+    /// What a legend calls each of the spec's series (from the first run's catalogue).
+    legends: Vec<String>,
     /// Finished points, in the order of the values (grid: row by row).
     pub points: Vec<SweepPoint>,
     /// Values that could not be run, with the reason.
@@ -85,6 +87,7 @@ impl Sweep {
             next_run: 0,
             current: None,
             gathered: Gathered::default(),
+            legends: Vec::new(),
             points: Vec::new(),
             skipped: Vec::new(),
         }
@@ -120,6 +123,16 @@ impl Sweep {
             self.spec.log_scoring
         } else {
             self.spec.scoring
+        }
+    }
+
+    /// What a legend calls series `k` of the spec: its label and unit once a run has
+    /// started, its name before.
+    pub fn legend(&self, k: usize) -> String {
+        match (self.legends.get(k), self.spec.series.get(k)) {
+            (Some(legend), _) => legend.clone(),
+            (None, Some(key)) => key.name(),
+            (None, None) => String::new(),
         }
     }
 
@@ -300,6 +313,9 @@ impl Sweep {
             let seed = self.seed + (self.next_run % seeds) as u64;
             match self.start_run(value, grid_value, seed) {
                 Ok(running) => {
+                    if self.legends.is_empty() {
+                        self.legends = legends_of(self.spec.series, running.sim.specs());
+                    }
                     if self.next_run.is_multiple_of(seeds) {
                         let k = self.spec.series.len();
                         self.gathered = Gathered {
@@ -339,13 +355,15 @@ impl Sweep {
         if let (Some(axis), Some(v)) = (self.spec.grid, grid_value) {
             p.set(specs, axis.key, v).map_err(|e| e.to_string())?;
         }
-        let score_series: &[&str] = self.scoring().map_or(&[], |s| s.series);
-        let mut names: Vec<&str> = self.spec.series.to_vec();
-        names.extend(
+        let score_series: &[SeriesKey] = self.scoring().map_or(&[], |s| s.series);
+        let mut keys: Vec<SeriesKey> = self.spec.series.to_vec();
+        keys.extend(
             score_series
                 .iter()
                 .filter(|s| !self.spec.series.contains(s)),
         );
+        let names = crate::model::names(&keys);
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
         let sim = match &self.log {
             Some(log) => Simulation::replay(self.lab, p, log.clone(), SimOptions::named(&names))?,
             None => Simulation::with_options(self.lab, p, seed, SimOptions::named(&names))
@@ -355,11 +373,11 @@ impl Sweep {
             .spec
             .series
             .iter()
-            .filter_map(|s| sim.series_index(s).ok())
+            .filter_map(|s| sim.series_index(&s.name()).ok())
             .collect();
         let score_cols: Vec<Option<usize>> = score_series
             .iter()
-            .map(|s| sim.series_index(s).ok())
+            .map(|s| sim.series_index(&s.name()).ok())
             .collect();
         let row = sim.last_row();
         let recorded = score_cols
@@ -417,4 +435,16 @@ impl Sweep {
         while !self.advance(100_000) {}
         self
     }
+}
+
+/// Each key's legend among `specs` (its name where it is not recorded).
+fn legends_of(keys: &[SeriesKey], specs: &[SeriesSpec]) -> Vec<String> {
+    keys.iter()
+        .map(|k| {
+            specs
+                .iter()
+                .find(|s| k.is(&s.name))
+                .map_or_else(|| k.name(), SeriesSpec::legend)
+        })
+        .collect()
 }

@@ -14,6 +14,16 @@ use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk
 use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues, Quantity, Tuner};
 use nalgebra::Vector3;
 
+// The series this estimator records besides the catalogue's (figures name them).
+/// gyro channel HPF(u).
+pub const HPF_U: Quantity = Quantity::new("hpf_u", "gyro channel HPF(u)", "");
+/// gyro channel HPF(v).
+pub const HPF_V: Quantity = Quantity::new("hpf_v", "gyro channel HPF(v)", "");
+/// accelerometer channel LPF(uᵃ).
+pub const LPF_UA: Quantity = Quantity::new("lpf_ua", "accelerometer channel LPF(uᵃ)", "");
+/// accelerometer channel LPF(vᵃ).
+pub const LPF_VA: Quantity = Quantity::new("lpf_va", "accelerometer channel LPF(vᵃ)", "");
+
 /// First-order low-pass `y ← y + dt/(T + dt)·(x − y)`.
 fn low_pass(y: &mut f64, x: f64, dt_s: f64, t_s: f64) {
     *y += dt_s / (t_s.max(0.0) + dt_s) * (x - *y);
@@ -92,12 +102,7 @@ impl Estimator for BlendedWz {
     }
 
     fn extra_quantities(&self) -> &'static [Quantity] {
-        const QUANTITIES: &[Quantity] = &[
-            Quantity::new("hpf_u", "gyro channel HPF(u)", ""),
-            Quantity::new("hpf_v", "gyro channel HPF(v)", ""),
-            Quantity::new("lpf_ua", "accelerometer channel LPF(uᵃ)", ""),
-            Quantity::new("lpf_va", "accelerometer channel LPF(vᵃ)", ""),
-        ];
+        const QUANTITIES: &[Quantity] = &[HPF_U, HPF_V, LPF_UA, LPF_VA];
         QUANTITIES
     }
 

@@ -6,16 +6,16 @@
 //! filters share the vocabulary and update of [`kf`].
 
 mod accel_wz;
-mod blended_wz;
+pub mod blended_wz;
 pub mod covariance_matching;
 pub mod kf;
-mod mekf;
-mod one_axis_kf;
+pub mod mekf;
+pub mod one_axis_kf;
 mod quaternion_integration;
-mod roll_kf;
-mod sensitivity;
+pub mod roll_kf;
+pub mod sensitivity;
 mod wz_integration;
-mod wz_kalman;
+pub mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::BlendedWz;

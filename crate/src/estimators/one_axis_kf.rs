@@ -7,7 +7,8 @@
 //!
 //! Both predict with the exact transition matrix every simulation step (the models are linear
 //! and time invariant, so many small steps equal one long one) and update when an averaged
-//! gyro sample arrives. Adaptation is the paper's covariance matching, in [`ScalarKf`].
+//! gyro sample arrives. Adaptation is the paper's covariance matching, in
+//! [`super::covariance_matching::AdaptiveKf`].
 
 use super::covariance_matching::{
     AdaptMode, Adaptation, AdaptiveKf, rotation_transition, torsion_transition,
@@ -17,6 +18,26 @@ use crate::model::{
     StateInfo, StateKind, Tuner,
 };
 use nalgebra::{Matrix2, Vector2, Vector3};
+
+// The series this estimator records besides the catalogue's (figures name them).
+/// innovation z − Hx̂ (gyro rate less predicted φ̇) (rad/s).
+pub const INNOV_RAD_S: Quantity = Quantity::new(
+    "innov_rad_s",
+    "innovation z − Hx̂ (gyro rate less predicted φ̇)",
+    "rad/s",
+);
+/// estimated φ̇ less the gyro reading (deg/s).
+pub const RATE_MINUS_SENSOR_DEG_S: Quantity = Quantity::new(
+    "rate_minus_sensor_deg_s",
+    "estimated φ̇ less the gyro reading",
+    "deg/s",
+);
+/// estimated φ less the integrated φ_int (deg).
+pub const ANGLE_MINUS_INT_DEG: Quantity = Quantity::new(
+    "angle_minus_int_deg",
+    "estimated φ less the integrated φ_int",
+    "deg",
+);
 
 /// Which dynamic model the filter assumes.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,10 +68,11 @@ pub struct OneAxisTuning {
 pub const RUNAWAY_RAD: f64 = 10.0 * std::f64::consts::TAU;
 
 /// The states of both filters.
-const STATES: &[StateInfo] = &[
-    StateInfo::new("phi", "rad", StateKind::Angle),
-    StateInfo::new("phidot", "rad/s", StateKind::Rate),
-];
+/// The covariance state phi (rad).
+pub const STATE_PHI: StateInfo = StateInfo::new("phi", "rad", StateKind::Angle);
+/// The covariance state phidot (rad/s).
+pub const STATE_PHIDOT: StateInfo = StateInfo::new("phidot", "rad/s", StateKind::Rate);
+const STATES: &[StateInfo] = &[STATE_PHI, STATE_PHIDOT];
 
 /// One of paper 1's Kalman filters.
 #[derive(Clone, Debug)]
@@ -149,11 +171,7 @@ impl Estimator for OneAxisKf {
     }
 
     fn innovation_quantities(&self) -> &'static [Quantity] {
-        const QUANTITIES: &[Quantity] = &[Quantity::new(
-            "innov_rad_s",
-            "innovation z − Hx̂ (gyro rate less predicted φ̇)",
-            "rad/s",
-        )];
+        const QUANTITIES: &[Quantity] = &[INNOV_RAD_S];
         QUANTITIES
     }
 
@@ -162,18 +180,7 @@ impl Estimator for OneAxisKf {
     }
 
     fn extra_quantities(&self) -> &'static [Quantity] {
-        const QUANTITIES: &[Quantity] = &[
-            Quantity::new(
-                "rate_minus_sensor_deg_s",
-                "estimated φ̇ less the gyro reading",
-                "deg/s",
-            ),
-            Quantity::new(
-                "angle_minus_int_deg",
-                "estimated φ less the integrated φ_int",
-                "deg",
-            ),
-        ];
+        const QUANTITIES: &[Quantity] = &[RATE_MINUS_SENSOR_DEG_S, ANGLE_MINUS_INT_DEG];
         QUANTITIES
     }
 

@@ -21,6 +21,19 @@ use crate::model::{
 };
 use nalgebra::{SMatrix, SVector, Vector3};
 
+// The series this estimator records besides the catalogue's (figures name them).
+/// innovation of the accelerometer angle θ_acc (rad).
+pub const INNOV_ANGLE_RAD: Quantity = Quantity::new(
+    "innov_angle_rad",
+    "innovation of the accelerometer angle θ_acc",
+    "rad",
+);
+/// innovation of the gyro rate ω (rad/s).
+pub const INNOV_RATE_RAD_S: Quantity =
+    Quantity::new("innov_rate_rad_s", "innovation of the gyro rate ω", "rad/s");
+/// gyro bias b (deg/s).
+pub const GYRO_BIAS_DEG_S: Quantity = Quantity::new("gyro_bias_deg_s", "gyro bias b", "deg/s");
+
 /// What the filter is fed as the model input.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RollInput {
@@ -67,15 +80,14 @@ impl RollTuning {
     }
 }
 
-const STATES_2: &[StateInfo] = &[
-    StateInfo::new("theta", "rad", StateKind::Angle),
-    StateInfo::new("omega", "rad/s", StateKind::Rate),
-];
-const STATES_3: &[StateInfo] = &[
-    StateInfo::new("theta", "rad", StateKind::Angle),
-    StateInfo::new("omega", "rad/s", StateKind::Rate),
-    StateInfo::new("gyro_bias", "rad/s", StateKind::GyroBias(2)),
-];
+/// The covariance state theta (rad).
+pub const STATE_THETA: StateInfo = StateInfo::new("theta", "rad", StateKind::Angle);
+/// The covariance state omega (rad/s).
+pub const STATE_OMEGA: StateInfo = StateInfo::new("omega", "rad/s", StateKind::Rate);
+/// The covariance state gyro_bias (rad/s).
+pub const STATE_GYRO_BIAS: StateInfo = StateInfo::new("gyro_bias", "rad/s", StateKind::GyroBias(2));
+const STATES_2: &[StateInfo] = &[STATE_THETA, STATE_OMEGA];
+const STATES_3: &[StateInfo] = &[STATE_THETA, STATE_OMEGA, STATE_GYRO_BIAS];
 
 /// The accelerometer angle θ_acc = atan2(a_y, a_z) of a reading (g).
 pub fn accel_angle_rad(accel_g: &Vector3<f64>) -> f64 {
@@ -223,14 +235,7 @@ impl<const N: usize> Estimator for RollKf<N> {
     }
 
     fn innovation_quantities(&self) -> &'static [Quantity] {
-        const QUANTITIES: &[Quantity] = &[
-            Quantity::new(
-                "innov_angle_rad",
-                "innovation of the accelerometer angle θ_acc",
-                "rad",
-            ),
-            Quantity::new("innov_rate_rad_s", "innovation of the gyro rate ω", "rad/s"),
-        ];
+        const QUANTITIES: &[Quantity] = &[INNOV_ANGLE_RAD, INNOV_RATE_RAD_S];
         QUANTITIES
     }
 
@@ -239,7 +244,7 @@ impl<const N: usize> Estimator for RollKf<N> {
     }
 
     fn extra_quantities(&self) -> &'static [Quantity] {
-        const BIAS: [Quantity; 1] = [Quantity::new("gyro_bias_deg_s", "gyro bias b", "deg/s")];
+        const BIAS: [Quantity; 1] = [GYRO_BIAS_DEG_S];
         if N == 3 { &BIAS } else { &[] }
     }
 

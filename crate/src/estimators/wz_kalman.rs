@@ -22,6 +22,12 @@ use crate::model::{
 };
 use nalgebra::{Matrix2, Matrix2x3, Vector2, Vector3};
 
+// The series this estimator records besides the catalogue's (figures name them).
+/// innovation of u (uᵃ − û).
+pub const INNOV_U: Quantity = Quantity::new("innov_u", "innovation of u (uᵃ − û)", "");
+/// innovation of v (vᵃ − v̂).
+pub const INNOV_V: Quantity = Quantity::new("innov_v", "innovation of v (vᵃ − v̂)", "");
+
 /// The noise the (u, v) filter assumes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WzKalmanTuning {
@@ -65,10 +71,11 @@ pub struct WzKalman {
 }
 
 /// The filter's states.
-const STATES: &[StateInfo] = &[
-    StateInfo::new("u", "", StateKind::WzU),
-    StateInfo::new("v", "", StateKind::WzV),
-];
+/// The covariance state u.
+pub const STATE_U: StateInfo = StateInfo::new("u", "", StateKind::WzU);
+/// The covariance state v.
+pub const STATE_V: StateInfo = StateInfo::new("v", "", StateKind::WzV);
+const STATES: &[StateInfo] = &[STATE_U, STATE_V];
 
 /// `F = ∂(u̇, v̇)/∂(u, v)` of eqs. (18–19).
 fn jacobian_state(u: f64, v: f64, w: &Vector3<f64>) -> Matrix2<f64> {
@@ -214,10 +221,7 @@ impl Estimator for WzKalman {
     }
 
     fn innovation_quantities(&self) -> &'static [Quantity] {
-        const QUANTITIES: &[Quantity] = &[
-            Quantity::new("innov_u", "innovation of u (uᵃ − û)", ""),
-            Quantity::new("innov_v", "innovation of v (vᵃ − v̂)", ""),
-        ];
+        const QUANTITIES: &[Quantity] = &[INNOV_U, INNOV_V];
         QUANTITIES
     }
 

@@ -7,10 +7,12 @@
 //! ```
 
 mod estimate;
+mod key;
 mod lab;
 mod log;
 mod page;
 mod params;
+pub mod q;
 mod report;
 mod series;
 mod study;
@@ -19,6 +21,7 @@ pub use estimate::{
     Attitude, ControlInput, Covariance, Estimate, Estimator, EstimatorStatus, Measurements,
     Onboard, Outputs, STATUS_OK, StateInfo, StateKind, Tuner,
 };
+pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};
 pub use log::{LogFormat, LogLineError, RateLog};
 pub use page::{

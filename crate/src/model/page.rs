@@ -3,6 +3,7 @@
 //! and the diagrams beside them. The page (web/) draws from these; the core never reads them
 //! to simulate.
 
+use super::key::SeriesKey;
 use nalgebra::Vector3;
 
 /// A reference direction drawn from the body in the 3D view.
@@ -55,15 +56,15 @@ pub enum BodyShape {
 pub struct Figure {
     /// Tab title, e.g. "Fig. 8: v and vᵃ".
     pub title: &'static str,
-    /// Series names (as recorded) drawn in it.
-    pub series: &'static [&'static str],
+    /// The series drawn in it.
+    pub series: &'static [SeriesKey],
     /// Draw log10 of the values (covariance elements spanning decades).
     pub log: bool,
 }
 
 impl Figure {
     /// A figure on a linear axis.
-    pub const fn new(title: &'static str, series: &'static [&'static str]) -> Self {
+    pub const fn new(title: &'static str, series: &'static [SeriesKey]) -> Self {
         Self {
             title,
             series,
@@ -82,7 +83,7 @@ impl Figure {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Outage {
     /// The 0/1 series.
-    pub series: &'static str,
+    pub series: SeriesKey,
     /// Its value during the outage.
     pub out_when: f64,
     /// What the shading is called in the legend.

@@ -1,5 +1,7 @@
 //! Names, units and meaning of recorded series.
 
+use super::key::{Measure, SeriesKey};
+
 /// Which plot a series belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 pub enum SeriesGroup {
@@ -104,12 +106,17 @@ impl SeriesSpec {
         }
     }
 
-    /// `quantity` of the source whose names start with `prefix` (`truth`, `sensors`, an
-    /// estimator's id): named `prefix.key`, labelled with the quantity's label.
-    pub fn of(prefix: &str, quantity: &Quantity, group: SeriesGroup) -> Self {
+    /// The series of `key` whose measure is a declared quantity: named by the key, labelled
+    /// with the quantity's label, in its unit (a derived measure has no unit of its own here:
+    /// the catalogue gives those).
+    pub fn of(key: SeriesKey, group: SeriesGroup) -> Self {
+        let (label, unit) = match key.measure {
+            Measure::Quantity(q) => (q.label.to_string(), q.unit),
+            _ => (key.key(), ""),
+        };
         Self {
-            label: quantity.label.to_string(),
-            ..Self::new(format!("{prefix}.{}", quantity.key), quantity.unit, group)
+            label,
+            ..Self::new(key.name(), unit, group)
         }
     }
 

@@ -1,6 +1,7 @@
 //! What a lab offers beyond its run: sweeps over its parameters (with the lab's own scores),
 //! the paper's output file, and the work whose cost it wants measured.
 
+use super::key::SeriesKey;
 use super::params::ParamValues;
 
 /// A sweep a lab offers, e.g. paper 1's adaptation window N over a log grid.
@@ -24,7 +25,7 @@ pub struct SweepSpec {
     /// Statistics are taken over t > `after_s`.
     pub after_s: f64,
     /// Series whose RMS (and maximum of |·|) is reported.
-    pub series: &'static [&'static str],
+    pub series: &'static [SeriesKey],
     /// Scores the lab computes from each simulated run (medians over the seeds).
     pub scoring: Option<&'static SweepScoring>,
     /// Scores the lab computes from each run on a recorded log (no truth there), if the
@@ -39,7 +40,7 @@ impl SweepSpec {
         key: &'static str,
         values: &'static [f64],
         duration_s: f64,
-        series: &'static [&'static str],
+        series: &'static [SeriesKey],
     ) -> Self {
         Self {
             title,
@@ -119,7 +120,7 @@ pub struct SweepScoring {
     /// How each score is defined (the panel's help).
     pub help: &'static str,
     /// Series the scoring reads, in order.
-    pub series: &'static [&'static str],
+    pub series: &'static [SeriesKey],
     /// The scoring.
     pub score: ScoreFn,
     /// Weighted sums of the scores, each with its name; the sweep marks each one's argmin.

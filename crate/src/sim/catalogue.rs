@@ -8,7 +8,8 @@ use super::quantities::{
 };
 pub(super) use super::quantities::{N_Q, Q};
 use crate::model::{
-    Estimator, Quantity, SensorModel, SeriesGroup, SeriesSpec, StateInfo, StateKind, TruthModel,
+    Estimator, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec, StateInfo, StateKind,
+    TIME, TRUTH, TruthModel,
 };
 
 use SeriesGroup as G;
@@ -78,8 +79,8 @@ pub(super) fn error_truth_needs(q: Q) -> u32 {
 }
 
 /// Is this candidate recorded by the page?
-pub(super) fn standard(c: &Candidate, figure_series: &[&str], sphere: bool) -> bool {
-    if figure_series.contains(&c.spec.name.as_str()) {
+pub(super) fn standard(c: &Candidate, figure_series: &[SeriesKey], sphere: bool) -> bool {
+    if figure_series.iter().any(|k| k.is(&c.spec.name)) {
         return true;
     }
     match c.source {
@@ -104,7 +105,7 @@ pub(super) fn candidates(
 ) -> Vec<Candidate> {
     let mut out = vec![Candidate {
         source: Source::Time,
-        spec: SeriesSpec::new("t_s", "s", G::Time).labelled("time t"),
+        spec: SeriesSpec::new(TIME, "s", G::Time).labelled("time t"),
     }];
     let (att, rate) = if single_axis {
         (ANGLE_1, RATE_1)
@@ -112,7 +113,7 @@ pub(super) fn candidates(
         (ATTITUDE_3, RATE_3)
     };
     let truth_src = Owner {
-        prefix: "truth",
+        prefix: TRUTH,
         label: "Truth",
         src: 0,
         states: None,
@@ -161,7 +162,7 @@ fn owned_label(owner: &str, spec: SeriesSpec) -> SeriesSpec {
 
 /// Who records a group of series: the truth (source 0) or estimator `src − 1`.
 struct Owner<'a> {
-    prefix: &'a str,
+    prefix: &'static str,
     label: &'a str,
     src: usize,
     states: Option<&'static [StateInfo]>,
@@ -169,28 +170,28 @@ struct Owner<'a> {
 
 impl Owner<'_> {
     /// The owner's series of `quantity` in `group`: `prefix.key`, "label: quantity".
-    fn spec(&self, quantity: &Quantity, group: SeriesGroup) -> SeriesSpec {
+    fn spec(&self, quantity: &'static Quantity, group: SeriesGroup) -> SeriesSpec {
         let label = format!("{}: {}", self.label, quantity.label);
-        SeriesSpec::of(self.prefix, quantity, group)
+        SeriesSpec::of(SeriesKey::new(self.prefix, quantity), group)
             .labelled(label)
             .from_source(self.src)
     }
 
     /// The owner's series of every quantity in `list`, each bounded by its covariance state
     /// where the owner has one.
-    fn push_all<'q>(
+    fn push_all(
         &self,
         out: &mut Vec<Candidate>,
-        list: impl Iterator<Item = &'q QInfo>,
+        list: impl Iterator<Item = &'static QInfo>,
         make: &dyn Fn(Q) -> Source,
     ) {
         for info in list {
-            let mut spec = self.spec(&info.quantity, info.group);
+            let mut spec = self.spec(info.quantity, info.group);
             if let (Some(kind), Some(states)) = (info.band, self.states)
                 && let Some(state) = states.iter().find(|s| s.kind == kind)
             {
                 spec = spec.with_band(
-                    format!("{}.var_{}", self.prefix, state.key),
+                    SeriesKey::variance(self.prefix, state).name(),
                     unit_scale_to_display(state.unit),
                 );
             }
@@ -256,7 +257,7 @@ fn internal_candidates(
     };
     for (k, s) in states.iter().enumerate() {
         let label = format!("variance of the {}", state_label(s));
-        let name = format!("{id}.var_{}", s.key);
+        let name = SeriesKey::variance(id, s).name();
         push(
             Source::Variance(i, k),
             name,
@@ -270,7 +271,7 @@ fn internal_candidates(
         let label = "attitude NEES eᵀP⁻¹e".to_string();
         push(
             Source::NeesAtt(i),
-            format!("{id}.nees_att"),
+            SeriesKey::nees_att(id).name(),
             label,
             "",
             G::Error,
@@ -282,7 +283,7 @@ fn internal_candidates(
             state_label(a),
             state_label(b)
         );
-        let name = format!("{id}.cov_{}_{}", a.key, b.key);
+        let name = SeriesKey::covariance(id, a, b).name();
         push(
             Source::Cross(i, 0, 1),
             name,
@@ -292,7 +293,7 @@ fn internal_candidates(
         );
     }
     for (k, q) in e.innovation_quantities().iter().enumerate() {
-        let name = format!("{id}.{}", q.key);
+        let name = SeriesKey::new(id, q).name();
         push(
             Source::Innovation(i, k),
             name,
@@ -302,7 +303,7 @@ fn internal_candidates(
         );
     }
     for (k, q) in e.extra_quantities().iter().enumerate() {
-        let name = format!("{id}.{}", q.key);
+        let name = SeriesKey::new(id, q).name();
         push(
             Source::Extra(i, k),
             name,
@@ -312,5 +313,6 @@ fn internal_candidates(
         );
     }
     let label = "health (0 = ok)".to_string();
-    push(Source::Status(i), format!("{id}.status"), label, "", G::Lab);
+    let name = SeriesKey::status(id).name();
+    push(Source::Status(i), name, label, "", G::Lab);
 }

@@ -8,7 +8,7 @@ use super::catalogue::{Candidate, Q, Source, bit, candidates, error_truth_needs,
 use super::derived::{Derived, NAN_DERIVED, derive, nees_att};
 use super::selection::{Selection, UnknownSeries};
 use crate::model::{
-    Attitude, Estimate, Estimator, SensorModel, SeriesSpec, TruthModel, TruthState,
+    Attitude, Estimate, Estimator, SensorModel, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 
 /// The column table of one simulation.
@@ -40,7 +40,7 @@ impl Layout {
         sensors: &dyn SensorModel,
         estimators: &[Box<dyn Estimator>],
         selection: &Selection,
-        figure_series: &[&str],
+        figure_series: &[SeriesKey],
         sphere: bool,
     ) -> Result<Self, UnknownSeries> {
         let single_axis = truth.state().angle_rad.is_some();
@@ -206,7 +206,7 @@ fn keep_mask(
     lab_id: &str,
     candidates: &[Candidate],
     selection: &Selection,
-    figure_series: &[&str],
+    figure_series: &[SeriesKey],
     sphere: bool,
 ) -> Result<Vec<bool>, UnknownSeries> {
     let keep = match selection {

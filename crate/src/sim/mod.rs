@@ -28,7 +28,7 @@ pub use selection::{Selection, UnknownSeries};
 
 use crate::model::{
     Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
-    SeriesGroup, SeriesSpec, TruthState,
+    SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
 use crate::sensors::RateLog;
@@ -87,7 +87,7 @@ pub fn default_tab(lab: &dyn Lab) -> PlotTab {
 /// The column layout of `run` for `options.selection` (with the series `lab`'s figures
 /// draw, and the sphere's where the lab has one).
 fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout, UnknownSeries> {
-    let figure_series: Vec<&str> = lab
+    let figure_series: Vec<SeriesKey> = lab
         .figures()
         .iter()
         .flat_map(|f| f.series.iter().copied())

@@ -52,8 +52,8 @@ impl Selection {
         names.extend(
             lab.outages()
                 .iter()
-                .filter(|o| available.iter().any(|s| s.name == o.series))
-                .map(|o| o.series.to_string()),
+                .filter(|o| available.iter().any(|s| o.series.is(&s.name)))
+                .map(|o| o.series.name()),
         );
         Self::View(names)
     }

@@ -2,7 +2,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use attlab::labs;
-use attlab::model::{Lab, ParamKind, ParamValues};
+use attlab::model::{Lab, ParamKind, ParamValues, SeriesKey};
 use attlab::sim::{Selection, SimOptions, Simulation};
 use rand::SeedableRng;
 use std::collections::HashSet;
@@ -56,17 +56,25 @@ fn ids_are_unique_and_params_presets_and_figures_are_well_formed() {
                     .unwrap_or_else(|e| panic!("{} preset {}: {e}", lab.id(), preset.name));
             }
         }
-        // Every series a figure or sweep draws exists.
-        let mut drawn: Vec<&str> = lab
+        // Every series a figure, sweep, sweep scoring or outage names exists.
+        let mut drawn: Vec<SeriesKey> = lab
             .figures()
             .iter()
             .flat_map(|f| f.series.iter().copied())
             .collect();
-        drawn.extend(lab.sweeps().iter().flat_map(|s| s.series.iter().copied()));
+        for s in lab.sweeps() {
+            drawn.extend_from_slice(s.series);
+            for scoring in s.scoring.iter().chain(&s.log_scoring) {
+                drawn.extend_from_slice(scoring.series);
+            }
+        }
+        drawn.extend(lab.outages().iter().map(|o| o.series));
+        let names = attlab::model::names(&drawn);
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
         let p = ParamValues::defaults(lab.params());
-        if let Err(e) = Simulation::with_options(*lab, p, 1, SimOptions::named(&drawn)) {
+        if let Err(e) = Simulation::with_options(*lab, p, 1, SimOptions::named(&names)) {
             panic!(
-                "{}: a figure or sweep draws a series that does not exist: {e}",
+                "{}: a figure, sweep or outage names a series that does not exist: {e}",
                 lab.id()
             );
         }

@@ -6,7 +6,7 @@ use crate::export::Regions;
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View, ViewCommand};
 use attlab::math::{WzAttitude, WzChart};
-use attlab::model::{SeriesGroup, StateKind, ViewKind};
+use attlab::model::{Quantity, SeriesGroup, SeriesKey, StateKind, TRUTH, ViewKind, q};
 use attlab::record::Recorder;
 use egui::{Pos2, Rect, Ui, Vec2};
 use nalgebra::Vector3;
@@ -321,25 +321,24 @@ fn chart_caption(app: &AppState) -> String {
 /// The recent trail of every source with a vertical: truth, then each estimator.
 fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
     let rec = app.sim().recorder();
-    let mut names = vec![("truth".to_string(), "truth".to_string())];
-    names.extend(
-        app.sim()
-            .estimators()
-            .iter()
-            .map(|e| (e.id().to_string(), e.label().to_string())),
-    );
+    let mut names = vec![(TRUTH, "truth")];
+    names.extend(app.sim().estimators().iter().map(|e| (e.id(), e.label())));
     let mut out = Vec::new();
     for (i, (src, label)) in names.iter().enumerate() {
         if app.view().hidden.contains(&i) {
             continue;
         }
-        let col = |q: &str| {
-            rec.index_of(&format!("{src}.{q}"))
+        let col = |quantity: &'static Quantity| {
+            rec.index_of(&SeriesKey::new(src, quantity).name())
                 .map(|j| recent_tail(rec, j))
         };
-        let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) =
-            (col("k_x"), col("k_y"), col("k_z"), col("u"), col("v"))
-        else {
+        let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) = (
+            col(&q::K_X),
+            col(&q::K_Y),
+            col(&q::K_Z),
+            col(&q::U),
+            col(&q::V),
+        ) else {
             continue;
         };
         let mut k_body = Vec::new();
@@ -354,7 +353,7 @@ fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
             continue;
         }
         out.push(riemann_sphere::SphereTrack {
-            name: label.clone(),
+            name: label.to_string(),
             color: plots::source_color(i),
             k_body,
             w,

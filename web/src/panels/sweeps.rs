@@ -145,10 +145,11 @@ fn log_points(s: &Sweep, f: impl Fn(&SweepPoint) -> f64) -> Vec<[f64; 2]> {
 /// RMS (largest |value|) of each series against log10 of the value.
 fn rms_plot(ui: &mut Ui, s: &Sweep, i: usize) {
     let spec = s.spec();
-    for (k, series) in spec.series.iter().enumerate() {
+    for k in 0..spec.series.len() {
         if let Some((value, rms)) = s.best(k) {
             ui.label(format!(
-                "best for {series}: {} = {value} ({rms:.4} rms)",
+                "best for {}: {} = {value} ({rms:.4} rms)",
+                s.legend(k),
                 spec.key
             ));
         }
@@ -159,11 +160,12 @@ fn rms_plot(ui: &mut Ui, s: &Sweep, i: usize) {
         .x_axis_label(format!("log10 {}", spec.key))
         .y_axis_label("log10 max |value|")
         .show(ui, |plot| {
-            for (k, series) in spec.series.iter().enumerate() {
+            for k in 0..spec.series.len() {
                 let pts = log_points(s, |p| p.max_abs[k].log10());
                 let color = source_color(k + 1);
-                plot.line(Line::new(*series, pts.clone()).color(color));
-                plot.points(Points::new(*series, pts).radius(3.0).color(color));
+                let legend = s.legend(k);
+                plot.line(Line::new(legend.clone(), pts.clone()).color(color));
+                plot.points(Points::new(legend, pts).radius(3.0).color(color));
             }
         });
 }

@@ -195,7 +195,7 @@ fn tab_lines(rec: &Recorder, figures: &[Figure], tab: Tab) -> Vec<(usize, Color3
             let idx: Vec<usize> = figures[f]
                 .series
                 .iter()
-                .filter_map(|n| rec.index_of(n))
+                .filter_map(|n| rec.index_of(&n.name()))
                 .collect();
             let specs: Vec<&SeriesSpec> = idx.iter().map(|i| &rec.specs()[*i]).collect();
             idx.iter().copied().zip(figure_colors(&specs)).collect()
@@ -213,7 +213,7 @@ fn tab_lines(rec: &Recorder, figures: &[Figure], tab: Tab) -> Vec<(usize, Color3
 /// The intervals of every outage the lab declares, shaded.
 fn shade_outages(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, outages: &[Outage]) {
     for (k, o) in outages.iter().enumerate() {
-        let Some(i) = rec.index_of(o.series) else {
+        let Some(i) = rec.index_of(&o.series.name()) else {
             continue;
         };
         for [t0, t1] in outage_intervals(rec, i, o.out_when) {
@@ -281,10 +281,10 @@ fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look:
 mod tests {
     use super::*;
 
-    fn spec(name: &str, source: usize) -> SeriesSpec {
-        let mut s = SeriesSpec::new(name, "deg", SeriesGroup::Attitude);
-        s.source = source;
-        s
+    use attlab::model::{SeriesKey, q};
+
+    fn spec(key: SeriesKey, source: usize) -> SeriesSpec {
+        SeriesSpec::of(key, SeriesGroup::Attitude).from_source(source)
     }
 
     #[test]
@@ -300,11 +300,11 @@ mod tests {
     #[test]
     fn a_figure_keeps_each_estimators_colour_and_gives_the_rest_others() {
         let specs = [
-            spec("truth.angle_deg", 0),
-            spec("truth.setpoint_deg", 0),
-            spec("sensors.accel_angle_deg", 0),
-            spec("kf.angle_deg", 1),
-            spec("cf.angle_deg", 2),
+            spec(SeriesKey::truth(&q::ANGLE_DEG), 0),
+            spec(SeriesKey::truth(&q::RATE_DEG_S), 0),
+            spec(SeriesKey::sensors(&q::ANGLE_DEG), 0),
+            spec(SeriesKey::new("kf", &q::ANGLE_DEG), 1),
+            spec(SeriesKey::new("cf", &q::ANGLE_DEG), 2),
         ];
         let refs: Vec<&SeriesSpec> = specs.iter().collect();
         let c = figure_colors(&refs);
@@ -317,9 +317,9 @@ mod tests {
         assert_ne!(c[1], c[2]);
         // One filter's three axes: three different bright colours.
         let axes = [
-            spec("st.err_x_deg", 3),
-            spec("st.err_y_deg", 3),
-            spec("st.err_z_deg", 3),
+            spec(SeriesKey::new("st", &q::ERR_X_DEG), 3),
+            spec(SeriesKey::new("st", &q::ERR_Y_DEG), 3),
+            spec(SeriesKey::new("st", &q::ERR_Z_DEG), 3),
         ];
         let refs: Vec<&SeriesSpec> = axes.iter().collect();
         let c = figure_colors(&refs);

@@ -201,7 +201,11 @@ impl AppState {
         let (title, columns, log) = match self.view.plots.tab {
             PlotTab::Figure(f) if f < lab.figures().len() => {
                 let fig = &lab.figures()[f];
-                let cols = fig.series.iter().filter_map(|n| header(n)).collect();
+                let cols = fig
+                    .series
+                    .iter()
+                    .filter_map(|n| header(&n.name()))
+                    .collect();
                 (fig.title.to_string(), cols, fig.log)
             }
             PlotTab::Figure(_) => (String::new(), Vec::new(), false),

@@ -370,7 +370,7 @@ fn every_labs_legend_shows_human_labels_with_units() {
             attlab::model::PlotTab::Figure(i) => lab.figures()[i]
                 .series
                 .iter()
-                .filter_map(|n| sim.specs().iter().find(|s| s.name == *n))
+                .filter_map(|n| sim.specs().iter().find(|s| n.is(&s.name)))
                 .collect(),
             attlab::model::PlotTab::Group(g) => {
                 sim.specs().iter().filter(|s| s.group == g).collect()

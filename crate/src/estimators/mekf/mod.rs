@@ -13,7 +13,7 @@
 //!   parallel filter (zero otherwise). Unlike the paper's F, which carries the control gains
 //!   −J⁻¹K_λ and −J⁻¹K_ω, F here carries the gyroscopic terms the wheels really apply:
 //!   F = [[−[ω×], ½E], [J⁻¹ k F_g, J⁻¹([(Jω+h)×] − [ω×]J)]] with k = 6μ/r³ and
-//!   F_g = [η×]J[η×] − [(Jη)×][η×] (the paper's gravity-gradient block).
+//!   F_g = \[η×\]J\[η×\] − \[(Jη)×\]\[η×\] (the paper's gravity-gradient block).
 //! * Measurements (Table 2's H): star tracker δλ = vec(q̂⁻¹ ⊗ q_st) with H = [E 0];
 //!   gyro ω̃ = ω + Δω with H = [0 E (E)]; magnetometer b = A b₀ (+ Δb) with
 //!   H = [2[b̂×] 0 (E)]; sun sensor s = A s₀ with H = [2[ŝ×] 0]. The 2 makes δλ half-angle
@@ -29,6 +29,34 @@ use crate::model::{
 };
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
 use states::states_of;
+pub use states::{
+    ATT_X, ATT_Y, ATT_Z, GBIAS_X, GBIAS_Y, GBIAS_Z, MBIAS_X, MBIAS_Y, MBIAS_Z, RATE_X, RATE_Y,
+    RATE_Z,
+};
+
+// The series the filter records besides the catalogue's (figures name them).
+/// innovation test statistic NIS.
+pub const NIS: Quantity = Quantity::new("nis", "innovation test statistic NIS", "");
+/// NIS degrees of freedom.
+pub const NIS_DOF: Quantity = Quantity::new("nis_dof", "NIS degrees of freedom", "");
+/// gyro bias Δω_x (deg/s).
+pub const GBIAS_X_DEG_S: Quantity = Quantity::new("gbias_x_deg_s", "gyro bias Δω_x", "deg/s");
+/// gyro bias Δω_y (deg/s).
+pub const GBIAS_Y_DEG_S: Quantity = Quantity::new("gbias_y_deg_s", "gyro bias Δω_y", "deg/s");
+/// gyro bias Δω_z (deg/s).
+pub const GBIAS_Z_DEG_S: Quantity = Quantity::new("gbias_z_deg_s", "gyro bias Δω_z", "deg/s");
+/// magnetometer bias Δb_x (nT).
+pub const MBIAS_X_NT: Quantity = Quantity::new("mbias_x_nt", "magnetometer bias Δb_x", "nT");
+/// magnetometer bias Δb_y (nT).
+pub const MBIAS_Y_NT: Quantity = Quantity::new("mbias_y_nt", "magnetometer bias Δb_y", "nT");
+/// magnetometer bias Δb_z (nT).
+pub const MBIAS_Z_NT: Quantity = Quantity::new("mbias_z_nt", "magnetometer bias Δb_z", "nT");
+/// disturbance estimate d_x (1/s²).
+pub const D_X_S2: Quantity = Quantity::new("d_x_s2", "disturbance estimate d_x", "1/s²");
+/// disturbance estimate d_y (1/s²).
+pub const D_Y_S2: Quantity = Quantity::new("d_y_s2", "disturbance estimate d_y", "1/s²");
+/// disturbance estimate d_z (1/s²).
+pub const D_Z_S2: Quantity = Quantity::new("d_z_s2", "disturbance estimate d_z", "1/s²");
 
 mod predict;
 mod states;
@@ -377,23 +405,23 @@ impl<const N: usize> Estimator for Mekf<N> {
     }
 
     fn extra_quantities(&self) -> &'static [Quantity] {
-        const NIS: Quantity = Quantity::new("nis", "innovation test statistic NIS", "");
-        const DOF: Quantity = Quantity::new("nis_dof", "NIS degrees of freedom", "");
-        const GBX: Quantity = Quantity::new("gbias_x_deg_s", "gyro bias Δω_x", "deg/s");
-        const GBY: Quantity = Quantity::new("gbias_y_deg_s", "gyro bias Δω_y", "deg/s");
-        const GBZ: Quantity = Quantity::new("gbias_z_deg_s", "gyro bias Δω_z", "deg/s");
-        const MBX: Quantity = Quantity::new("mbias_x_nt", "magnetometer bias Δb_x", "nT");
-        const MBY: Quantity = Quantity::new("mbias_y_nt", "magnetometer bias Δb_y", "nT");
-        const MBZ: Quantity = Quantity::new("mbias_z_nt", "magnetometer bias Δb_z", "nT");
-        const DX: Quantity = Quantity::new("d_x_s2", "disturbance estimate d_x", "1/s²");
-        const DY: Quantity = Quantity::new("d_y_s2", "disturbance estimate d_y", "1/s²");
-        const DZ: Quantity = Quantity::new("d_z_s2", "disturbance estimate d_z", "1/s²");
-        const BASE: [Quantity; 2] = [NIS, DOF];
-        const GB: [Quantity; 5] = [NIS, DOF, GBX, GBY, GBZ];
-        const MB: [Quantity; 5] = [NIS, DOF, MBX, MBY, MBZ];
-        const D: [Quantity; 5] = [NIS, DOF, DX, DY, DZ];
-        const GB_D: [Quantity; 8] = [NIS, DOF, GBX, GBY, GBZ, DX, DY, DZ];
-        const MB_D: [Quantity; 8] = [NIS, DOF, MBX, MBY, MBZ, DX, DY, DZ];
+        const BASE: [Quantity; 2] = [NIS, NIS_DOF];
+        const GB: [Quantity; 5] = [NIS, NIS_DOF, GBIAS_X_DEG_S, GBIAS_Y_DEG_S, GBIAS_Z_DEG_S];
+        const MB: [Quantity; 5] = [NIS, NIS_DOF, MBIAS_X_NT, MBIAS_Y_NT, MBIAS_Z_NT];
+        const D: [Quantity; 5] = [NIS, NIS_DOF, D_X_S2, D_Y_S2, D_Z_S2];
+        const GB_D: [Quantity; 8] = [
+            NIS,
+            NIS_DOF,
+            GBIAS_X_DEG_S,
+            GBIAS_Y_DEG_S,
+            GBIAS_Z_DEG_S,
+            D_X_S2,
+            D_Y_S2,
+            D_Z_S2,
+        ];
+        const MB_D: [Quantity; 8] = [
+            NIS, NIS_DOF, MBIAS_X_NT, MBIAS_Y_NT, MBIAS_Z_NT, D_X_S2, D_Y_S2, D_Z_S2,
+        ];
         let st = self.cfg.states;
         match (
             st.gyro_bias().is_some(),

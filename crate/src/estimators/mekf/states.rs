@@ -3,44 +3,39 @@
 use super::StateSet;
 use crate::model::{StateInfo, StateKind};
 
-const STATES_6: [StateInfo; 6] = [
-    StateInfo::new("att_x", "rad", StateKind::AttitudeAxis(0)),
-    StateInfo::new("att_y", "rad", StateKind::AttitudeAxis(1)),
-    StateInfo::new("att_z", "rad", StateKind::AttitudeAxis(2)),
-    StateInfo::new("rate_x", "rad/s", StateKind::RateAxis(0)),
-    StateInfo::new("rate_y", "rad/s", StateKind::RateAxis(1)),
-    StateInfo::new("rate_z", "rad/s", StateKind::RateAxis(2)),
-];
+/// Attitude error about body x (rad).
+pub const ATT_X: StateInfo = StateInfo::new("att_x", "rad", StateKind::AttitudeAxis(0));
+/// Attitude error about body y (rad).
+pub const ATT_Y: StateInfo = StateInfo::new("att_y", "rad", StateKind::AttitudeAxis(1));
+/// Attitude error about body z (rad).
+pub const ATT_Z: StateInfo = StateInfo::new("att_z", "rad", StateKind::AttitudeAxis(2));
+/// Body rate about x (rad/s).
+pub const RATE_X: StateInfo = StateInfo::new("rate_x", "rad/s", StateKind::RateAxis(0));
+/// Body rate about y (rad/s).
+pub const RATE_Y: StateInfo = StateInfo::new("rate_y", "rad/s", StateKind::RateAxis(1));
+/// Body rate about z (rad/s).
+pub const RATE_Z: StateInfo = StateInfo::new("rate_z", "rad/s", StateKind::RateAxis(2));
+/// Gyro bias about x (rad/s).
+pub const GBIAS_X: StateInfo = StateInfo::new("gbias_x", "rad/s", StateKind::GyroBias(0));
+/// Gyro bias about y (rad/s).
+pub const GBIAS_Y: StateInfo = StateInfo::new("gbias_y", "rad/s", StateKind::GyroBias(1));
+/// Gyro bias about z (rad/s).
+pub const GBIAS_Z: StateInfo = StateInfo::new("gbias_z", "rad/s", StateKind::GyroBias(2));
+/// Magnetometer bias along x (nT).
+pub const MBIAS_X: StateInfo = StateInfo::new("mbias_x", "nT", StateKind::MagBias(0));
+/// Magnetometer bias along y (nT).
+pub const MBIAS_Y: StateInfo = StateInfo::new("mbias_y", "nT", StateKind::MagBias(1));
+/// Magnetometer bias along z (nT).
+pub const MBIAS_Z: StateInfo = StateInfo::new("mbias_z", "nT", StateKind::MagBias(2));
+
+const STATES_6: [StateInfo; 6] = [ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z];
 const STATES_GYRO_BIAS: [StateInfo; 9] = [
-    STATES_6[0],
-    STATES_6[1],
-    STATES_6[2],
-    STATES_6[3],
-    STATES_6[4],
-    STATES_6[5],
-    StateInfo::new("gbias_x", "rad/s", StateKind::GyroBias(0)),
-    StateInfo::new("gbias_y", "rad/s", StateKind::GyroBias(1)),
-    StateInfo::new("gbias_z", "rad/s", StateKind::GyroBias(2)),
+    ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z, GBIAS_X, GBIAS_Y, GBIAS_Z,
 ];
 const STATES_MAG_BIAS: [StateInfo; 9] = [
-    STATES_6[0],
-    STATES_6[1],
-    STATES_6[2],
-    STATES_6[3],
-    STATES_6[4],
-    STATES_6[5],
-    StateInfo::new("mbias_x", "nT", StateKind::MagBias(0)),
-    StateInfo::new("mbias_y", "nT", StateKind::MagBias(1)),
-    StateInfo::new("mbias_z", "nT", StateKind::MagBias(2)),
+    ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z, MBIAS_X, MBIAS_Y, MBIAS_Z,
 ];
-const STATES_REDUCED: [StateInfo; 6] = [
-    STATES_6[0],
-    STATES_6[1],
-    STATES_6[2],
-    StateInfo::new("gbias_x", "rad/s", StateKind::GyroBias(0)),
-    StateInfo::new("gbias_y", "rad/s", StateKind::GyroBias(1)),
-    StateInfo::new("gbias_z", "rad/s", StateKind::GyroBias(2)),
-];
+const STATES_REDUCED: [StateInfo; 6] = [ATT_X, ATT_Y, ATT_Z, GBIAS_X, GBIAS_Y, GBIAS_Z];
 
 pub(super) fn states_of(s: StateSet) -> &'static [StateInfo] {
     match s {

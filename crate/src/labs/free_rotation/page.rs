@@ -1,31 +1,34 @@
 //! What the free-rotation lab shows beside the standard tabs: its figures.
 
-use crate::model::Figure;
+use crate::model::{Figure, SeriesKey, q};
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(
         "Attitude (yaw, pitch, roll)",
         &[
-            "truth.yaw_deg",
-            "truth.pitch_deg",
-            "truth.roll_deg",
-            "quat-rk4.yaw_deg",
-            "quat-rk4.pitch_deg",
-            "quat-rk4.roll_deg",
+            SeriesKey::truth(&q::YAW_DEG),
+            SeriesKey::truth(&q::PITCH_DEG),
+            SeriesKey::truth(&q::ROLL_DEG),
+            SeriesKey::new("quat-rk4", &q::YAW_DEG),
+            SeriesKey::new("quat-rk4", &q::PITCH_DEG),
+            SeriesKey::new("quat-rk4", &q::ROLL_DEG),
         ],
     ),
     Figure::new(
         "Attitude errors (body axes)",
         &[
-            "quat-rk4.err_x_deg",
-            "quat-rk4.err_y_deg",
-            "quat-rk4.err_z_deg",
-            "uvz-rk4.err_deg",
-            "quat-rk4.err_deg",
+            SeriesKey::new("quat-rk4", &q::ERR_X_DEG),
+            SeriesKey::new("quat-rk4", &q::ERR_Y_DEG),
+            SeriesKey::new("quat-rk4", &q::ERR_Z_DEG),
+            SeriesKey::new("uvz-rk4", &q::ERR_DEG),
+            SeriesKey::new("quat-rk4", &q::ERR_DEG),
         ],
     ),
     Figure::new(
         "Energy and momentum (truth)",
-        &["truth.energy_j", "truth.momentum_n_m_s"],
+        &[
+            SeriesKey::truth(&super::truth::ENERGY_J),
+            SeriesKey::truth(&super::truth::MOMENTUM_N_M_S),
+        ],
     ),
 ];

@@ -7,12 +7,16 @@ use super::sensors::BIAS_PATTERN;
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
-use crate::model::{Expectation, Lab, Reproduction, Row};
+use crate::model::{Expectation, Lab, Reproduction, Row, SeriesKey, q};
 use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-fn run(assignments: &[&str], duration_s: f64, series: &[&str]) -> Result<Trace, AnalysisError> {
+fn run(
+    assignments: &[&str],
+    duration_s: f64,
+    series: &[SeriesKey],
+) -> Result<Trace, AnalysisError> {
     run_trace(&FreeRotation, assignments, 1, duration_s, series)
 }
 
@@ -56,16 +60,16 @@ pub(super) fn reproduce() -> Result<Reproduction, AnalysisError> {
 const CLEAN: [&str; 2] = ["gyro_noise_deg_s=0", "gyro_bias_deg_s=0"];
 
 /// What the error-free run records.
-const CLEAN_SERIES: [&str; 9] = [
-    "quat-rk4.err_deg",
-    "quat-rk4.k_x",
-    "quat-rk4.k_y",
-    "quat-rk4.k_z",
-    "uvz-rk4.k_x",
-    "uvz-rk4.k_y",
-    "uvz-rk4.k_z",
-    "truth.energy_j",
-    "truth.k_z",
+const CLEAN_SERIES: [SeriesKey; 9] = [
+    SeriesKey::new("quat-rk4", &q::ERR_DEG),
+    SeriesKey::new("quat-rk4", &q::K_X),
+    SeriesKey::new("quat-rk4", &q::K_Y),
+    SeriesKey::new("quat-rk4", &q::K_Z),
+    SeriesKey::new("uvz-rk4", &q::K_X),
+    SeriesKey::new("uvz-rk4", &q::K_Y),
+    SeriesKey::new("uvz-rk4", &q::K_Z),
+    SeriesKey::truth(&super::truth::ENERGY_J),
+    SeriesKey::truth(&q::K_Z),
 ];
 
 /// The integrators on error-free samples: their error, its order in dt, and the
@@ -74,18 +78,18 @@ fn integration_rows(clean: &Trace) -> Result<Vec<Row>, AnalysisError> {
     let fine = run(
         &[CLEAN[0], CLEAN[1], "rate_hz=200"],
         60.0,
-        &["quat-rk4.err_deg"],
+        &[SeriesKey::new("quat-rk4", &q::ERR_DEG)],
     )?;
-    let q_err = stats::max_abs(clean.series("quat-rk4.err_deg")?)
+    let q_err = stats::max_abs(clean.series(SeriesKey::new("quat-rk4", &q::ERR_DEG))?)
         .of("error-free quaternion error")?
         .to_radians();
-    let q_err_fine = stats::max_abs(fine.series("quat-rk4.err_deg")?)
+    let q_err_fine = stats::max_abs(fine.series(SeriesKey::new("quat-rk4", &q::ERR_DEG))?)
         .of("error-free error at 200 Hz")?
         .to_radians();
     let mut k_diff = Vec::new();
-    for axis in ["k_x", "k_y", "k_z"] {
-        let a = clean.series(&format!("quat-rk4.{axis}"))?;
-        let b = clean.series(&format!("uvz-rk4.{axis}"))?;
+    for axis in [&q::K_X, &q::K_Y, &q::K_Z] {
+        let a = clean.series(SeriesKey::new("quat-rk4", axis))?;
+        let b = clean.series(SeriesKey::new("uvz-rk4", axis))?;
         k_diff.extend(a.iter().zip(b).map(|(x, y)| x - y));
     }
     Ok(vec![
@@ -121,16 +125,16 @@ fn integration_rows(clean: &Trace) -> Result<Vec<Row>, AnalysisError> {
 
 /// The truth itself: energy conserved, and the intermediate-axis tumble flipping over.
 fn truth_rows(clean: &Trace) -> Result<Vec<Row>, AnalysisError> {
-    let energy = clean.series("truth.energy_j")?;
+    let energy = clean.series(SeriesKey::truth(&super::truth::ENERGY_J))?;
     let e0 = *energy
         .first()
         .ok_or_else(|| AnalysisError::UnknownSeries("no energy rows".into()))?;
-    let kz = clean.series("truth.k_z")?;
+    let kz = clean.series(SeriesKey::truth(&q::K_Z))?;
     Ok(vec![
         Row::check(
             "truth: relative energy drift, 60 s",
             "— (torque free: 0)",
-            ((clean.last("truth.energy_j")? - e0) / e0).abs(),
+            ((clean.last(SeriesKey::truth(&super::truth::ENERGY_J))? - e0) / e0).abs(),
             "",
             Expectation::below(1e-9),
         ),
@@ -155,8 +159,12 @@ fn truth_rows(clean: &Trace) -> Result<Vec<Row>, AnalysisError> {
 /// computation and a closed-form bound.
 fn bias_rows() -> Result<Vec<Row>, AnalysisError> {
     let biased_set = ["gyro_noise_deg_s=0", "gyro_bias_deg_s=0.1"];
-    let biased = run(&biased_set, 60.0, &["quat-rk4.err_deg"])?;
-    let b_err = biased.last("quat-rk4.err_deg")?;
+    let biased = run(
+        &biased_set,
+        60.0,
+        &[SeriesKey::new("quat-rk4", &q::ERR_DEG)],
+    )?;
+    let b_err = biased.last(SeriesKey::new("quat-rk4", &q::ERR_DEG))?;
     let reference = bias_error_first_order(&biased_set, 60.0)?.to_degrees();
     Ok(vec![
         Row::check(

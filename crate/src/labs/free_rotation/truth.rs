@@ -2,8 +2,16 @@
 
 use crate::dynamics::{RigidBody, RigidBodyState};
 use crate::math::EulerYpr;
-use crate::model::{ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
+use crate::model::{
+    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+};
 use nalgebra::Vector3;
+
+/// The truth's kinetic energy (J): constant in free rotation.
+pub(super) const ENERGY_J: Quantity = Quantity::new("energy_j", "kinetic energy T = ½ωᵀJω", "J");
+/// The truth's angular momentum (N·m·s): constant in free rotation.
+pub(super) const MOMENTUM_N_M_S: Quantity =
+    Quantity::new("momentum_n_m_s", "angular momentum |Jω|", "N·m·s");
 
 /// The tumbling body.
 pub(super) struct Tumble {
@@ -61,10 +69,8 @@ impl TruthModel for Tumble {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.energy_j", "J", SeriesGroup::Lab)
-                .labelled("kinetic energy T = ½ωᵀJω"),
-            SeriesSpec::new("truth.momentum_n_m_s", "N·m·s", SeriesGroup::Lab)
-                .labelled("angular momentum |Jω|"),
+            SeriesSpec::of(SeriesKey::truth(&ENERGY_J), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&MOMENTUM_N_M_S), SeriesGroup::Lab),
         ]
     }
 

@@ -8,15 +8,21 @@ mod reproduce;
 
 use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
 use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
+use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, ReproError,
-    Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesSpec, SweepSpec, TruthModel,
-    TruthState, ViewKind,
+    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, Quantity,
+    ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    SweepSpec, TruthModel, TruthState, ViewKind, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
 use rand_chacha::ChaCha8Rng;
+
+/// The torsion pendulum's period (s), a truth series.
+const PERIOD_S: Quantity = Quantity::new("period_s", "torsion period T", "s");
+/// The string's swing (deg), a truth series.
+const SWING_DEG: Quantity = Quantity::new("swing_deg", "swing angle of the string", "deg");
 
 pub use reproduce::{FilterStats, p1_noise_floor_deg, run_stats};
 
@@ -107,60 +113,74 @@ const FIGURES: &[Figure] = &[
     Figure::new(
         "Angle",
         &[
-            "truth.angle_deg",
-            "integration.angle_deg",
-            "kf-rotation.angle_deg",
-            "kf-torsion.angle_deg",
+            SeriesKey::truth(&q::ANGLE_DEG),
+            SeriesKey::new("integration", &q::ANGLE_DEG),
+            SeriesKey::new("kf-rotation", &q::ANGLE_DEG),
+            SeriesKey::new("kf-torsion", &q::ANGLE_DEG),
         ],
     ),
     Figure::new(
         "Rate",
         &[
-            "truth.rate_deg_s",
-            "integration.rate_deg_s",
-            "kf-rotation.rate_deg_s",
-            "kf-torsion.rate_deg_s",
+            SeriesKey::truth(&q::RATE_DEG_S),
+            SeriesKey::new("integration", &q::RATE_DEG_S),
+            SeriesKey::new("kf-rotation", &q::RATE_DEG_S),
+            SeriesKey::new("kf-torsion", &q::RATE_DEG_S),
         ],
     ),
     Figure::new(
         "Angle error vs φ_int (paper)",
         &[
-            "kf-rotation.angle_minus_int_deg",
-            "kf-torsion.angle_minus_int_deg",
+            SeriesKey::new("kf-rotation", &one_axis_kf::ANGLE_MINUS_INT_DEG),
+            SeriesKey::new("kf-torsion", &one_axis_kf::ANGLE_MINUS_INT_DEG),
         ],
     ),
     Figure::new(
         "Angle error vs truth",
         &[
-            "kf-rotation.angle_err_deg",
-            "kf-torsion.angle_err_deg",
-            "integration.angle_err_deg",
+            SeriesKey::new("kf-rotation", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("kf-torsion", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("integration", &q::ANGLE_ERR_DEG),
         ],
     ),
     Figure::new(
         "Rate error vs truth",
-        &["kf-rotation.rate_err_deg_s", "kf-torsion.rate_err_deg_s"],
+        &[
+            SeriesKey::new("kf-rotation", &q::RATE_ERR_DEG_S),
+            SeriesKey::new("kf-torsion", &q::RATE_ERR_DEG_S),
+        ],
     ),
     Figure::new(
         "Rate error vs sensor",
         &[
-            "kf-rotation.rate_minus_sensor_deg_s",
-            "kf-torsion.rate_minus_sensor_deg_s",
+            SeriesKey::new("kf-rotation", &one_axis_kf::RATE_MINUS_SENSOR_DEG_S),
+            SeriesKey::new("kf-torsion", &one_axis_kf::RATE_MINUS_SENSOR_DEG_S),
         ],
     ),
     Figure::new(
         "P: a = P_φφ, c = P_φ̇φ̇ (log10)",
         &[
-            "kf-rotation.var_phi",
-            "kf-rotation.var_phidot",
-            "kf-torsion.var_phi",
-            "kf-torsion.var_phidot",
+            SeriesKey::variance("kf-rotation", &one_axis_kf::STATE_PHI),
+            SeriesKey::variance("kf-rotation", &one_axis_kf::STATE_PHIDOT),
+            SeriesKey::variance("kf-torsion", &one_axis_kf::STATE_PHI),
+            SeriesKey::variance("kf-torsion", &one_axis_kf::STATE_PHIDOT),
         ],
     )
     .log(),
     Figure::new(
         "P: b = P_φφ̇",
-        &["kf-rotation.cov_phi_phidot", "kf-torsion.cov_phi_phidot"],
+        &[
+            SeriesKey::covariance(
+                "kf-rotation",
+                &one_axis_kf::STATE_PHI,
+                &one_axis_kf::STATE_PHIDOT,
+            ),
+            SeriesKey::covariance(
+                "kf-torsion",
+                &one_axis_kf::STATE_PHI,
+                &one_axis_kf::STATE_PHIDOT,
+            ),
+        ],
     ),
 ];
 
@@ -335,10 +355,10 @@ impl Lab for SuspendedMockup {
             &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],
             200.0,
             &[
-                "kf-rotation.angle_minus_int_deg",
-                "kf-torsion.angle_minus_int_deg",
-                "kf-rotation.angle_err_deg",
-                "kf-torsion.angle_err_deg",
+                SeriesKey::new("kf-rotation", &one_axis_kf::ANGLE_MINUS_INT_DEG),
+                SeriesKey::new("kf-torsion", &one_axis_kf::ANGLE_MINUS_INT_DEG),
+                SeriesKey::new("kf-rotation", &q::ANGLE_ERR_DEG),
+                SeriesKey::new("kf-torsion", &q::ANGLE_ERR_DEG),
             ],
         )];
         SWEEPS
@@ -420,9 +440,8 @@ impl TruthModel for Suspended {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.period_s", "s", SeriesGroup::Lab).labelled("torsion period T"),
-            SeriesSpec::new("truth.swing_deg", "deg", SeriesGroup::Lab)
-                .labelled("swing angle of the string"),
+            SeriesSpec::of(SeriesKey::truth(&PERIOD_S), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&SWING_DEG), SeriesGroup::Lab),
         ]
     }
 

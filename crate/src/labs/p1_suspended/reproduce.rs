@@ -8,7 +8,8 @@ use super::{SuspendedMockup, rates};
 use crate::analysis::scenario::{params_with, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
-use crate::model::{Expectation, Lab, Reproduction, Row};
+use crate::estimators::one_axis_kf;
+use crate::model::{Expectation, Lab, Reproduction, Row, SeriesKey, q};
 
 /// Seeds over which the window rows take their median.
 const SEEDS: [u64; 5] = [1, 2, 3, 4, 5];
@@ -49,27 +50,25 @@ pub fn run_stats(
     let p = params_with(lab, assignments)?;
     let band = p.get("gyro_noise_deg_s") / (rates(&p).1 as f64).sqrt();
     let ids = ["kf-rotation", "kf-torsion"];
-    let names: Vec<String> = ids
+    let keys: Vec<SeriesKey> = ids
         .iter()
         .flat_map(|id| {
             [
-                "angle_minus_int_deg",
-                "angle_err_deg",
-                "rate_err_deg_s",
-                "status",
+                SeriesKey::new(id, &one_axis_kf::ANGLE_MINUS_INT_DEG),
+                SeriesKey::new(id, &q::ANGLE_ERR_DEG),
+                SeriesKey::new(id, &q::RATE_ERR_DEG_S),
+                SeriesKey::status(id),
             ]
-            .map(|q| format!("{id}.{q}"))
         })
         .collect();
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    let trace = run_trace(lab, assignments, seed, duration_s, &refs)?;
+    let trace = run_trace(lab, assignments, seed, duration_s, &keys)?;
     let mut out = [FilterStats::default(); 2];
     for (o, id) in out.iter_mut().zip(ids) {
-        let get = |q: &str| trace.after(&format!("{id}.{q}"), after_s);
+        let get = |quantity| trace.after(SeriesKey::new(id, quantity), after_s);
         let (vs_int, vs_truth, rate) = (
-            get("angle_minus_int_deg")?,
-            get("angle_err_deg")?,
-            get("rate_err_deg_s")?,
+            get(&one_axis_kf::ANGLE_MINUS_INT_DEG)?,
+            get(&q::ANGLE_ERR_DEG)?,
+            get(&q::RATE_ERR_DEG_S)?,
         );
         *o = FilterStats {
             max_vs_int_deg: stats::max_abs(&vs_int).of(&format!("{id} φ̂ − φ_int"))?,
@@ -79,7 +78,7 @@ pub fn run_stats(
             rate_inside_band: stats::fraction(&rate, |r| r.abs() <= band)
                 .of(&format!("{id} rate error"))?,
             diverged: f64::from(u8::from(
-                stats::max(trace.series(&format!("{id}.status"))?).of("status")? > 0.0,
+                stats::max(trace.series(SeriesKey::status(id))?).of("status")? > 0.0,
             )),
         };
     }

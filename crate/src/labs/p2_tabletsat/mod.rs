@@ -9,10 +9,11 @@ pub mod sensors;
 pub mod sets;
 pub mod truth;
 
+use crate::estimators::mekf;
 use crate::estimators::{Mekf, MekfConfig, MekfTuning, SensorSet, StateSet, full_step_flops};
 use crate::model::{
     AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, Outage, ParamSpec, ParamValues,
-    Preset, ReproError, Reproduction, SweepSpec, TimingItem,
+    Preset, ReproError, Reproduction, SeriesKey, SweepSpec, TimingItem, q,
 };
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
 use rand::{Rng, SeedableRng};
@@ -79,120 +80,120 @@ const FIGURES: &[Figure] = &[
     Figure::new(
         "ST+Gyro attitude errors (Fig. 4)",
         &[
-            "st-gyro.err_x_deg",
-            "st-gyro.err_y_deg",
-            "st-gyro.err_z_deg",
+            SeriesKey::new("st-gyro", &q::ERR_X_DEG),
+            SeriesKey::new("st-gyro", &q::ERR_Y_DEG),
+            SeriesKey::new("st-gyro", &q::ERR_Z_DEG),
         ],
     ),
     Figure::new(
         "ST+Gyro rate errors (Fig. 5)",
         &[
-            "st-gyro.rate_err_x_deg_s",
-            "st-gyro.rate_err_y_deg_s",
-            "st-gyro.rate_err_z_deg_s",
+            SeriesKey::new("st-gyro", &q::RATE_ERR_X_DEG_S),
+            SeriesKey::new("st-gyro", &q::RATE_ERR_Y_DEG_S),
+            SeriesKey::new("st-gyro", &q::RATE_ERR_Z_DEG_S),
         ],
     ),
     Figure::new(
         "Attitude error of every filter",
         &[
-            "st-gyro-mag-sun.err_deg",
-            "st-gyro-mag.err_deg",
-            "st-mag-sun.err_deg",
-            "st-mag-mbias.err_deg",
-            "mag-sun-gyro.err_deg",
-            "mag-sun-gyro-gbias.err_deg",
-            "mag-sun-gyro-mbias.err_deg",
-            "st-gyro.err_deg",
-            "st-gyro-gbias.err_deg",
-            "mag-sun.err_deg",
-            "mag-gyro.err_deg",
-            "st.err_deg",
-            "st-gyro-reduced.err_deg",
-            "mag-sun-dist.err_deg",
-            "st-dist.err_deg",
-            "st-gyro-const.err_deg",
+            SeriesKey::new("st-gyro-mag-sun", &q::ERR_DEG),
+            SeriesKey::new("st-gyro-mag", &q::ERR_DEG),
+            SeriesKey::new("st-mag-sun", &q::ERR_DEG),
+            SeriesKey::new("st-mag-mbias", &q::ERR_DEG),
+            SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
+            SeriesKey::new("mag-sun-gyro-gbias", &q::ERR_DEG),
+            SeriesKey::new("mag-sun-gyro-mbias", &q::ERR_DEG),
+            SeriesKey::new("st-gyro", &q::ERR_DEG),
+            SeriesKey::new("st-gyro-gbias", &q::ERR_DEG),
+            SeriesKey::new("mag-sun", &q::ERR_DEG),
+            SeriesKey::new("mag-gyro", &q::ERR_DEG),
+            SeriesKey::new("st", &q::ERR_DEG),
+            SeriesKey::new("st-gyro-reduced", &q::ERR_DEG),
+            SeriesKey::new("mag-sun-dist", &q::ERR_DEG),
+            SeriesKey::new("st-dist", &q::ERR_DEG),
+            SeriesKey::new("st-gyro-const", &q::ERR_DEG),
         ],
     )
     .log(),
     Figure::new(
         "Gyro bias: truth and estimates (Fig. 6)",
         &[
-            "sensors.gyro_bias_x_deg_s",
-            "sensors.gyro_bias_y_deg_s",
-            "st-gyro-gbias.gbias_x_deg_s",
-            "st-gyro-gbias.gbias_y_deg_s",
-            "st-gyro-reduced.gbias_x_deg_s",
-            "st-gyro-reduced.gbias_y_deg_s",
+            SeriesKey::sensors(&sensors::GYRO_BIAS[0]),
+            SeriesKey::sensors(&sensors::GYRO_BIAS[1]),
+            SeriesKey::new("st-gyro-gbias", &mekf::GBIAS_X_DEG_S),
+            SeriesKey::new("st-gyro-gbias", &mekf::GBIAS_Y_DEG_S),
+            SeriesKey::new("st-gyro-reduced", &mekf::GBIAS_X_DEG_S),
+            SeriesKey::new("st-gyro-reduced", &mekf::GBIAS_Y_DEG_S),
         ],
     ),
     Figure::new(
         "Magnetometer bias: truth and estimate (Fig. 7)",
         &[
-            "sensors.mag_bias_x_nt",
-            "sensors.mag_bias_z_nt",
-            "mag-sun-gyro-mbias.mbias_x_nt",
-            "mag-sun-gyro-mbias.mbias_z_nt",
+            SeriesKey::sensors(&sensors::MAG_BIAS[0]),
+            SeriesKey::sensors(&sensors::MAG_BIAS[2]),
+            SeriesKey::new("mag-sun-gyro-mbias", &mekf::MBIAS_X_NT),
+            SeriesKey::new("mag-sun-gyro-mbias", &mekf::MBIAS_Z_NT),
         ],
     ),
     Figure::new(
         "Disturbance estimates (Fig. 8)",
         &[
-            "mag-sun-dist.d_x_s2",
-            "mag-sun-dist.d_y_s2",
-            "mag-sun-dist.d_z_s2",
-            "st-dist.d_x_s2",
+            SeriesKey::new("mag-sun-dist", &mekf::D_X_S2),
+            SeriesKey::new("mag-sun-dist", &mekf::D_Y_S2),
+            SeriesKey::new("mag-sun-dist", &mekf::D_Z_S2),
+            SeriesKey::new("st-dist", &mekf::D_X_S2),
         ],
     ),
     Figure::new(
         "Consistency: NEES of the attitude (χ²₃: 95 % in 0.22…9.35)",
         &[
-            "st-gyro.nees_att",
-            "mag-sun-gyro.nees_att",
-            "mag-sun.nees_att",
-            "mag-gyro.nees_att",
-            "st.nees_att",
+            SeriesKey::nees_att("st-gyro"),
+            SeriesKey::nees_att("mag-sun-gyro"),
+            SeriesKey::nees_att("mag-sun"),
+            SeriesKey::nees_att("mag-gyro"),
+            SeriesKey::nees_att("st"),
         ],
     )
     .log(),
     Figure::new(
         "P diagonal, ST+Gyro and Mag+Sun+Gyro (log; attitude rad², rate rad²/s²)",
         &[
-            "st-gyro.var_att_x",
-            "st-gyro.var_att_y",
-            "st-gyro.var_att_z",
-            "st-gyro.var_rate_x",
-            "st-gyro.var_rate_y",
-            "st-gyro.var_rate_z",
-            "mag-sun-gyro.var_att_x",
-            "mag-sun-gyro.var_att_y",
-            "mag-sun-gyro.var_att_z",
+            SeriesKey::variance("st-gyro", &mekf::ATT_X),
+            SeriesKey::variance("st-gyro", &mekf::ATT_Y),
+            SeriesKey::variance("st-gyro", &mekf::ATT_Z),
+            SeriesKey::variance("st-gyro", &mekf::RATE_X),
+            SeriesKey::variance("st-gyro", &mekf::RATE_Y),
+            SeriesKey::variance("st-gyro", &mekf::RATE_Z),
+            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_X),
+            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_Y),
+            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_Z),
         ],
     )
     .log(),
     Figure::new(
         "NIS per update",
         &[
-            "st-gyro.nis",
-            "mag-sun-gyro.nis",
-            "mag-sun.nis",
-            "mag-gyro.nis",
+            SeriesKey::new("st-gyro", &mekf::NIS),
+            SeriesKey::new("mag-sun-gyro", &mekf::NIS),
+            SeriesKey::new("mag-sun", &mekf::NIS),
+            SeriesKey::new("mag-gyro", &mekf::NIS),
         ],
     )
     .log(),
     Figure::new(
         "Outages: eclipse, sun seen, star tracker",
         &[
-            "sensors.eclipse",
-            "sensors.sun_seen",
-            "sensors.star_available",
+            SeriesKey::sensors(&sensors::ECLIPSE),
+            SeriesKey::sensors(&sensors::SUN_SEEN),
+            SeriesKey::sensors(&sensors::STAR_AVAILABLE),
         ],
     ),
     Figure::new(
         "Wheel momentum",
         &[
-            "truth.wheel_h_x_n_m_s",
-            "truth.wheel_h_y_n_m_s",
-            "truth.wheel_h_z_n_m_s",
+            SeriesKey::truth(&truth::WHEEL_H[0]),
+            SeriesKey::truth(&truth::WHEEL_H[1]),
+            SeriesKey::truth(&truth::WHEEL_H[2]),
         ],
     ),
 ];
@@ -463,18 +464,19 @@ impl Lab for TabletSat {
     }
 
     fn outages(&self) -> &'static [Outage] {
-        &[
+        const OUTAGES: &[Outage] = &[
             Outage {
-                series: "sensors.sun_seen",
+                series: SeriesKey::sensors(&sensors::SUN_SEEN),
                 out_when: 0.0,
                 label: "no sun reading (eclipse or outside the heads' fields)",
             },
             Outage {
-                series: "sensors.star_available",
+                series: SeriesKey::sensors(&sensors::STAR_AVAILABLE),
                 out_when: 0.0,
                 label: "star tracker out",
             },
-        ]
+        ];
+        OUTAGES
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
@@ -483,7 +485,11 @@ impl Lab for TabletSat {
             "q_scale",
             &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
             200.0,
-            &["st-gyro.err_deg", "mag-sun-gyro.err_deg", "mag-sun.err_deg"],
+            &[
+                SeriesKey::new("st-gyro", &q::ERR_DEG),
+                SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
+                SeriesKey::new("mag-sun", &q::ERR_DEG),
+            ],
         )
         .after(140.0)];
         SWEEPS

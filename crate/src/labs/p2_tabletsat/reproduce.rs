@@ -8,11 +8,13 @@
 //! whose exponents the OCR lost are reported, not asserted.
 
 use super::TabletSat;
+use super::sensors::{GYRO_BIAS, MAG_BIAS};
 use super::sets::{FILTERS, FilterRow};
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
-use crate::model::{Expectation, Lab, Reproduction, Row};
+use crate::estimators::mekf;
+use crate::model::{Expectation, Lab, Quantity, Reproduction, Row, SeriesKey, StateInfo, q};
 
 /// Run length (s) and the window σ is taken over (the last 60 s).
 const RUN_S: f64 = 200.0;
@@ -37,55 +39,51 @@ pub struct FilterAccuracy {
     pub nees_mean: f64,
 }
 
-fn series_of(id: &str, has_rate_state: bool) -> Vec<String> {
-    let mut s: Vec<String> = [
-        "err_x_deg",
-        "err_y_deg",
-        "err_z_deg",
-        "var_att_x",
-        "var_att_y",
-        "var_att_z",
-        "nees_att",
-    ]
-    .iter()
-    .map(|q| format!("{id}.{q}"))
-    .collect();
-    s.extend(
-        ["rate_err_x_deg_s", "rate_err_y_deg_s", "rate_err_z_deg_s"]
-            .iter()
-            .map(|q| format!("{id}.{q}")),
-    );
+fn series_of(id: &'static str, has_rate_state: bool) -> Vec<SeriesKey> {
+    let mut s: Vec<SeriesKey> = ATT_ERRORS.iter().map(|q| SeriesKey::new(id, q)).collect();
+    s.extend(ATT_STATES.iter().map(|st| SeriesKey::variance(id, st)));
+    s.push(SeriesKey::nees_att(id));
+    s.extend(RATE_ERRORS.iter().map(|q| SeriesKey::new(id, q)));
     if has_rate_state {
-        s.extend(
-            ["var_rate_x", "var_rate_y", "var_rate_z"]
-                .iter()
-                .map(|q| format!("{id}.{q}")),
-        );
+        s.extend(RATE_STATES.iter().map(|st| SeriesKey::variance(id, st)));
     }
     s
 }
 
+/// The attitude errors about body x, y, z.
+const ATT_ERRORS: [&Quantity; 3] = [&q::ERR_X_DEG, &q::ERR_Y_DEG, &q::ERR_Z_DEG];
+/// The rate errors about body x, y, z.
+const RATE_ERRORS: [&Quantity; 3] = [
+    &q::RATE_ERR_X_DEG_S,
+    &q::RATE_ERR_Y_DEG_S,
+    &q::RATE_ERR_Z_DEG_S,
+];
+/// The filters' attitude states.
+const ATT_STATES: [&StateInfo; 3] = [&mekf::ATT_X, &mekf::ATT_Y, &mekf::ATT_Z];
+/// The filters' rate states (not in the reduced filter).
+const RATE_STATES: [&StateInfo; 3] = [&mekf::RATE_X, &mekf::RATE_Y, &mekf::RATE_Z];
+
 /// The accuracy of filter `id` in `trace`.
-pub fn accuracy(trace: &Trace, id: &str) -> Result<FilterAccuracy, AnalysisError> {
-    let rms_axes = |names: [&str; 3]| -> Result<[f64; 3], AnalysisError> {
+pub fn accuracy(trace: &Trace, id: &'static str) -> Result<FilterAccuracy, AnalysisError> {
+    let rms_axes = |quantities: [&'static Quantity; 3]| -> Result<[f64; 3], AnalysisError> {
         let mut out = [0.0; 3];
-        for (o, n) in out.iter_mut().zip(names) {
-            *o = stats::rms(&trace.after(&format!("{id}.{n}"), WINDOW_FROM_S)?)
-                .of(&format!("{id}.{n}"))?;
+        for (o, q) in out.iter_mut().zip(quantities) {
+            let key = SeriesKey::new(id, q);
+            *o = stats::rms(&trace.after(key, WINDOW_FROM_S)?).of(&key.name())?;
         }
         Ok(out)
     };
-    let att = rms_axes(["err_x_deg", "err_y_deg", "err_z_deg"])?;
-    let rate = rms_axes(["rate_err_x_deg_s", "rate_err_y_deg_s", "rate_err_z_deg_s"])?;
-    let p_max = |names: [&str; 3]| -> Result<f64, AnalysisError> {
+    let att = rms_axes(ATT_ERRORS)?;
+    let rate = rms_axes(RATE_ERRORS)?;
+    let p_max = |states: [&'static StateInfo; 3]| -> Result<f64, AnalysisError> {
         let mut v = Vec::new();
-        for n in names {
-            v.push(trace.last(&format!("{id}.{n}"))?);
+        for st in states {
+            v.push(trace.last(SeriesKey::variance(id, st))?);
         }
         Ok(stats::max(&v).of("variances")?.sqrt().to_degrees())
     };
-    let rate_p = match trace.series(&format!("{id}.var_rate_x")) {
-        Ok(_) => p_max(["var_rate_x", "var_rate_y", "var_rate_z"])?,
+    let rate_p = match trace.series(SeriesKey::variance(id, &mekf::RATE_X)) {
+        Ok(_) => p_max(RATE_STATES)?,
         Err(_) => f64::NAN,
     };
     Ok(FilterAccuracy {
@@ -93,10 +91,9 @@ pub fn accuracy(trace: &Trace, id: &str) -> Result<FilterAccuracy, AnalysisError
         att_axes_deg: att,
         rate_rms_deg_s: stats::max(&rate).of("rate σ")?,
         rate_axes_deg_s: rate,
-        att_p_deg: p_max(["var_att_x", "var_att_y", "var_att_z"])?,
+        att_p_deg: p_max(ATT_STATES)?,
         rate_p_deg_s: rate_p,
-        nees_mean: stats::mean(&trace.after(&format!("{id}.nees_att"), WINDOW_FROM_S)?)
-            .of("NEES")?,
+        nees_mean: stats::mean(&trace.after(SeriesKey::nees_att(id), WINDOW_FROM_S)?).of("NEES")?,
     })
 }
 
@@ -105,7 +102,7 @@ fn run_all(
     assignments: &[&str],
     seed: u64,
 ) -> Result<Vec<(&'static FilterRow, FilterAccuracy)>, AnalysisError> {
-    let names: Vec<String> = FILTERS
+    let keys: Vec<SeriesKey> = FILTERS
         .iter()
         .flat_map(|f| {
             series_of(
@@ -114,9 +111,8 @@ fn run_all(
             )
         })
         .collect();
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     let lab: &'static dyn Lab = &TabletSat;
-    let trace = run_trace(lab, assignments, seed, RUN_S, &refs)?;
+    let trace = run_trace(lab, assignments, seed, RUN_S, &keys)?;
     FILTERS
         .iter()
         .map(|f| Ok((f, accuracy(&trace, f.config.id)?)))
@@ -335,21 +331,16 @@ fn per_axis_rows(all: &Runs) -> Result<Vec<Row>, AnalysisError> {
 /// axis. NaN if some axis never settles.
 fn bias_convergence_s(
     assignment: &str,
-    estimate: &str,
-    truth: &str,
+    estimate: [SeriesKey; 3],
+    truth: [SeriesKey; 3],
     tol: f64,
 ) -> Result<f64, AnalysisError> {
-    let axis = |pattern: &str, a: &str| pattern.replace("{a}", a);
-    let names: Vec<String> = ["x", "y", "z"]
-        .iter()
-        .flat_map(|a| [axis(estimate, a), axis(truth, a)])
-        .collect();
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let keys: Vec<SeriesKey> = estimate.iter().chain(&truth).copied().collect();
     let lab: &'static dyn Lab = &TabletSat;
-    let trace = run_trace(lab, &[assignment], 1, RUN_S, &refs)?;
+    let trace = run_trace(lab, &[assignment], 1, RUN_S, &keys)?;
     let mut worst: f64 = 0.0;
-    for a in ["x", "y", "z"] {
-        let t = convergence_time(&trace, &axis(estimate, a), &axis(truth, a), tol)?;
+    for (e, t) in estimate.iter().zip(&truth) {
+        let t = convergence_time(&trace, &e.name(), &t.name(), tol)?;
         worst = if t.is_nan() || worst.is_nan() {
             f64::NAN
         } else {
@@ -367,8 +358,13 @@ fn biases(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
         "biases converge from 0 in < 1 min (Figs. 6–7)",
         bias_convergence_s(
             "gyro_bias_deg_s=0.05",
-            "st-gyro-gbias.gbias_{a}_deg_s",
-            "sensors.gyro_bias_{a}_deg_s",
+            [
+                &mekf::GBIAS_X_DEG_S,
+                &mekf::GBIAS_Y_DEG_S,
+                &mekf::GBIAS_Z_DEG_S,
+            ]
+            .map(|q| SeriesKey::new("st-gyro-gbias", q)),
+            GYRO_BIAS.each_ref().map(SeriesKey::sensors),
             0.005,
         )?,
         "s",
@@ -378,7 +374,13 @@ fn biases(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
         Row::check(
             "Mag+Sun+Gyro+Δb: magnetometer bias 2000 nT within 400 nT (Table 3's Δb accuracy) after",
             "biases converge from 0 in < 1 min (Figs. 6–7)",
-            bias_convergence_s("mag_bias_nt=2000", "mag-sun-gyro-mbias.mbias_{a}_nt", "sensors.mag_bias_{a}_nt", 400.0)?,
+            bias_convergence_s(
+                "mag_bias_nt=2000",
+                [&mekf::MBIAS_X_NT, &mekf::MBIAS_Y_NT, &mekf::MBIAS_Z_NT]
+                    .map(|q| SeriesKey::new("mag-sun-gyro-mbias", q)),
+                MAG_BIAS.each_ref().map(SeriesKey::sensors),
+                400.0,
+            )?,
             "s",
             Expectation::below(60.0),
         )

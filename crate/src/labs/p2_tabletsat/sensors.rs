@@ -19,12 +19,34 @@ use crate::dynamics::{
     sun_direction_eci,
 };
 use crate::model::{
-    Measurements, Onboard, OrbitPicture, ParamValues, SceneExtras, SceneVector, SensorModel,
-    SeriesGroup, SeriesSpec, TruthState,
+    Measurements, Onboard, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
+    SensorModel, SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::sensors::{RandomWalk, WhiteNoise};
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
+
+/// 1 while the satellite is in the Earth's shadow.
+pub(super) const ECLIPSE: Quantity =
+    Quantity::new("eclipse", "in the Earth's shadow (1 = yes)", "");
+/// 1 while a sun-sensor head sees the sun.
+pub(super) const SUN_SEEN: Quantity =
+    Quantity::new("sun_seen", "a sun sensor sees the sun (1 = yes)", "");
+/// 1 while the star tracker gives an attitude.
+pub(super) const STAR_AVAILABLE: Quantity =
+    Quantity::new("star_available", "star tracker available (1 = yes)", "");
+/// The gyro's true bias (deg/s).
+pub(super) const GYRO_BIAS: [Quantity; 3] = [
+    Quantity::new("gyro_bias_x_deg_s", "true gyro bias Δω_x", "deg/s"),
+    Quantity::new("gyro_bias_y_deg_s", "true gyro bias Δω_y", "deg/s"),
+    Quantity::new("gyro_bias_z_deg_s", "true gyro bias Δω_z", "deg/s"),
+];
+/// The magnetometer's true bias (nT).
+pub(super) const MAG_BIAS: [Quantity; 3] = [
+    Quantity::new("mag_bias_x_nt", "true magnetometer bias Δb_x", "nT"),
+    Quantity::new("mag_bias_y_nt", "true magnetometer bias Δb_y", "nT"),
+    Quantity::new("mag_bias_z_nt", "true magnetometer bias Δb_z", "nT"),
+];
 
 /// Sun-sensor head boresights (body axes).
 const SUN_HEADS: [[f64; 3]; 5] = [
@@ -415,33 +437,12 @@ impl SensorModel for Sensors {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        let mut s: Vec<SeriesSpec> = [
-            ("eclipse", "in the Earth's shadow (1 = yes)"),
-            ("sun_seen", "a sun sensor sees the sun (1 = yes)"),
-            ("star_available", "star tracker available (1 = yes)"),
-        ]
-        .iter()
-        .map(|(n, label)| {
-            SeriesSpec::new(format!("sensors.{n}"), "", SeriesGroup::Lab).labelled(*label)
-        })
-        .collect();
-        for a in ["x", "y", "z"] {
-            s.push(
-                SeriesSpec::new(
-                    format!("sensors.gyro_bias_{a}_deg_s"),
-                    "deg/s",
-                    SeriesGroup::Lab,
-                )
-                .labelled(format!("true gyro bias Δω_{a}")),
-            );
-        }
-        for a in ["x", "y", "z"] {
-            s.push(
-                SeriesSpec::new(format!("sensors.mag_bias_{a}_nt"), "nT", SeriesGroup::Lab)
-                    .labelled(format!("true magnetometer bias Δb_{a}")),
-            );
-        }
-        s
+        [ECLIPSE, SUN_SEEN, STAR_AVAILABLE]
+            .iter()
+            .chain(&GYRO_BIAS)
+            .chain(&MAG_BIAS)
+            .map(|q| SeriesSpec::of(SeriesKey::sensors(q), SeriesGroup::Lab))
+            .collect()
     }
 
     fn scene(&self) -> SceneExtras {

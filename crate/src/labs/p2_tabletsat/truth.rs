@@ -3,10 +3,19 @@
 //! disturbance torque (eqs. 6–7).
 
 use crate::dynamics::{CircularOrbit, Epoch};
-use crate::model::{ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
+use crate::model::{
+    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
+
+/// The wheels' angular momentum in body axes (N·m·s), truth series.
+pub(super) const WHEEL_H: [Quantity; 3] = [
+    Quantity::new("wheel_h_x_n_m_s", "wheel momentum h_x", "N·m·s"),
+    Quantity::new("wheel_h_y_n_m_s", "wheel momentum h_y", "N·m·s"),
+    Quantity::new("wheel_h_z_n_m_s", "wheel momentum h_z", "N·m·s"),
+];
 
 /// Largest momentum of one wheel (N·m·s), paper 2 §1.
 pub const WHEEL_MAX_N_M_S: f64 = 0.17;
@@ -188,16 +197,9 @@ impl TruthModel for Spacecraft {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        ["x", "y", "z"]
+        WHEEL_H
             .iter()
-            .map(|a| {
-                SeriesSpec::new(
-                    format!("truth.wheel_h_{a}_n_m_s"),
-                    "N·m·s",
-                    SeriesGroup::Lab,
-                )
-                .labelled(format!("wheel momentum h_{a}"))
-            })
+            .map(|q| SeriesSpec::of(SeriesKey::truth(q), SeriesGroup::Lab))
             .collect()
     }
 

@@ -15,10 +15,11 @@ use crate::estimators::{
     AccelWz, BlendedWz, GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration,
     WzKalman, WzKalmanTuning,
 };
+use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
     Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, ReproError, Reproduction,
-    SensorModel, TimingItem, TruthModel, TruthState,
+    SensorModel, SeriesKey, TimingItem, TruthModel, TruthState, q,
 };
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
@@ -144,36 +145,66 @@ const PARAMS: &[ParamSpec] = &[
 const FIGURES: &[Figure] = &[
     Figure::new(
         "Fig. 4: u, v",
-        &["truth.u", "truth.v", "uvz-rk4.u", "uvz-rk4.v"],
+        &[
+            SeriesKey::truth(&q::U),
+            SeriesKey::truth(&q::V),
+            SeriesKey::new("uvz-rk4", &q::U),
+            SeriesKey::new("uvz-rk4", &q::V),
+        ],
     ),
-    Figure::new("Fig. 4: z", &["truth.z_deg", "uvz-rk4.z_deg"]),
+    Figure::new(
+        "Fig. 4: z",
+        &[
+            SeriesKey::truth(&q::Z_DEG),
+            SeriesKey::new("uvz-rk4", &q::Z_DEG),
+        ],
+    ),
     Figure::new(
         "Fig. 5: yaw, pitch, roll",
         &[
-            "truth.yaw_deg",
-            "truth.pitch_deg",
-            "truth.roll_deg",
-            "uvz-rk4.yaw_deg",
-            "uvz-rk4.pitch_deg",
-            "uvz-rk4.roll_deg",
+            SeriesKey::truth(&q::YAW_DEG),
+            SeriesKey::truth(&q::PITCH_DEG),
+            SeriesKey::truth(&q::ROLL_DEG),
+            SeriesKey::new("uvz-rk4", &q::YAW_DEG),
+            SeriesKey::new("uvz-rk4", &q::PITCH_DEG),
+            SeriesKey::new("uvz-rk4", &q::ROLL_DEG),
         ],
     ),
-    Figure::new("Fig. 8: v, vᵃ", &["uvz-rk4.v", "accel.v", "truth.v"]),
+    Figure::new(
+        "Fig. 8: v, vᵃ",
+        &[
+            SeriesKey::new("uvz-rk4", &q::V),
+            SeriesKey::new("accel", &q::V),
+            SeriesKey::truth(&q::V),
+        ],
+    ),
     Figure::new(
         "Fig. 10: HPF(v), LPF(vᵃ), vᵏ",
-        &["blend.hpf_v", "blend.lpf_va", "blend.v", "truth.v"],
+        &[
+            SeriesKey::new("blend", &blended_wz::HPF_V),
+            SeriesKey::new("blend", &blended_wz::LPF_VA),
+            SeriesKey::new("blend", &q::V),
+            SeriesKey::truth(&q::V),
+        ],
     ),
     Figure::new(
         "Tilt errors",
         &[
-            "uvz-rk4.tilt_err_deg",
-            "accel.tilt_err_deg",
-            "blend.tilt_err_deg",
-            "kf-uv.tilt_err_deg",
-            "quat-rk4.tilt_err_deg",
+            SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG),
+            SeriesKey::new("accel", &q::TILT_ERR_DEG),
+            SeriesKey::new("blend", &q::TILT_ERR_DEG),
+            SeriesKey::new("kf-uv", &q::TILT_ERR_DEG),
+            SeriesKey::new("quat-rk4", &q::TILT_ERR_DEG),
         ],
     ),
-    Figure::new("KF variances (log10)", &["kf-uv.var_u", "kf-uv.var_v"]).log(),
+    Figure::new(
+        "KF variances (log10)",
+        &[
+            SeriesKey::variance("kf-uv", &wz_kalman::STATE_U),
+            SeriesKey::variance("kf-uv", &wz_kalman::STATE_V),
+        ],
+    )
+    .log(),
 ];
 
 /// The gyro's error budget the integrators publish their covariance from.

@@ -8,7 +8,7 @@ use crate::dynamics::EulerMotion;
 use crate::math::{
     EulerYpr, WzAttitude, rk4_step, step_quaternion_rk4, step_uvz_rk4, uv_derivative, wrap_pi,
 };
-use crate::model::{Expectation, Reproduction, Row, TimingItem};
+use crate::model::{Expectation, Quantity, Reproduction, Row, SeriesKey, TimingItem, q};
 use nalgebra::{Vector2, Vector3};
 use std::hint::black_box;
 
@@ -16,7 +16,7 @@ fn run(
     assignments: &[&str],
     seed: u64,
     duration_s: f64,
-    series: &[&str],
+    series: &[SeriesKey],
 ) -> Result<Trace, AnalysisError> {
     run_trace(&WzSphere, assignments, seed, duration_s, series)
 }
@@ -68,34 +68,34 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
 }
 
 /// What the standard motion records for the checks.
-const SERIES: [&str; 13] = [
-    "truth.u",
-    "truth.v",
-    "truth.z_deg",
-    "truth.k_z",
-    "uvz-rk4.u",
-    "uvz-rk4.v",
-    "uvz-rk4.z_deg",
-    "accel.u",
-    "accel.v",
-    "uvz-rk4.tilt_err_deg",
-    "accel.tilt_err_deg",
-    "blend.tilt_err_deg",
-    "kf-uv.tilt_err_deg",
+const SERIES: [SeriesKey; 13] = [
+    SeriesKey::truth(&q::U),
+    SeriesKey::truth(&q::V),
+    SeriesKey::truth(&q::Z_DEG),
+    SeriesKey::truth(&q::K_Z),
+    SeriesKey::new("uvz-rk4", &q::U),
+    SeriesKey::new("uvz-rk4", &q::V),
+    SeriesKey::new("uvz-rk4", &q::Z_DEG),
+    SeriesKey::new("accel", &q::U),
+    SeriesKey::new("accel", &q::V),
+    SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG),
+    SeriesKey::new("accel", &q::TILT_ERR_DEG),
+    SeriesKey::new("blend", &q::TILT_ERR_DEG),
+    SeriesKey::new("kf-uv", &q::TILT_ERR_DEG),
 ];
 
 /// The gyro-only (u, v, z) integration drifts with the bias (Figs. 4, 7, 8).
 fn drift_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
     let mut rows = Vec::new();
-    let last = |q: &str| sim.last(q);
+    let last = |key: SeriesKey| sim.last(key);
     // (series, unit, paper figures, how large a drift counts as drifting)
-    for (q, unit, figs, threshold) in [
-        ("u", "", "Fig. 4, 7", 1e-3),
-        ("v", "", "Fig. 4, 7, 8", 1e-3),
-        ("z_deg", "deg", "Fig. 4", 0.1),
+    for (quantity, unit, figs, threshold) in [
+        (&q::U, "", "Fig. 4, 7", 1e-3),
+        (&q::V, "", "Fig. 4, 7, 8", 1e-3),
+        (&q::Z_DEG, "deg", "Fig. 4", 0.1),
     ] {
-        let drift = last(&format!("uvz-rk4.{q}"))? - last(&format!("truth.{q}"))?;
-        let name = q.trim_end_matches("_deg");
+        let drift = last(SeriesKey::new("uvz-rk4", quantity))? - last(SeriesKey::truth(quantity))?;
+        let name = quantity.key.trim_end_matches("_deg");
         rows.push(Row::check(
             format!("gyro-only |drift| of {name} at 100 s (bias 0.1 °/s)"),
             format!("drifts ({figs})"),
@@ -110,23 +110,23 @@ fn drift_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
 /// The accelerometer-only (uᵃ, vᵃ) are noisy as the closed form says (Fig. 7).
 fn noise_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
     let mut rows = Vec::new();
-    let resid = |q: &str| -> Result<Vec<f64>, AnalysisError> {
+    let resid = |quantity: &'static Quantity| -> Result<Vec<f64>, AnalysisError> {
         Ok(sim
-            .after(&format!("accel.{q}"), 0.0)?
+            .after(SeriesKey::new("accel", quantity), 0.0)?
             .iter()
-            .zip(sim.after(&format!("truth.{q}"), 0.0)?)
+            .zip(sim.after(SeriesKey::truth(quantity), 0.0)?)
             .map(|(a, t)| a - t)
             .collect())
     };
     // (uᵃ, vᵃ) = (n_ξ, n_η)/(1 + n_ζ): noise across k enters scaled by about 1/(1 + c′).
-    let kz = sim.after("truth.k_z", 0.0)?;
+    let kz = sim.after(SeriesKey::truth(&q::K_Z), 0.0)?;
     let predicted =
         0.01 * rms(&kz.iter().map(|c| 1.0 / (1.0 + c)).collect::<Vec<_>>()).of("1/(1 + c′)")?;
-    for q in ["u", "v"] {
+    for (name, quantity) in [("u", &q::U), ("v", &q::V)] {
         rows.push(Row::check(
-            format!("accelerometer-only noise of {q}ᵃ (rms)"),
+            format!("accelerometer-only noise of {name}ᵃ (rms)"),
             "— (closed form σ/(1+c′) along the true motion)",
-            rms(&resid(q)?).of("accelerometer residual")?,
+            rms(&resid(quantity)?).of("accelerometer residual")?,
             "",
             Expectation::Near {
                 value: predicted,
@@ -140,9 +140,9 @@ fn noise_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
 /// The blend and the Kalman filter remove both the noise and the drift (Fig. 10).
 fn blend_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
     let mut rows = Vec::new();
-    let last = |q: &str| sim.last(q);
-    let tilt = |id: &str| sim.after(&format!("{id}.tilt_err_deg"), 5.0);
-    let gyro_end = last("uvz-rk4.tilt_err_deg")?;
+    let last = |key: SeriesKey| sim.last(key);
+    let tilt = |id: &'static str| sim.after(SeriesKey::new(id, &q::TILT_ERR_DEG), 5.0);
+    let gyro_end = last(SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG))?;
     let accel_rms = rms(&tilt("accel")?).of("accelerometer tilt error")?;
     rows.push(Row::check(
         "gyro-only tilt error at 100 s",
@@ -177,7 +177,7 @@ fn blend_rows(sim: &Trace) -> Result<Vec<Row>, AnalysisError> {
         rows.push(Row::check(
             format!("{name}: tilt error at 100 s, below a fifth of the gyro-only error"),
             "no drift (Fig. 10)",
-            last(&format!("{id}.tilt_err_deg"))?,
+            last(SeriesKey::new(id, &q::TILT_ERR_DEG))?,
             "deg",
             Expectation::below(gyro_end / 5.0),
         ));
@@ -193,24 +193,24 @@ fn tumble_rows() -> Result<Vec<Row>, AnalysisError> {
         1,
         100.0,
         &[
-            "truth.k_z",
-            "uvz-rk4.err_deg",
-            "quat-rk4.err_deg",
-            "blend.tilt_err_deg",
-            "kf-uv.tilt_err_deg",
+            SeriesKey::truth(&q::K_Z),
+            SeriesKey::new("uvz-rk4", &q::ERR_DEG),
+            SeriesKey::new("quat-rk4", &q::ERR_DEG),
+            SeriesKey::new("blend", &q::TILT_ERR_DEG),
+            SeriesKey::new("kf-uv", &q::TILT_ERR_DEG),
         ],
     )?;
     rows.push(Row::check(
         "tumble: lowest vertical k_z (upside down)",
         "— (the motion passes w = ∞)",
-        min(tumble.series("truth.k_z")?).of("k_z")?,
+        min(tumble.series(SeriesKey::truth(&q::K_Z))?).of("k_z")?,
         "",
         Expectation::below(-0.95),
     ));
     let diff: Vec<f64> = tumble
-        .series("uvz-rk4.err_deg")?
+        .series(SeriesKey::new("uvz-rk4", &q::ERR_DEG))?
         .iter()
-        .zip(tumble.series("quat-rk4.err_deg")?)
+        .zip(tumble.series(SeriesKey::new("quat-rk4", &q::ERR_DEG))?)
         .map(|(a, b)| a - b)
         .collect();
     rows.push(Row::check(
@@ -224,7 +224,7 @@ fn tumble_rows() -> Result<Vec<Row>, AnalysisError> {
         rows.push(Row::check(
             format!("tumble: {id} tilt error max t>5 s"),
             "— (bounded through w = ∞)",
-            max_abs(&tumble.after(&format!("{id}.tilt_err_deg"), 5.0)?).of("tilt error")?,
+            max_abs(&tumble.after(SeriesKey::new(id, &q::TILT_ERR_DEG), 5.0)?).of("tilt error")?,
             "deg",
             Expectation::below(2.0),
         ));

@@ -9,10 +9,11 @@ mod plant;
 mod reproduce;
 mod tuning;
 
+use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
     Estimator, ExampleLog, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError,
-    Reproduction, SINGLE_AXIS_VIEWS, SweepSpec, ViewKind,
+    Reproduction, SINGLE_AXIS_VIEWS, SeriesKey, SweepSpec, ViewKind, q,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -61,48 +62,51 @@ const FIGURES: &[Figure] = &[
     Figure::new(
         "Roll: truth, set-point, accelerometer angle and estimates",
         &[
-            "truth.angle_deg",
-            "truth.setpoint_deg",
-            "sensors.accel_angle_deg",
-            "kf.angle_deg",
-            "cf.angle_deg",
-            "kf-bias.angle_deg",
-            "kf-u0.angle_deg",
+            SeriesKey::truth(&q::ANGLE_DEG),
+            SeriesKey::truth(&plant::SETPOINT_DEG),
+            SeriesKey::sensors(&mpu6050::ACCEL_ANGLE_DEG),
+            SeriesKey::new("kf", &q::ANGLE_DEG),
+            SeriesKey::new("cf", &q::ANGLE_DEG),
+            SeriesKey::new("kf-bias", &q::ANGLE_DEG),
+            SeriesKey::new("kf-u0", &q::ANGLE_DEG),
         ],
     ),
     Figure::new(
         "Roll error of each filter",
         &[
-            "kf.angle_err_deg",
-            "cf.angle_err_deg",
-            "kf-bias.angle_err_deg",
-            "kf-u0.angle_err_deg",
+            SeriesKey::new("kf", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("cf", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("kf-bias", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("kf-u0", &q::ANGLE_ERR_DEG),
         ],
     ),
     Figure::new(
         "Rate error of each filter",
         &[
-            "kf.rate_err_deg_s",
-            "cf.rate_err_deg_s",
-            "kf-bias.rate_err_deg_s",
-            "kf-u0.rate_err_deg_s",
+            SeriesKey::new("kf", &q::RATE_ERR_DEG_S),
+            SeriesKey::new("cf", &q::RATE_ERR_DEG_S),
+            SeriesKey::new("kf-bias", &q::RATE_ERR_DEG_S),
+            SeriesKey::new("kf-u0", &q::RATE_ERR_DEG_S),
         ],
     ),
     Figure::new(
         "Control: u_v, the integral's u₀ and the u₀ hover needs",
         &[
-            "truth.u_v_rad_s2",
-            "truth.u0_rad_s2",
-            "truth.u0_needed_rad_s2",
+            SeriesKey::truth(&plant::U_V_RAD_S2),
+            SeriesKey::truth(&plant::U0_RAD_S2),
+            SeriesKey::truth(&plant::U0_NEEDED_RAD_S2),
         ],
     ),
     Figure::new(
         "Gyro: reading and truth",
-        &["sensors.gyro_deg_s", "truth.rate_deg_s"],
+        &[
+            SeriesKey::sensors(&mpu6050::GYRO_DEG_S),
+            SeriesKey::truth(&q::RATE_DEG_S),
+        ],
     ),
     Figure::new(
         "Bias KF (beyond the paper): gyro-bias estimate",
-        &["kf-bias.gyro_bias_deg_s"],
+        &[SeriesKey::new("kf-bias", &roll_kf::GYRO_BIAS_DEG_S)],
     ),
 ];
 

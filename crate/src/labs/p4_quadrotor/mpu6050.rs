@@ -18,10 +18,23 @@
 //! angle atan2(a_y, a_z) = atan2(g sin θ − rθ̇², g cos θ + rθ̈) is therefore wrong while the
 //! rig moves fast, as on the real bench.
 
-use crate::model::{Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthState};
+use crate::model::{
+    Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    TruthState,
+};
 use crate::sensors::WhiteNoise;
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
+
+// The series this model records besides the catalogue's.
+/// accelerometer angle θ_acc = atan2(a_y, a_z) (deg).
+pub(super) const ACCEL_ANGLE_DEG: Quantity = Quantity::new(
+    "accel_angle_deg",
+    "accelerometer angle θ_acc = atan2(a_y, a_z)",
+    "deg",
+);
+/// gyro reading ω (deg/s).
+pub(super) const GYRO_DEG_S: Quantity = Quantity::new("gyro_deg_s", "gyro reading ω", "deg/s");
 
 /// Standard gravity (m/s²).
 const G_MPS2: f64 = 9.80665;
@@ -132,10 +145,8 @@ impl SensorModel for Mpu6050 {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("sensors.accel_angle_deg", "deg", SeriesGroup::Attitude)
-                .labelled("accelerometer angle θ_acc = atan2(a_y, a_z)"),
-            SeriesSpec::new("sensors.gyro_deg_s", "deg/s", SeriesGroup::Rate)
-                .labelled("gyro reading ω"),
+            SeriesSpec::of(SeriesKey::sensors(&ACCEL_ANGLE_DEG), SeriesGroup::Attitude),
+            SeriesSpec::of(SeriesKey::sensors(&GYRO_DEG_S), SeriesGroup::Rate),
         ]
     }
 

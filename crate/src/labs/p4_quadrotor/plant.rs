@@ -19,8 +19,27 @@
 //! * Set-point: a square wave between 0 and the step size; an optional gust, an angular
 //!   acceleration pulse of 0.1 s.
 
-use crate::model::{ControlInput, ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
+use crate::model::{
+    ControlInput, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+};
 use nalgebra::{UnitQuaternion, Vector3};
+
+// The series this model records besides the catalogue's.
+/// set-point θ_ref (deg).
+pub(super) const SETPOINT_DEG: Quantity = Quantity::new("setpoint_deg", "set-point θ_ref", "deg");
+/// angular acceleration θ̈ (deg/s²).
+pub(super) const ACCEL_DEG_S2: Quantity =
+    Quantity::new("accel_deg_s2", "angular acceleration θ̈", "deg/s²");
+/// varying command u_v (rad/s²).
+pub(super) const U_V_RAD_S2: Quantity =
+    Quantity::new("u_v_rad_s2", "varying command u_v", "rad/s²");
+/// constant command u₀ (rad/s²).
+pub(super) const U0_RAD_S2: Quantity = Quantity::new("u0_rad_s2", "constant command u₀", "rad/s²");
+/// u₀ that holds the rig level (rad/s²).
+pub(super) const U0_NEEDED_RAD_S2: Quantity =
+    Quantity::new("u0_needed_rad_s2", "u₀ that holds the rig level", "rad/s²");
+/// total thrust (N).
+pub(super) const THRUST_TOTAL_N: Quantity = Quantity::new("thrust_total_n", "total thrust", "N");
 
 /// The rigs (parameter `rig`).
 pub const RIGS: &[&str] = &[
@@ -297,17 +316,12 @@ impl TruthModel for Plant {
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
         vec![
-            SeriesSpec::new("truth.setpoint_deg", "deg", SeriesGroup::Attitude)
-                .labelled("set-point θ_ref"),
-            SeriesSpec::new("truth.accel_deg_s2", "deg/s²", SeriesGroup::Lab)
-                .labelled("angular acceleration θ̈"),
-            SeriesSpec::new("truth.u_v_rad_s2", "rad/s²", SeriesGroup::Lab)
-                .labelled("varying command u_v"),
-            SeriesSpec::new("truth.u0_rad_s2", "rad/s²", SeriesGroup::Lab)
-                .labelled("constant command u₀"),
-            SeriesSpec::new("truth.u0_needed_rad_s2", "rad/s²", SeriesGroup::Lab)
-                .labelled("u₀ that holds the rig level"),
-            SeriesSpec::new("truth.thrust_total_n", "N", SeriesGroup::Lab).labelled("total thrust"),
+            SeriesSpec::of(SeriesKey::truth(&SETPOINT_DEG), SeriesGroup::Attitude),
+            SeriesSpec::of(SeriesKey::truth(&ACCEL_DEG_S2), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&U_V_RAD_S2), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&U0_RAD_S2), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&U0_NEEDED_RAD_S2), SeriesGroup::Lab),
+            SeriesSpec::of(SeriesKey::truth(&THRUST_TOTAL_N), SeriesGroup::Lab),
         ]
     }
 

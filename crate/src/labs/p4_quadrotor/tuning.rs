@@ -14,10 +14,14 @@
 
 use super::keys as roll_keys;
 use crate::analysis::stats;
-use crate::model::{ParamValues, SweepScoring, SweepSpec};
+use crate::model::{ParamValues, SeriesKey, SweepScoring, SweepSpec, q};
 
 /// The series the simulated runs are scored on.
-const SCORED: &[&str] = &["kf.angle_deg", "kf.angle_err_deg", "kf.rate_err_deg_s"];
+const SCORED: &[SeriesKey] = &[
+    SeriesKey::new("kf", &q::ANGLE_DEG),
+    SeriesKey::new("kf", &q::ANGLE_ERR_DEG),
+    SeriesKey::new("kf", &q::RATE_ERR_DEG_S),
+];
 
 /// The scores' names, in the order [`score_run`] returns them.
 pub const SCORE_NAMES: &[&str] = &[
@@ -63,7 +67,10 @@ const LANDSCAPE: SweepScoring = SweepScoring {
 const ON_LOG: SweepScoring = SweepScoring {
     names: &["RMS θ̂ − smoothed θ_acc (°)", "jitter of θ̂ (°)"],
     help: "A log has no truth. The reference is the accelerometer angle low-passed at 1 Hz forwards and then backwards (zero phase): it has no lag but keeps the accelerometer's errors during fast motion, so this is a proxy for the MSE, not the MSE. Jitter: RMS of θ̂'s second differences over √6 (white noise of σ gives σ; a steady motion gives 0).",
-    series: &["kf.angle_deg", "sensors.accel_angle_deg"],
+    series: &[
+        SeriesKey::new("kf", &q::ANGLE_DEG),
+        SeriesKey::sensors(&super::mpu6050::ACCEL_ANGLE_DEG),
+    ],
     score: score_log,
     objectives: &[("RMS against the smoothed reference", &[1.0, 0.0])],
     overlay: None,
@@ -82,7 +89,10 @@ pub const SWEEPS: &[SweepSpec] = &[
         roll_keys::GAMMA,
         GAMMAS,
         8.0,
-        &["kf.angle_err_deg", "kf.rate_err_deg_s"],
+        &[
+            SeriesKey::new("kf", &q::ANGLE_ERR_DEG),
+            SeriesKey::new("kf", &q::RATE_ERR_DEG_S),
+        ],
     )
     .fixed(&[(roll_keys::Q_FROM, 0.0)])
     .seeds(5)
@@ -93,7 +103,7 @@ pub const SWEEPS: &[SweepSpec] = &[
         roll_keys::Q_ANGLE,
         &[1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2],
         8.0,
-        &["kf.angle_err_deg"],
+        &[SeriesKey::new("kf", &q::ANGLE_ERR_DEG)],
     )
     .grid(
         roll_keys::Q_RATE,

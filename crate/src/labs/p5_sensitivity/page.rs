@@ -2,53 +2,77 @@
 //! update, and the paper's output file.
 
 use crate::estimators::{Method, linearised_eigenvalues};
-use crate::model::{Diagram, DiagramPoint, Figure, OutputFile, ParamValues};
+use crate::model::{Diagram, DiagramPoint, Figure, OutputFile, ParamValues, SeriesKey, TIME, q};
 
 use super::params::METHODS;
+use super::truth::ANGLES;
+use crate::estimators::sensitivity;
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(
         "Attitude error (all methods)",
         &[
-            "gn9.err_deg",
-            "lm10.err_deg",
-            "search11.err_deg",
-            "reint.err_deg",
-            "raw.err_deg",
+            SeriesKey::new("gn9", &q::ERR_DEG),
+            SeriesKey::new("lm10", &q::ERR_DEG),
+            SeriesKey::new("search11", &q::ERR_DEG),
+            SeriesKey::new("reint", &q::ERR_DEG),
+            SeriesKey::new("raw", &q::ERR_DEG),
         ],
     )
     .log(),
     Figure::new(
         "Angles of method (9) and the reference",
         &[
-            "gn9.angle_1_rad",
-            "gn9.angle_2_rad",
-            "gn9.angle_3_rad",
-            "truth.angle_1_rad",
-            "truth.angle_2_rad",
-            "truth.angle_3_rad",
+            SeriesKey::new("gn9", &sensitivity::ANGLE_1_RAD),
+            SeriesKey::new("gn9", &sensitivity::ANGLE_2_RAD),
+            SeriesKey::new("gn9", &sensitivity::ANGLE_3_RAD),
+            SeriesKey::truth(&sensitivity::ANGLE_1_RAD),
+            SeriesKey::truth(&sensitivity::ANGLE_2_RAD),
+            SeriesKey::truth(&sensitivity::ANGLE_3_RAD),
         ],
     ),
     Figure::new(
         "Correction p (9)",
-        &["gn9.p_x_deg_s", "gn9.p_y_deg_s", "gn9.p_z_deg_s"],
+        &[
+            SeriesKey::new("gn9", &sensitivity::P_X_DEG_S),
+            SeriesKey::new("gn9", &sensitivity::P_Y_DEG_S),
+            SeriesKey::new("gn9", &sensitivity::P_Z_DEG_S),
+        ],
     ),
     Figure::new(
         "Correction p (variant)",
-        &["reint.p_x_deg_s", "reint.p_y_deg_s", "reint.p_z_deg_s"],
+        &[
+            SeriesKey::new("reint", &sensitivity::P_X_DEG_S),
+            SeriesKey::new("reint", &sensitivity::P_Y_DEG_S),
+            SeriesKey::new("reint", &sensitivity::P_Z_DEG_S),
+        ],
     ),
     Figure::new(
         "Condition number of UᵀQU",
-        &["gn9.cond_utqu", "lm10.cond_utqu", "reint.cond_utqu"],
+        &[
+            SeriesKey::new("gn9", &sensitivity::COND_UTQU),
+            SeriesKey::new("lm10", &sensitivity::COND_UTQU),
+            SeriesKey::new("reint", &sensitivity::COND_UTQU),
+        ],
     )
     .log(),
     Figure::new(
         "Singular values of UᵀQU (9)",
-        &["gn9.sv1", "gn9.sv2", "gn9.sv3"],
+        &[
+            SeriesKey::new("gn9", &sensitivity::SV1),
+            SeriesKey::new("gn9", &sensitivity::SV2),
+            SeriesKey::new("gn9", &sensitivity::SV3),
+        ],
     )
     .log(),
-    Figure::new("Step size s of method (11)", &["search11.step_s"]),
-    Figure::new("References received", &["sensors.reference"]),
+    Figure::new(
+        "Step size s of method (11)",
+        &[SeriesKey::new("search11", &sensitivity::STEP_S)],
+    ),
+    Figure::new(
+        "References received",
+        &[SeriesKey::sensors(&super::sensors::REFERENCE)],
+    ),
 ];
 
 /// The paper's output file: rows of (t, angle₁, angle₂, angle₃) of the chosen method,
@@ -56,16 +80,13 @@ pub(super) const FIGURES: &[Figure] = &[
 pub(super) fn output_file(p: &ParamValues) -> OutputFile {
     let id = METHODS.get(p.index("output_method")).map_or("gn9", |m| m.0);
     OutputFile {
-        columns: vec![
-            "t_s".into(),
-            format!("{id}.angle_1_rad"),
-            format!("{id}.angle_2_rad"),
-            format!("{id}.angle_3_rad"),
-        ],
+        columns: std::iter::once(TIME.to_string())
+            .chain(ANGLES.iter().map(|q| SeriesKey::new(id, q).name()))
+            .collect(),
         headers: ["time", "angle1", "angle2", "angle3"]
             .map(String::from)
             .to_vec(),
-        stop: Some(format!("{id}.within_tol")),
+        stop: Some(SeriesKey::new(id, &sensitivity::WITHIN_TOL).name()),
     }
 }
 

@@ -4,20 +4,23 @@
 //! successive updates, the eigenvalues of its linearised update); the re-integrating
 //! variant's convergence; the gyro-bias case (p → −b); and U against finite differences.
 
+use super::sensors::REFERENCE;
+use super::truth::ANGLES;
 use super::{METHODS, SensitivityLab};
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
+use crate::estimators::sensitivity;
 use crate::estimators::{Method, linearised_eigenvalues, sensitivity_finite_difference_check};
 use crate::math::wrap_pi;
-use crate::model::{Expectation, Lab, Reproduction, Row};
+use crate::model::{Expectation, Lab, Reproduction, Row, SeriesKey};
 
 /// The Δt grid (s).
 const GRID: [f64; 10] = [0.5, 0.8, 1.0, 1.1, 1.15, 1.17, 1.2, 1.25, 1.5, 2.0];
 
 /// First time (s) series `id.within_tol` is 1, NaN if never.
-pub fn first_hit_s(trace: &Trace, id: &str) -> Result<f64, AnalysisError> {
-    let within = trace.series(&format!("{id}.within_tol"))?;
+pub fn first_hit_s(trace: &Trace, id: &'static str) -> Result<f64, AnalysisError> {
+    let within = trace.series(SeriesKey::new(id, &sensitivity::WITHIN_TOL))?;
     Ok(trace
         .t_s()
         .iter()
@@ -26,34 +29,34 @@ pub fn first_hit_s(trace: &Trace, id: &str) -> Result<f64, AnalysisError> {
         .map_or(f64::NAN, |(t, _)| *t))
 }
 
-fn series(id: &str) -> Vec<String> {
-    let mut s: Vec<String> = (1..=3).map(|i| format!("{id}.angle_{i}_rad")).collect();
-    s.push(format!("{id}.within_tol"));
-    s
+/// A method's angles and its within-tolerance flag.
+fn series(id: &'static str) -> impl Iterator<Item = SeriesKey> {
+    ANGLES
+        .iter()
+        .map(move |q| SeriesKey::new(id, q))
+        .chain([SeriesKey::new(id, &sensitivity::WITHIN_TOL)])
 }
 
-fn run(assignments: &[&str], duration_s: f64, extra: &[&str]) -> Result<Trace, AnalysisError> {
-    let mut names: Vec<String> = METHODS.iter().flat_map(|(id, ..)| series(id)).collect();
-    names.extend((1..=3).map(|i| format!("truth.angle_{i}_rad")));
-    names.push("sensors.reference".into());
-    names.extend(extra.iter().map(|s| s.to_string()));
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+fn run(assignments: &[&str], duration_s: f64, extra: &[SeriesKey]) -> Result<Trace, AnalysisError> {
+    let mut keys: Vec<SeriesKey> = METHODS.iter().flat_map(|(id, ..)| series(id)).collect();
+    keys.extend(ANGLES.iter().map(|q| SeriesKey::truth(q)));
+    keys.push(SeriesKey::sensors(&REFERENCE));
+    keys.extend_from_slice(extra);
     let lab: &'static dyn Lab = &SensitivityLab;
-    run_trace(lab, assignments, 1, duration_s, &refs)
+    run_trace(lab, assignments, 1, duration_s, &keys)
 }
 
 /// Largest angle error (rad) of `id` at each reference instant.
-fn errors_at_updates(trace: &Trace, id: &str) -> Result<Vec<f64>, AnalysisError> {
-    let refs = trace.series("sensors.reference")?;
+fn errors_at_updates(trace: &Trace, id: &'static str) -> Result<Vec<f64>, AnalysisError> {
+    let refs = trace.series(SeriesKey::sensors(&REFERENCE))?;
     let mut out = Vec::new();
     for (k, r) in refs.iter().enumerate() {
         if *r < 0.5 {
             continue;
         }
         let mut worst: f64 = 0.0;
-        for i in 1..=3 {
-            let e = trace.series(&format!("{id}.angle_{i}_rad"))?[k]
-                - trace.series(&format!("truth.angle_{i}_rad"))?[k];
+        for q in ANGLES {
+            let e = trace.series(SeriesKey::new(id, q))?[k] - trace.series(SeriesKey::truth(q))?[k];
             let e = wrap_pi(e).abs();
             worst = if e.is_nan() { f64::NAN } else { worst.max(e) };
         }
@@ -217,20 +220,20 @@ fn bias_case(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
         "init_3_rad=0.01",
     ];
     let names = [
-        "reint.p_x_deg_s",
-        "reint.p_y_deg_s",
-        "reint.p_z_deg_s",
-        "lm10.p_x_deg_s",
-        "lm10.p_y_deg_s",
-        "lm10.p_z_deg_s",
+        SeriesKey::new("reint", &sensitivity::P_X_DEG_S),
+        SeriesKey::new("reint", &sensitivity::P_Y_DEG_S),
+        SeriesKey::new("reint", &sensitivity::P_Z_DEG_S),
+        SeriesKey::new("lm10", &sensitivity::P_X_DEG_S),
+        SeriesKey::new("lm10", &sensitivity::P_Y_DEG_S),
+        SeriesKey::new("lm10", &sensitivity::P_Z_DEG_S),
     ];
     let trace = run(&set, 30.0, &names)?;
     let b = nalgebra::Vector3::new(1.0, -1.0, 2.0).normalize() * 2.0;
     for (id, label) in [("reint", "re-integrating variant"), ("lm10", "method (10)")] {
         let p = nalgebra::Vector3::new(
-            trace.last(&format!("{id}.p_x_deg_s"))?,
-            trace.last(&format!("{id}.p_y_deg_s"))?,
-            trace.last(&format!("{id}.p_z_deg_s"))?,
+            trace.last(SeriesKey::new(id, &sensitivity::P_X_DEG_S))?,
+            trace.last(SeriesKey::new(id, &sensitivity::P_Y_DEG_S))?,
+            trace.last(SeriesKey::new(id, &sensitivity::P_Z_DEG_S))?,
         );
         let rel = (p + b).norm() / b.norm();
         let row = Row::check(

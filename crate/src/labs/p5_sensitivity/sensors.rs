@@ -1,10 +1,17 @@
 //! The sensors: a gyro with bias and noise, and a reference attitude every Δt (with its own
 //! noise, and lost during a dropout).
 
-use crate::model::{Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthState};
+use crate::model::{
+    Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    TruthState,
+};
 use crate::sensors::WhiteNoise;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
+
+/// 1 at a step where a reference attitude arrived.
+pub(super) const REFERENCE: Quantity =
+    Quantity::new("reference", "a reference attitude arrived (1 = yes)", "");
 
 /// The gyro and the reference attitudes (every Δt, except during a dropout).
 pub(super) struct Sensors {
@@ -73,10 +80,10 @@ impl SensorModel for Sensors {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        vec![
-            SeriesSpec::new("sensors.reference", "", SeriesGroup::Lab)
-                .labelled("a reference attitude arrived (1 = yes)"),
-        ]
+        vec![SeriesSpec::of(
+            SeriesKey::sensors(&REFERENCE),
+            SeriesGroup::Lab,
+        )]
     }
 
     fn extra_values(&self, out: &mut [f64]) {

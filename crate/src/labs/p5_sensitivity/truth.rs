@@ -1,8 +1,14 @@
 //! The truth: the reference attitude, held still (the paper's experiment) or turned at a
 //! constant or harmonic rate about a fixed axis.
 
-use crate::model::{ParamValues, SeriesGroup, SeriesSpec, TruthModel, TruthState};
+use crate::estimators::sensitivity::{ANGLE_1_RAD, ANGLE_2_RAD, ANGLE_3_RAD};
+use crate::model::{
+    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+};
 use nalgebra::{UnitQuaternion, Vector3};
+
+/// The three angles of the rotation sequence (rad): the truth's and each method's.
+pub(super) const ANGLES: [&Quantity; 3] = [&ANGLE_1_RAD, &ANGLE_2_RAD, &ANGLE_3_RAD];
 
 /// The fixed rate axis of the turning profiles.
 fn rate_axis() -> Vector3<f64> {
@@ -55,11 +61,9 @@ impl TruthModel for Turning {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        (1..=3)
-            .map(|i| {
-                SeriesSpec::new(format!("truth.angle_{i}_rad"), "rad", SeriesGroup::Attitude)
-                    .labelled(format!("angle {i} of the sequence"))
-            })
+        ANGLES
+            .iter()
+            .map(|q| SeriesSpec::of(SeriesKey::truth(q), SeriesGroup::Attitude))
             .collect()
     }
 

@@ -29,6 +29,10 @@ use nalgebra::{
     Complex, Matrix2, Matrix3, Matrix4, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector4,
 };
 
+pub use series::*;
+
+mod series;
+
 /// The update rule.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Method {
@@ -385,23 +389,19 @@ impl Estimator for SensitivityCorrection {
 
     fn extra_quantities(&self) -> &'static [Quantity] {
         const QUANTITIES: &[Quantity] = &[
-            Quantity::new("p_x_deg_s", "rate correction p_x", "deg/s"),
-            Quantity::new("p_y_deg_s", "rate correction p_y", "deg/s"),
-            Quantity::new("p_z_deg_s", "rate correction p_z", "deg/s"),
-            Quantity::new("angle_1_rad", "angle 1 of the sequence", "rad"),
-            Quantity::new("angle_2_rad", "angle 2 of the sequence", "rad"),
-            Quantity::new("angle_3_rad", "angle 3 of the sequence", "rad"),
-            Quantity::new(
-                "within_tol",
-                "within tolerance of the reference (1 = yes)",
-                "",
-            ),
-            Quantity::new("cond_utqu", "condition number of UᵀQU", ""),
-            Quantity::new("sv1", "largest singular value of UᵀQU", ""),
-            Quantity::new("sv2", "middle singular value of UᵀQU", ""),
-            Quantity::new("sv3", "smallest singular value of UᵀQU", ""),
-            Quantity::new("step_s", "step size s of the correction", ""),
-            Quantity::new("norm_lambda", "norm |Λ| of the integrated quaternion", ""),
+            P_X_DEG_S,
+            P_Y_DEG_S,
+            P_Z_DEG_S,
+            ANGLE_1_RAD,
+            ANGLE_2_RAD,
+            ANGLE_3_RAD,
+            WITHIN_TOL,
+            COND_UTQU,
+            SV1,
+            SV2,
+            SV3,
+            STEP_S,
+            NORM_LAMBDA,
         ];
         QUANTITIES
     }
