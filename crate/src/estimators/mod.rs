@@ -19,10 +19,14 @@ pub mod wz_kalman;
 
 pub use accel_wz::AccelWz;
 pub use blended_wz::BlendedWz;
-pub use mekf::{Mekf, MekfConfig, MekfTuning, Retune, SensorSet, StateSet, full_step_flops};
+pub use mekf::{
+    Mekf, MekfConfig, MekfTuning, Onboard, Retune, SensorSet, StateSet, full_step_flops,
+};
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 pub use quaternion_integration::QuaternionIntegration;
-pub use roll_kf::{ComplementaryRoll, RollInput, RollKf, RollTuning, accel_angle_rad};
+pub use roll_kf::{
+    ComplementaryRoll, ControlInput, RollInput, RollKf, RollTuning, accel_angle_rad,
+};
 pub use sensitivity::{
     Method, SensitivityCorrection, SensitivitySettings, UpdateInfo, linearised_eigenvalues,
     sensitivity_finite_difference_check,

@@ -21,6 +21,22 @@ use crate::model::{
 };
 use nalgebra::{SMatrix, SVector, Vector3};
 
+/// The command of paper 4's roll controller as angular acceleration, split as the paper's
+/// PD/PI structure splits it: a zero-mean varying part u_v and the constant part u₀ its
+/// integral has absorbed (the hover asymmetry).
+/// A lab whose controller is part of the plant passes it in
+/// [`crate::model::Measurements::lab`]; a filter that knows the command reads it there.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ControlInput {
+    /// u_v (rad/s²).
+    pub varying_rad_s2: f64,
+    /// u₀, the integral part (rad/s²).
+    pub constant_rad_s2: f64,
+    /// The constant the plant really needs to hold its angle (rad/s²): what a filter that
+    /// knows the asymmetry knows.
+    pub needed_rad_s2: f64,
+}
+
 // The series this estimator records besides the catalogue's (figures name them).
 /// innovation of the accelerometer angle θ_acc (rad).
 pub const INNOV_ANGLE_RAD: Quantity = Quantity::new(
@@ -146,7 +162,9 @@ impl<const N: usize> RollKf<N> {
     }
 
     fn u(&self, m: &Measurements) -> f64 {
-        let Some(c) = m.control else { return 0.0 };
+        let Some(c) = m.lab.get::<ControlInput>() else {
+            return 0.0;
+        };
         match self.input {
             RollInput::PaperSwitch if self.tuning.input_on => c.varying_rad_s2,
             RollInput::PaperSwitch => 0.0,

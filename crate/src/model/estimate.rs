@@ -1,12 +1,13 @@
 //! What sensors deliver and what estimators publish.
 
+use super::data::LabData;
 use super::params::ParamValues;
 use super::series::Quantity;
 use crate::math::WzAttitude;
 use nalgebra::{UnitQuaternion, Vector3};
 
 /// What the sensors delivered at one step. Fields a lab's sensors don't have stay `None`.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Measurements {
     /// Time of the sample (s).
     pub t_s: f64,
@@ -23,44 +24,10 @@ pub struct Measurements {
     /// Star-tracker attitude, relative to the reference frame of the lab (paper 2: the
     /// orbital frame).
     pub star_q_ref_from_body: Option<UnitQuaternion<f64>>,
-    /// What a spacecraft's computer knows besides its sensors (orbit, models, wheels).
-    pub onboard: Option<Onboard>,
-    /// The controller's command, which a flight computer knows (paper 4).
-    pub control: Option<ControlInput>,
-}
-
-/// The command of paper 4's roll controller as angular acceleration, split as the paper's
-/// PD/PI structure splits it: a zero-mean varying part u_v and the constant part u₀ its
-/// integral has absorbed (the hover asymmetry).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ControlInput {
-    /// u_v (rad/s²).
-    pub varying_rad_s2: f64,
-    /// u₀, the integral part (rad/s²).
-    pub constant_rad_s2: f64,
-    /// The constant the plant really needs to hold its angle (rad/s²): what a filter that
-    /// knows the asymmetry knows.
-    pub needed_rad_s2: f64,
-}
-
-/// What the onboard computer of paper 2's satellite knows each step besides its attitude
-/// sensors: from the orbit (GPS or a TLE) and its models, the reference directions in the
-/// orbital frame, and from the wheels the momentum and the commanded torque. Computed once
-/// per step and shared by every filter.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Onboard {
-    /// The orbital frame's angular velocity in orbital axes (rad/s).
-    pub frame_rate_orbit_rad_s: Vector3<f64>,
-    /// 3μ/r³ (1/s²) of the gravity-gradient torque.
-    pub gravity_gradient_coeff: f64,
-    /// The onboard field model's field in orbital axes (nT).
-    pub mag_ref_orbit_nt: Vector3<f64>,
-    /// The sun direction in orbital axes (unit), from the onboard ephemeris.
-    pub sun_ref_orbit: Vector3<f64>,
-    /// Wheel angular momentum in body axes (N·m·s).
-    pub wheel_momentum_body: Vector3<f64>,
-    /// Its rate ḣ, the torque the wheels take from the body (N·m).
-    pub wheel_torque_body: Vector3<f64>,
+    /// What the lab's flight computer knows besides its sensors, typed by the estimator that
+    /// reads it (paper 2's orbit, models and wheels: `estimators::Onboard`; paper 4's
+    /// controller command: `estimators::ControlInput`).
+    pub lab: LabData,
 }
 
 /// Health of an estimator, shown in the UI and recorded.

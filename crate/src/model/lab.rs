@@ -1,6 +1,7 @@
 //! The lab contract: truth, sensors, estimators, parameters, figures and anchors.
 
-use super::estimate::{ControlInput, Estimator, Measurements};
+use super::data::LabData;
+use super::estimate::{Estimator, Measurements};
 use super::log::LogFormat;
 use super::page::{BodyShape, DEFAULT_VIEWS, Diagram, Figure, Outage, SceneExtras, ViewKind};
 use super::params::{ParamSpec, ParamValues};
@@ -11,7 +12,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 
 /// The true motion at one instant.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TruthState {
     /// Simulation time (s).
     pub t_s: f64,
@@ -21,12 +22,9 @@ pub struct TruthState {
     pub rate_body_rad_s: Vector3<f64>,
     /// True angle of a single-axis lab (rad).
     pub angle_rad: Option<f64>,
-    /// Reaction-wheel momentum in body axes (N·m·s), for a spacecraft with wheels.
-    pub wheel_momentum_body: Option<Vector3<f64>>,
-    /// Its rate ḣ (N·m).
-    pub wheel_torque_body: Option<Vector3<f64>>,
-    /// The command of a controller that is part of the plant (paper 4).
-    pub control: Option<ControlInput>,
+    /// The lab's own state beyond these, for its sensors (paper 2's wheels, paper 4's
+    /// controller command), typed by the lab.
+    pub lab: LabData,
 }
 
 impl TruthState {
@@ -41,9 +39,7 @@ impl TruthState {
             q_ref_from_body,
             rate_body_rad_s,
             angle_rad: None,
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: None,
+            lab: LabData::default(),
         }
     }
 }

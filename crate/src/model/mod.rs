@@ -6,6 +6,7 @@
 //! math → model → dynamics, sensors, estimators → record, sim → analysis → labs → state, bin
 //! ```
 
+mod data;
 mod estimate;
 mod key;
 mod lab;
@@ -17,9 +18,10 @@ mod report;
 mod series;
 mod study;
 
+pub use data::LabData;
 pub use estimate::{
-    Attitude, ControlInput, Covariance, Estimate, Estimator, EstimatorStatus, Measurements,
-    Onboard, Outputs, STATUS_OK, StateInfo, StateKind, Tuner,
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Outputs, STATUS_OK,
+    StateInfo, StateKind, Tuner,
 };
 pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};

@@ -2,7 +2,8 @@
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
 use crate::model::{
-    Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthModel, TruthState,
+    LabData, Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthModel,
+    TruthState,
 };
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
@@ -52,9 +53,7 @@ impl TruthModel for LogTruth {
             q_ref_from_body: UnitQuaternion::identity(),
             rate_body_rad_s: Vector3::new(0.0, 0.0, rate),
             angle_rad: Some(f64::NAN),
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: None,
+            lab: LabData::default(),
         }
     }
 }

@@ -24,10 +24,11 @@
 use super::kf::KalmanState;
 use crate::math::symmetrize;
 use crate::model::{
-    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Onboard, ParamValues,
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues,
     Quantity, StateInfo,
 };
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
+pub use onboard::Onboard;
 use states::states_of;
 pub use states::{
     ATT_X, ATT_Y, ATT_Z, GBIAS_X, GBIAS_Y, GBIAS_Z, MBIAS_X, MBIAS_Y, MBIAS_Z, RATE_X, RATE_Y,
@@ -58,6 +59,7 @@ pub const D_Y_S2: Quantity = Quantity::new("d_y_s2", "disturbance estimate d_y",
 /// disturbance estimate d_z (1/s²).
 pub const D_Z_S2: Quantity = Quantity::new("d_z_s2", "disturbance estimate d_z", "1/s²");
 
+mod onboard;
 mod predict;
 mod states;
 #[cfg(test)]
@@ -338,7 +340,9 @@ impl<const N: usize> Estimator for Mekf<N> {
         if matches!(self.status, EstimatorStatus::Diverged(_)) {
             return;
         }
-        let Some(ob) = m.onboard else { return };
+        let Some(&ob) = m.lab.get::<Onboard>() else {
+            return;
+        };
         if let Some(g) = m.gyro_body_rad_s {
             self.last_gyro = Some(g);
         }

@@ -106,7 +106,7 @@ fn a_degenerate_geometry_is_said_not_hidden() {
     let m = Measurements {
         mag_body_nt: Some(f.q.inverse_transform_vector(&ob.mag_ref_orbit_nt)),
         sun_body: Some(f.q.inverse_transform_vector(&ob.sun_ref_orbit)),
-        onboard: Some(ob),
+        lab: crate::model::LabData::new(ob),
         ..Measurements::default()
     };
     f.step(&m, 0.1);

@@ -3,7 +3,7 @@
 use crate::dynamics::{RigidBody, RigidBodyState};
 use crate::math::EulerYpr;
 use crate::model::{
-    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use nalgebra::Vector3;
 
@@ -61,9 +61,7 @@ impl TruthModel for Tumble {
             q_ref_from_body: s.q_ref_from_body,
             rate_body_rad_s: s.rate_body_rad_s,
             angle_rad: None,
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: None,
+            lab: LabData::default(),
         }
     }
 

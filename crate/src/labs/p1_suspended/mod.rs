@@ -11,9 +11,9 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, Preset, Quantity,
-    ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
-    SweepSpec, TruthModel, TruthState, ViewKind, q,
+    Estimator, Figure, Lab, LabData, LabRun, Measurements, ParamSpec, ParamValues, Preset,
+    Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
+    SeriesSpec, SweepSpec, TruthModel, TruthState, ViewKind, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
@@ -432,9 +432,7 @@ impl TruthModel for Suspended {
             q_ref_from_body: q,
             rate_body_rad_s: Vector3::new(theta_dot, 0.0, self.pendulum.state[1]),
             angle_rad: Some(phi),
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: None,
+            lab: LabData::default(),
         }
     }
 

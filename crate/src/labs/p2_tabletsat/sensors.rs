@@ -13,13 +13,15 @@
 //! orbit's rate and gravity-gradient coefficient, the wheels' momentum and torque — come
 //! with every step in [`Onboard`].
 
+use super::truth::Wheels;
 use super::truth::orbit_of;
 use crate::dynamics::{
     CircularOrbit, EARTH_RADIUS_M, Epoch, FieldModel, ecef_from_eci, eci_from_ecef, in_shadow,
     sun_direction_eci,
 };
+use crate::estimators::Onboard;
 use crate::model::{
-    Measurements, Onboard, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
+    LabData, Measurements, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
     SensorModel, SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::sensors::{RandomWalk, WhiteNoise};
@@ -425,13 +427,14 @@ impl SensorModel for Sensors {
             &b_true_orbit,
             eclipse,
         );
-        m.onboard = Some(Onboard {
+        let wheels = truth.lab.get::<Wheels>().copied().unwrap_or_default();
+        m.lab = LabData::new(Onboard {
             frame_rate_orbit_rad_s: self.orbit.frame_rate_orbit_rad_s(),
             gravity_gradient_coeff: self.orbit.gravity_gradient_coeff(),
             mag_ref_orbit_nt: mag_ref,
             sun_ref_orbit: sun_orbit,
-            wheel_momentum_body: truth.wheel_momentum_body.unwrap_or_default(),
-            wheel_torque_body: truth.wheel_torque_body.unwrap_or_default(),
+            wheel_momentum_body: wheels.momentum_body,
+            wheel_torque_body: wheels.torque_body,
         });
         m
     }

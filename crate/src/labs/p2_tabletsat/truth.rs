@@ -4,11 +4,21 @@
 
 use crate::dynamics::{CircularOrbit, Epoch};
 use crate::model::{
-    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
+
+/// The reaction wheels' state the truth hands the sensors (the onboard computer reads the
+/// wheels' tachometers and its own torque command).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct Wheels {
+    /// Angular momentum in body axes (N·m·s).
+    pub(super) momentum_body: Vector3<f64>,
+    /// Its rate ḣ, the torque the wheels take from the body (N·m).
+    pub(super) torque_body: Vector3<f64>,
+}
 
 /// The wheels' angular momentum in body axes (N·m·s), truth series.
 pub(super) const WHEEL_H: [Quantity; 3] = [
@@ -189,9 +199,10 @@ impl TruthModel for Spacecraft {
 
     fn state(&self) -> TruthState {
         TruthState {
-            wheel_momentum_body: Some(self.h),
-            wheel_torque_body: Some(self.h_dot),
-            control: None,
+            lab: LabData::new(Wheels {
+                momentum_body: self.h,
+                torque_body: self.h_dot,
+            }),
             ..TruthState::new(self.t_s, self.q, self.w)
         }
     }

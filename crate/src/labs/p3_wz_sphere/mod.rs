@@ -18,8 +18,8 @@ use crate::estimators::{
 use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, Measurements, ParamSpec, ParamValues, ReproError, Reproduction,
-    SensorModel, SeriesKey, TimingItem, TruthModel, TruthState, q,
+    Estimator, Figure, Lab, LabData, LabRun, Measurements, ParamSpec, ParamValues, ReproError,
+    Reproduction, SensorModel, SeriesKey, TimingItem, TruthModel, TruthState, q,
 };
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
@@ -383,9 +383,7 @@ impl P3Truth {
                 q_ref_from_body: nalgebra::UnitQuaternion::identity(),
                 rate_body_rad_s: Vector3::zeros(),
                 angle_rad: None,
-                wheel_momentum_body: None,
-                wheel_torque_body: None,
-                control: None,
+                lab: LabData::default(),
             },
         };
         truth.state = truth.compute_state();
@@ -402,9 +400,7 @@ impl P3Truth {
             q_ref_from_body: q,
             rate_body_rad_s: w,
             angle_rad: None,
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: None,
+            lab: LabData::default(),
         }
     }
 }
@@ -421,7 +417,7 @@ impl TruthModel for P3Truth {
     }
 
     fn state(&self) -> TruthState {
-        self.state
+        self.state.clone()
     }
 }
 

@@ -138,7 +138,8 @@ impl SensorModel for Mpu6050 {
             t_s: truth.t_s,
             accel_body_g: Some(accel),
             gyro_axis_rad_s: Some(gyro_deg_s.to_radians()),
-            control: truth.control,
+            // The flight computer knows its controller's command.
+            lab: truth.lab.clone(),
             ..Measurements::default()
         }
     }

@@ -19,8 +19,9 @@
 //! * Set-point: a square wave between 0 and the step size; an optional gust, an angular
 //!   acceleration pulse of 0.1 s.
 
+use crate::estimators::ControlInput;
 use crate::model::{
-    ControlInput, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -308,9 +309,7 @@ impl TruthModel for Plant {
             q_ref_from_body: UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.theta_rad),
             rate_body_rad_s: Vector3::new(0.0, 0.0, self.omega_rad_s),
             angle_rad: Some(self.theta_rad),
-            wheel_momentum_body: None,
-            wheel_torque_body: None,
-            control: Some(self.control),
+            lab: LabData::new(self.control),
         }
     }
 
