@@ -240,8 +240,10 @@ impl AttLabApp {
         let lab = self.state.sim().lab();
         let what = match target {
             // A lab with a diagram of its own draws it where the w plane would be.
-            PngTarget::View(k) => match lab.views().get(k) {
-                Some(ViewKind::WPlane) if !lab.diagrams(self.state.sim().params()).is_empty() => {
+            PngTarget::View(k) => match lab.page().views.get(k) {
+                Some(ViewKind::WPlane)
+                    if !lab.page().diagrams(self.state.sim().params()).is_empty() =>
+                {
                     "diagram".to_string()
                 }
                 Some(v) => v.slug().to_string(),

@@ -22,7 +22,7 @@ const PAD: Color32 = Color32::from_rgb(27, 27, 27);
 /// Where each part of the central area was drawn this frame, in points.
 #[derive(Clone, Debug, Default)]
 pub struct Regions {
-    /// The lab's views drawn this frame: (index in `Lab::views()`, rect).
+    /// The lab's views drawn this frame: (index in `Page::views`, rect).
     pub views: Vec<(usize, Rect)>,
     /// The plot tab row and the plot.
     pub plots: Option<Rect>,

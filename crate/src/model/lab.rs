@@ -2,12 +2,11 @@
 
 use super::data::LabData;
 use super::estimate::{Estimator, Measurements};
-use super::log::LogFormat;
-use super::page::{BodyShape, DEFAULT_VIEWS, Diagram, Figure, Outage, SceneExtras, ViewKind};
+use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
 use super::series::SeriesSpec;
-use super::study::{ExampleLog, OutputFile, SweepSpec, TimingItem};
+use super::study::{OutputFile, SweepSpec, TimingItem};
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -136,54 +135,57 @@ pub struct Preset {
     pub values: &'static [(&'static str, f64)],
 }
 
-/// A lab: truth, sensors, estimators, parameters and the paper's anchors. Registered once in
+/// What a lab is, as data: its name, the paper, its parameters and presets. Shown by the
+/// menu, the CLI and the help; the URL and the CLI name it by `id`.
+#[derive(Clone, Copy, Debug)]
+pub struct LabSpec {
+    /// Stable id (`free-rotation`), used by the CLI and the URL.
+    pub id: &'static str,
+    /// Menu title.
+    pub title: &'static str,
+    /// The paper it reproduces (or "foundation").
+    pub paper: &'static str,
+    /// A paragraph for the explanation panel: what happens and what each slider does.
+    pub summary: &'static str,
+    /// Parameters (sliders).
+    pub params: &'static [ParamSpec],
+    /// Named parameter sets (instruments, scenarios).
+    pub presets: &'static [Preset],
+    /// Default run length for `reproduce` and the CLI (s).
+    pub default_duration_s: f64,
+}
+
+/// A lab's simulation: its data, its step and a fresh run, with what the page shows of it
+/// and, optionally, the study that checks it against the paper. Registered once in
 /// `labs::all()`; the UI, the CLI and the tests iterate that list.
 pub trait Lab: Sync {
-    /// Stable id (`free-rotation`), used by the CLI and the URL.
-    fn id(&self) -> &'static str;
-    /// Menu title.
-    fn title(&self) -> &'static str;
-    /// The paper it reproduces (or "foundation").
-    fn paper(&self) -> &'static str;
-    /// A paragraph for the explanation panel: what happens and what each slider does.
-    fn summary(&self) -> &'static str;
-    /// Parameters (sliders).
-    fn params(&self) -> &'static [ParamSpec];
+    /// What the lab is.
+    fn spec(&self) -> &'static LabSpec;
     /// Simulation step for these parameters (s).
     fn dt_s(&self, params: &ParamValues) -> f64;
     /// A fresh run. Initial-condition randomness comes from `rng`.
     fn build(&self, params: &ParamValues, rng: &mut ChaCha8Rng) -> LabRun;
-    /// Default run length for `reproduce` and the CLI (s).
-    fn default_duration_s(&self) -> f64;
+    /// What the page shows (views, body, figures, outages, diagrams, log formats), as data.
+    fn page(&self) -> &'static Page {
+        &Page::DEFAULT
+    }
+    /// The reproduction of the paper, the sweeps and the timings, if the lab has them.
+    fn study(&self) -> Option<&dyn Study> {
+        None
+    }
+    /// A live table of each estimator's accuracy beside the paper's, if the paper has one.
+    fn accuracy_table(&self) -> Option<AccuracyTable> {
+        None
+    }
+}
+
+/// What checks a lab against its paper: the reproduction, the sweeps, the timings and the
+/// paper's own output file.
+pub trait Study: Sync {
     /// Runs the lab's anchor scenarios and compares with the paper.
     fn reproduce(&self) -> Result<Reproduction, ReproError>;
-    /// The paper's figures as plot tabs.
-    fn figures(&self) -> &'static [Figure] {
-        &[]
-    }
-    /// Outages the plots shade (every plot, every tab).
-    fn outages(&self) -> &'static [Outage] {
-        &[]
-    }
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
     fn sweeps(&self) -> &'static [SweepSpec] {
-        &[]
-    }
-    /// True when the body hangs on a string (the 3D view draws it).
-    fn suspended(&self) -> bool {
-        false
-    }
-    /// The kind of recorded log the lab's estimators can run on instead of simulated
-    /// sensors (its laboratory mode), if any.
-    fn log_format(&self) -> Option<&'static LogFormat> {
-        None
-    }
-    /// A log the lab ships for its laboratory mode, if it has one.
-    fn example_log(&self) -> Option<ExampleLog> {
-        None
-    }
-    /// Named parameter sets (instruments, scenarios).
-    fn presets(&self) -> &'static [Preset] {
         &[]
     }
     /// Work whose cost the lab compares (timed by the CLI, never by tests).
@@ -194,20 +196,58 @@ pub trait Lab: Sync {
     fn output_file(&self, _params: &ParamValues) -> Option<OutputFile> {
         None
     }
-    /// The views of the page's top row, left to right.
-    fn views(&self) -> &'static [ViewKind] {
-        DEFAULT_VIEWS
+}
+
+/// The lab's data and its study's offers, read through any lab.
+impl dyn Lab + '_ {
+    /// [`LabSpec::id`].
+    pub fn id(&self) -> &'static str {
+        self.spec().id
     }
-    /// Diagrams that explain the current parameters (drawn beside the plots).
-    fn diagrams(&self, _params: &ParamValues) -> Vec<Diagram> {
-        Vec::new()
+    /// [`LabSpec::title`].
+    pub fn title(&self) -> &'static str {
+        self.spec().title
     }
-    /// The body the 3D view draws.
-    fn body_shape(&self) -> BodyShape {
-        BodyShape::Box
+    /// [`LabSpec::paper`].
+    pub fn paper(&self) -> &'static str {
+        self.spec().paper
     }
-    /// A live table of each estimator's accuracy beside the paper's, if the paper has one.
-    fn accuracy_table(&self) -> Option<AccuracyTable> {
-        None
+    /// [`LabSpec::summary`].
+    pub fn summary(&self) -> &'static str {
+        self.spec().summary
+    }
+    /// [`LabSpec::params`].
+    pub fn params(&self) -> &'static [ParamSpec] {
+        self.spec().params
+    }
+    /// [`LabSpec::presets`].
+    pub fn presets(&self) -> &'static [Preset] {
+        self.spec().presets
+    }
+    /// [`LabSpec::default_duration_s`].
+    pub fn default_duration_s(&self) -> f64 {
+        self.spec().default_duration_s
+    }
+    /// The study's reproduction; an error for a lab without a study.
+    pub fn reproduce(&self) -> Result<Reproduction, ReproError> {
+        match self.study() {
+            Some(s) => s.reproduce(),
+            None => Err(ReproError(format!(
+                "{} has no study of its paper",
+                self.id()
+            ))),
+        }
+    }
+    /// The study's sweeps (none without a study).
+    pub fn sweeps(&self) -> &'static [SweepSpec] {
+        self.study().map_or(&[], |s| s.sweeps())
+    }
+    /// The study's timings (none without a study).
+    pub fn timing_items(&self) -> Vec<TimingItem> {
+        self.study().map_or_else(Vec::new, |s| s.timing_items())
+    }
+    /// The paper's output file for `params`, if the study defines one.
+    pub fn output_file(&self, params: &ParamValues) -> Option<OutputFile> {
+        self.study()?.output_file(params)
     }
 }

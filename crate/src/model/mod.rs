@@ -24,10 +24,12 @@ pub use estimate::{
     StateInfo, StateKind, Tuner,
 };
 pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
-pub use lab::{AccuracyTable, Lab, LabRun, Preset, SensorModel, TruthModel, TruthState};
+pub use lab::{
+    AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
+};
 pub use log::{LogFormat, LogLineError, RateLog};
 pub use page::{
-    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage,
+    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,
     SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};

@@ -4,6 +4,9 @@
 //! to simulate.
 
 use super::key::SeriesKey;
+use super::log::LogFormat;
+use super::params::ParamValues;
+use super::study::ExampleLog;
 use nalgebra::Vector3;
 
 /// A reference direction drawn from the body in the 3D view.
@@ -147,4 +150,49 @@ pub struct DiagramPoint {
     /// Id of the estimator the point belongs to (it takes that estimator's colour and hides
     /// with it), if any.
     pub source: Option<&'static str>,
+}
+
+/// What the page shows of a lab, as data: the views of the top row, the body the 3D view
+/// draws, the paper's figures as plot tabs, the outages they shade, the diagrams beside
+/// them, and the recorded logs its estimators can replay. Nothing in it changes the
+/// simulation: the loop reads only the figures (their series are recorded by default) and
+/// whether the body hangs on a string (then it has no sphere to record).
+#[derive(Clone, Copy, Debug)]
+pub struct Page {
+    /// The views of the top row, left to right.
+    pub views: &'static [ViewKind],
+    /// The body the 3D view draws.
+    pub body: BodyShape,
+    /// True when the body hangs on a string (the 3D view draws it).
+    pub suspended: bool,
+    /// The paper's figures as plot tabs.
+    pub figures: &'static [Figure],
+    /// Outages the plots shade (every plot, every tab).
+    pub outages: &'static [Outage],
+    /// Diagrams that explain the current parameters, if the lab draws any.
+    pub diagrams: Option<fn(&ParamValues) -> Vec<Diagram>>,
+    /// The kind of recorded log the lab's estimators can run on instead of simulated
+    /// sensors (its laboratory mode), if any.
+    pub log_format: Option<&'static LogFormat>,
+    /// A log the lab ships for its laboratory mode, if it has one.
+    pub example_log: Option<ExampleLog>,
+}
+
+impl Page {
+    /// A three-axis body in a box with the default views and nothing else.
+    pub const DEFAULT: Page = Page {
+        views: DEFAULT_VIEWS,
+        body: BodyShape::Box,
+        suspended: false,
+        figures: &[],
+        outages: &[],
+        diagrams: None,
+        log_format: None,
+        example_log: None,
+    };
+
+    /// The diagrams for `params` (none if the lab draws none).
+    pub fn diagrams(&self, params: &ParamValues) -> Vec<Diagram> {
+        self.diagrams.map_or_else(Vec::new, |d| d(params))
+    }
 }

@@ -77,7 +77,7 @@ impl SimOptions {
 
 /// The tab a lab opens on: its first figure, or the errors when it has none.
 pub fn default_tab(lab: &dyn Lab) -> PlotTab {
-    if lab.figures().is_empty() {
+    if lab.page().figures.is_empty() {
         PlotTab::Group(SeriesGroup::Error)
     } else {
         PlotTab::Figure(0)
@@ -88,7 +88,8 @@ pub fn default_tab(lab: &dyn Lab) -> PlotTab {
 /// draw, and the sphere's where the lab has one).
 fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout, UnknownSeries> {
     let figure_series: Vec<SeriesKey> = lab
-        .figures()
+        .page()
+        .figures
         .iter()
         .flat_map(|f| f.series.iter().copied())
         .collect();
@@ -99,7 +100,7 @@ fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout
         &run.estimators,
         &options.selection,
         &figure_series,
-        !lab.suspended() && run.truth.state().angle_rad.is_none(),
+        !lab.page().suspended && run.truth.state().angle_rad.is_none(),
     )
 }
 

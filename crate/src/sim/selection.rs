@@ -30,7 +30,7 @@ impl Selection {
     /// (u, v) of every source where the lab has them (the sphere and the w plane draw them),
     /// and the outages the plots shade. `available` is every series the lab has.
     pub fn for_tab(lab: &dyn Lab, available: &[SeriesSpec], tab: PlotTab) -> Self {
-        let figures = lab.figures();
+        let figures = lab.page().figures;
         let mut names: Vec<String> = match tab {
             PlotTab::Figure(i) => figures
                 .get(i)
@@ -50,7 +50,8 @@ impl Selection {
         );
         // Outages are shaded on every tab.
         names.extend(
-            lab.outages()
+            lab.page()
+                .outages
                 .iter()
                 .filter(|o| available.iter().any(|s| o.series.is(&s.name)))
                 .map(|o| o.series.name()),

@@ -58,7 +58,8 @@ fn ids_are_unique_and_params_presets_and_figures_are_well_formed() {
         }
         // Every series a figure, sweep, sweep scoring or outage names exists.
         let mut drawn: Vec<SeriesKey> = lab
-            .figures()
+            .page()
+            .figures
             .iter()
             .flat_map(|f| f.series.iter().copied())
             .collect();
@@ -68,7 +69,7 @@ fn ids_are_unique_and_params_presets_and_figures_are_well_formed() {
                 drawn.extend_from_slice(scoring.series);
             }
         }
-        drawn.extend(lab.outages().iter().map(|o| o.series));
+        drawn.extend(lab.page().outages.iter().map(|o| o.series));
         let names = attlab::model::names(&drawn);
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
         let p = ParamValues::defaults(lab.params());
@@ -411,7 +412,7 @@ fn diagram_points_name_estimators_the_lab_runs() {
         let params = ParamValues::defaults(lab.params());
         let sim = Simulation::new(*lab, params.clone(), 1);
         let ids: Vec<&str> = sim.estimators().iter().map(|e| e.id()).collect();
-        for d in lab.diagrams(&params) {
+        for d in lab.page().diagrams(&params) {
             for p in &d.points {
                 if let Some(id) = p.source {
                     assert!(

@@ -22,7 +22,7 @@ pub fn central(
 ) {
     egui::CentralPanel::default().show(ui, |ui| {
         let full = ui.available_rect_before_wrap();
-        let kinds = app.sim().lab().views();
+        let kinds = app.sim().lab().page().views;
         match app.view().focus {
             Focus::View(k) if k < kinds.len() => {
                 draw_view(ui, app, view, kinds[k], full, gpu_ready);
@@ -84,8 +84,8 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
     plots::show(
         ui,
         app.sim().recorder(),
-        app.sim().lab().figures(),
-        app.sim().lab().outages(),
+        app.sim().lab().page().figures,
+        app.sim().lab().page().outages,
         &app.view().plots,
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,
@@ -122,7 +122,7 @@ fn draw_view(
         }
         ViewKind::WPlane => {
             // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
-            let diagrams = app.sim().lab().diagrams(app.sim().params());
+            let diagrams = app.sim().lab().page().diagrams(app.sim().params());
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
@@ -217,7 +217,7 @@ fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 /// The tab row and the options of the selected tab.
 fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let figures = app.sim().lab().figures();
+    let figures = app.sim().lab().page().figures;
     let current = app.view().plots.tab;
     ui.horizontal_wrapped(|ui| {
         for (i, f) in figures.iter().enumerate() {
@@ -254,7 +254,7 @@ fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 }
             }
         }
-        if !app.sim().lab().outages().is_empty() {
+        if !app.sim().lab().page().outages.is_empty() {
             let mut on = app.view().plots.show_outages;
             if ui
                 .checkbox(&mut on, "shade outages")
@@ -290,8 +290,8 @@ fn draw_body(
     let scene = body3d::Scene {
         truth,
         ghost,
-        suspended: app.sim().lab().suspended(),
-        shape: app.sim().lab().body_shape(),
+        suspended: app.sim().lab().page().suspended,
+        shape: app.sim().lab().page().body,
         vectors: &extras.vectors,
         ghost_axis: app
             .sim()

@@ -51,7 +51,7 @@ pub fn shortcuts(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command
 
 /// Every tab in the order the tab row shows them: the lab's figures, then the groups.
 pub fn tabs(app: &AppState) -> Vec<PlotTab> {
-    let figures = (0..app.sim().lab().figures().len()).map(PlotTab::Figure);
+    let figures = (0..app.sim().lab().page().figures.len()).map(PlotTab::Figure);
     let groups = plots::groups(app.sim().available_specs())
         .into_iter()
         .map(PlotTab::Group);

@@ -107,7 +107,7 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
 /// format's parameter specs, drawn like the lab's own), the file, the lab's example log,
 /// and the way back to the simulation.
 pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let Some(format) = app.sim().lab().log_format() else {
+    let Some(format) = app.sim().lab().page().log_format else {
         return;
     };
     egui::CollapsingHeader::new(format.title)
@@ -126,7 +126,7 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
                 if ui.button(format.load_label).clicked() {
                     commands.push(Command::from(IoCommand::LoadLog));
                 }
-                if let Some(example) = app.sim().lab().example_log()
+                if let Some(example) = app.sim().lab().page().example_log
                     && ui
                         .button("Replay the example log")
                         .on_hover_text(example.name)

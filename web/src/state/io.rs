@@ -78,7 +78,7 @@ impl AppState {
                 self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
-            IoCommand::LoadExampleLog => match self.sim.lab().example_log() {
+            IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {
                 Some(log) => self.start_replay(log.name.into(), log.text),
                 None => self.error("this lab ships no example log"),
             },
@@ -109,7 +109,7 @@ impl AppState {
     /// Sets unit choice `key` of the lab's log format (a value out of its range is a
     /// message, the choice stays).
     fn set_log_unit(&mut self, key: &'static str, value: f64) {
-        let Some(format) = self.sim.lab().log_format() else {
+        let Some(format) = self.sim.lab().page().log_format else {
             return self.error("this lab replays no logs");
         };
         let mut units = self.io.units_for(format);
@@ -123,7 +123,7 @@ impl AppState {
 
     /// Parses `text` as the lab's kind of log and replays it.
     fn start_replay(&mut self, name: String, text: &str) {
-        let Some(format) = self.sim.lab().log_format() else {
+        let Some(format) = self.sim.lab().page().log_format else {
             return self.error(format!("{name}: this lab replays no logs"));
         };
         let log = (format.parse)(text, &self.io.units_for(format));
@@ -199,8 +199,8 @@ impl AppState {
                 .map(|s| s.header())
         };
         let (title, columns, log) = match self.view.plots.tab {
-            PlotTab::Figure(f) if f < lab.figures().len() => {
-                let fig = &lab.figures()[f];
+            PlotTab::Figure(f) if f < lab.page().figures.len() => {
+                let fig = &lab.page().figures[f];
                 let cols = fig
                     .series
                     .iter()

@@ -109,7 +109,7 @@ pub enum Effect {
 /// What a PNG export shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PngTarget {
-    /// The lab's view with this index (in `Lab::views()`).
+    /// The lab's view with this index (in `Page::views`).
     View(usize),
     /// Every plot tab, one below the other.
     Plots,

@@ -94,7 +94,9 @@ impl AppState {
             ViewCommand::SetLogCovariance(on) => view.plots.log_covariance = on,
             ViewCommand::SetShowBands(on) => view.plots.show_bands = on,
             ViewCommand::SetShowOutages(on) => view.plots.show_outages = on,
-            ViewCommand::CycleFocus => view.focus = view.focus.next(self.sim.lab().views().len()),
+            ViewCommand::CycleFocus => {
+                view.focus = view.focus.next(self.sim.lab().page().views.len())
+            }
             ViewCommand::ToggleSource(i) => match view.hidden.iter().position(|h| *h == i) {
                 Some(k) => {
                     view.hidden.remove(k);

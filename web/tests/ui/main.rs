@@ -238,7 +238,7 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
     h.key_press(egui::Key::ArrowLeft);
     h.run();
     assert_eq!(h.state().state.view().plots.tab, tab, "← goes back");
-    let views = h.state().state.sim().lab().views().len();
+    let views = h.state().state.sim().lab().page().views.len();
     let mut seen = Vec::new();
     for _ in 0..=views + 1 {
         h.key_press(egui::Key::F);
@@ -250,7 +250,7 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
     assert_eq!(seen, expected);
     // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
     assert_eq!(
-        h.state().state.sim().lab().views(),
+        h.state().state.sim().lab().page().views,
         attlab::model::SINGLE_AXIS_VIEWS
     );
 }
@@ -367,7 +367,7 @@ fn every_labs_legend_shows_human_labels_with_units() {
         let tab = attlab::sim::default_tab(*lab);
         let sim = &h.state().state.sim();
         let shown: Vec<&attlab::model::SeriesSpec> = match tab {
-            attlab::model::PlotTab::Figure(i) => lab.figures()[i]
+            attlab::model::PlotTab::Figure(i) => lab.page().figures[i]
                 .series
                 .iter()
                 .filter_map(|n| sim.specs().iter().find(|s| n.is(&s.name)))
@@ -380,7 +380,7 @@ fn every_labs_legend_shows_human_labels_with_units() {
             .first()
             .unwrap_or_else(|| panic!("{}: nothing plotted", lab.id()));
         let legend = first.legend();
-        let legend = if lab.figures().first().is_some_and(|f| f.log) {
+        let legend = if lab.page().figures.first().is_some_and(|f| f.log) {
             format!("log10 {legend}")
         } else {
             legend

@@ -97,10 +97,10 @@ pub(super) fn replay(
     set: &[String],
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
-    let format = lab.log_format().ok_or_else(|| {
+    let format = lab.page().log_format.ok_or_else(|| {
         let replaying: Vec<&str> = attlab::labs::all()
             .iter()
-            .filter(|l| l.log_format().is_some())
+            .filter(|l| l.page().log_format.is_some())
             .map(|l| l.id())
             .collect();
         format!(

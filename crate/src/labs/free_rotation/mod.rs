@@ -13,8 +13,8 @@ mod truth;
 use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
 use crate::model::{
-    Estimator, Figure, Lab, LabRun, ParamSpec, ParamValues, ReproError, Reproduction, SensorModel,
-    TruthModel,
+    Estimator, Lab, LabRun, LabSpec, Page, ParamValues, ReproError, Reproduction, SensorModel,
+    Study, TruthModel,
 };
 use crate::sensors::{Gyro3, Gyro3Config};
 use rand_chacha::ChaCha8Rng;
@@ -29,30 +29,29 @@ fn gyro_errors(p: &ParamValues) -> GyroErrors {
     GyroErrors::from_deg_s(p.get("gyro_noise_deg_s"), p.get("gyro_bias_deg_s"))
 }
 
-impl Lab for FreeRotation {
-    fn id(&self) -> &'static str {
-        "free-rotation"
-    }
-
-    fn title(&self) -> &'static str {
-        "Free rotation (gyro integration)"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Foundation lab; kinematics of paper 3 (Matveev et al. 2025), eq. 21"
-    }
-
-    fn summary(&self) -> &'static str {
-        "A rigid body tumbles without torque (Euler's equations). A three-axis gyro measures its \
+const SPEC: LabSpec = LabSpec {
+    id: "free-rotation",
+    title: "Free rotation (gyro integration)",
+    paper: "Foundation lab; kinematics of paper 3 (Matveev et al. 2025), eq. 21",
+    summary: "A rigid body tumbles without torque (Euler's equations). A three-axis gyro measures its \
          rate with noise and bias, and two estimators integrate the gyro: quaternions \
          (q̇ = ½ q⊗ω) and paper 3's (u, v, z) (eq. 21), which switches to the flipped chart \
          s = 1/w when the body turns upside down. Without noise and bias both follow the truth; \
          the bias slider makes both drift the same way, the noise slider adds a random walk. \
-         The inertia sliders change the tumbling live; spin, axis and tilt apply at reset."
-    }
+         The inertia sliders change the tumbling live; spin, axis and tilt apply at reset.",
+    params: params::PARAMS,
+    presets: &[],
+    default_duration_s: 60.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        params::PARAMS
+const PAGE: Page = Page {
+    figures: page::FIGURES,
+    ..Page::DEFAULT
+};
+
+impl Lab for FreeRotation {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, params: &ParamValues) -> f64 {
@@ -85,15 +84,17 @@ impl Lab for FreeRotation {
         }
     }
 
-    fn default_duration_s(&self) -> f64 {
-        60.0
+    fn page(&self) -> &'static Page {
+        &PAGE
     }
 
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
+    }
+}
+
+impl Study for FreeRotation {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
-    }
-
-    fn figures(&self) -> &'static [Figure] {
-        page::FIGURES
     }
 }

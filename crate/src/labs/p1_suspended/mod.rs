@@ -11,9 +11,9 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Figure, Lab, LabData, LabRun, Measurements, ParamSpec, ParamValues, Preset,
-    Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
-    SeriesSpec, SweepSpec, TruthModel, TruthState, ViewKind, q,
+    Estimator, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec, ParamValues,
+    Preset, Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup,
+    SeriesKey, SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
@@ -242,21 +242,11 @@ fn filter_tuning(p: &ParamValues) -> OneAxisTuning {
     }
 }
 
-impl Lab for SuspendedMockup {
-    fn id(&self) -> &'static str {
-        "p1"
-    }
-
-    fn title(&self) -> &'static str {
-        "Paper 1: suspended mock-up, one-axis gyro"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Ivanov & Ovchinnikov, one-axis gyroscope and a suspended mock-up, KIAM RAS preprint"
-    }
-
-    fn summary(&self) -> &'static str {
-        "A body hangs on a thin string and twists about the vertical: Iφ̈ = −fφ − damping, with \
+const SPEC: LabSpec = LabSpec {
+    id: "p1",
+    title: "Paper 1: suspended mock-up, one-axis gyro",
+    paper: "Ivanov & Ovchinnikov, one-axis gyroscope and a suspended mock-up, KIAM RAS preprint",
+    summary: "A body hangs on a thin string and twists about the vertical: Iφ̈ = −fφ − damping, with \
          f = G·I_p/L and I_p = πd⁴/32, so T = 2π√(I/f). A one-axis gyro (noise, quantisation, range, \
          averaging to the filter rate) is the only sensor. Three estimators: direct integration \
          (φ_int); a Kalman filter assuming permanent rotation (φ̈ = 0); one assuming torsional \
@@ -268,11 +258,23 @@ impl Lab for SuspendedMockup {
          integrated gyro noise σ√(t/f), because a rate gyro alone cannot observe the angle — both \
          error plots are here. Defaults are the paper's setting: 100 Hz, R = σ², T ≈ 400 s and \
          ζ = 0.05 (the paper states neither; see the presets). Disturbances: a torque impulse, a \
-         pendulum swing leaking into the gyro, suspension shaking, a wrong initial angle."
-    }
+         pendulum swing leaking into the gyro, suspension shaking, a wrong initial angle.",
+    params: PARAMS,
+    presets: PRESETS,
+    default_duration_s: 600.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        PARAMS
+const PAGE: Page = Page {
+    figures: FIGURES,
+    views: SINGLE_AXIS_VIEWS,
+    suspended: true,
+    log_format: Some(&crate::sensors::RATE_LOG),
+    ..Page::DEFAULT
+};
+
+impl Lab for SuspendedMockup {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, params: &ParamValues) -> f64 {
@@ -328,24 +330,18 @@ impl Lab for SuspendedMockup {
         }
     }
 
-    fn default_duration_s(&self) -> f64 {
-        600.0
+    fn page(&self) -> &'static Page {
+        &PAGE
     }
 
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
+    }
+}
+
+impl Study for SuspendedMockup {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
-    }
-
-    fn figures(&self) -> &'static [Figure] {
-        FIGURES
-    }
-
-    fn presets(&self) -> &'static [Preset] {
-        PRESETS
-    }
-
-    fn views(&self) -> &'static [ViewKind] {
-        SINGLE_AXIS_VIEWS
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
@@ -362,14 +358,6 @@ impl Lab for SuspendedMockup {
             ],
         )];
         SWEEPS
-    }
-
-    fn log_format(&self) -> Option<&'static crate::model::LogFormat> {
-        Some(&crate::sensors::RATE_LOG)
-    }
-
-    fn suspended(&self) -> bool {
-        true
     }
 }
 

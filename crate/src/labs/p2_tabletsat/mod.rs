@@ -12,8 +12,8 @@ pub mod truth;
 use crate::estimators::mekf;
 use crate::estimators::{Mekf, MekfConfig, MekfTuning, SensorSet, StateSet, full_step_flops};
 use crate::model::{
-    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, Outage, ParamSpec, ParamValues,
-    Preset, ReproError, Reproduction, SeriesKey, SweepSpec, TimingItem, q,
+    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
+    ParamValues, Preset, ReproError, Reproduction, SeriesKey, Study, SweepSpec, TimingItem, q,
 };
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
 use rand::{Rng, SeedableRng};
@@ -299,21 +299,11 @@ fn p0<const N: usize>(states: StateSet, att_rad: f64) -> SMatrix<f64, N, N> {
     SMatrix::<f64, N, N>::from_diagonal(&d.column(0).into_owned())
 }
 
-impl Lab for TabletSat {
-    fn id(&self) -> &'static str {
-        "p2"
-    }
-
-    fn title(&self) -> &'static str {
-        "Paper 2: TabletSat, twelve sensor sets"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Ivanov, Ivlev, Karpenko, Ovchinnikov, TabletSat attitude determination, Keldysh preprint 2014-64"
-    }
-
-    fn summary(&self) -> &'static str {
-        "A 20-kg microsatellite on a circular orbit holds the orbital frame (e₃ up, e₂ along the \
+const SPEC: LabSpec = LabSpec {
+    id: "p2",
+    title: "Paper 2: TabletSat, twelve sensor sets",
+    paper: "Ivanov, Ivlev, Karpenko, Ovchinnikov, TabletSat attitude determination, Keldysh preprint 2014-64",
+    summary: "A 20-kg microsatellite on a circular orbit holds the orbital frame (e₃ up, e₂ along the \
          orbit normal) with reaction wheels against gravity gradient and an unmodelled torque. \
          Four kinds of sensors — magnetometer (the field from NOAA's WMM), five sun-sensor heads, a \
          gyro with a bias, a star tracker that is lost above 2 °/s or near the sun or the Earth — \
@@ -328,11 +318,33 @@ impl Lab for TabletSat {
          one vector. The 3D view draws the sun, field and nadir from the body, the ghost filter's \
          unobservable axis when it has one, and the orbit seen from its normal with the Earth's \
          shadow; the table on the left gives each filter's σ over the last minute and its own \
-         √P beside the paper's Table 3 (click a row to make it the ghost)."
-    }
+         √P beside the paper's Table 3 (click a row to make it the ghost).",
+    params: PARAMS,
+    presets: PRESETS,
+    default_duration_s: 600.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        PARAMS
+const PAGE: Page = Page {
+    figures: FIGURES,
+    outages: &[
+        Outage {
+            series: SeriesKey::sensors(&sensors::SUN_SEEN),
+            out_when: 0.0,
+            label: "no sun reading (eclipse or outside the heads' fields)",
+        },
+        Outage {
+            series: SeriesKey::sensors(&sensors::STAR_AVAILABLE),
+            out_when: 0.0,
+            label: "star tracker out",
+        },
+    ],
+    body: BodyShape::HexPrism,
+    ..Page::DEFAULT
+};
+
+impl Lab for TabletSat {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, p: &ParamValues) -> f64 {
@@ -380,8 +392,12 @@ impl Lab for TabletSat {
         }
     }
 
-    fn body_shape(&self) -> BodyShape {
-        BodyShape::HexPrism
+    fn page(&self) -> &'static Page {
+        &PAGE
+    }
+
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
     }
 
     fn accuracy_table(&self) -> Option<AccuracyTable> {
@@ -393,21 +409,27 @@ impl Lab for TabletSat {
             },
         })
     }
+}
 
-    fn default_duration_s(&self) -> f64 {
-        600.0
-    }
-
+impl Study for TabletSat {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
-    fn figures(&self) -> &'static [Figure] {
-        FIGURES
-    }
-
-    fn presets(&self) -> &'static [Preset] {
-        PRESETS
+    fn sweeps(&self) -> &'static [SweepSpec] {
+        const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
+            "Tune Q under the unmodelled torque (attitude error, 200 s each)",
+            "q_scale",
+            &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
+            200.0,
+            &[
+                SeriesKey::new("st-gyro", &q::ERR_DEG),
+                SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
+                SeriesKey::new("mag-sun", &q::ERR_DEG),
+            ],
+        )
+        .after(140.0)];
+        SWEEPS
     }
 
     fn timing_items(&self) -> Vec<TimingItem> {
@@ -461,37 +483,5 @@ impl Lab for TabletSat {
                 i += 1;
             }),
         }]
-    }
-
-    fn outages(&self) -> &'static [Outage] {
-        const OUTAGES: &[Outage] = &[
-            Outage {
-                series: SeriesKey::sensors(&sensors::SUN_SEEN),
-                out_when: 0.0,
-                label: "no sun reading (eclipse or outside the heads' fields)",
-            },
-            Outage {
-                series: SeriesKey::sensors(&sensors::STAR_AVAILABLE),
-                out_when: 0.0,
-                label: "star tracker out",
-            },
-        ];
-        OUTAGES
-    }
-
-    fn sweeps(&self) -> &'static [SweepSpec] {
-        const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
-            "Tune Q under the unmodelled torque (attitude error, 200 s each)",
-            "q_scale",
-            &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
-            200.0,
-            &[
-                SeriesKey::new("st-gyro", &q::ERR_DEG),
-                SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
-                SeriesKey::new("mag-sun", &q::ERR_DEG),
-            ],
-        )
-        .after(140.0)];
-        SWEEPS
     }
 }

@@ -18,8 +18,8 @@ use crate::estimators::{
 use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
-    Estimator, Figure, Lab, LabData, LabRun, Measurements, ParamSpec, ParamValues, ReproError,
-    Reproduction, SensorModel, SeriesKey, TimingItem, TruthModel, TruthState, q,
+    Estimator, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec, ParamValues,
+    ReproError, Reproduction, SensorModel, SeriesKey, Study, TimingItem, TruthModel, TruthState, q,
 };
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
@@ -223,21 +223,11 @@ fn kf_tuning(p: &ParamValues) -> WzKalmanTuning {
     }
 }
 
-impl Lab for WzSphere {
-    fn id(&self) -> &'static str {
-        "p3"
-    }
-
-    fn title(&self) -> &'static str {
-        "Paper 3: (w, z) on the Riemann sphere"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Matveev et al., Devices and Methods of Measurements 2025;16(3):202–211"
-    }
-
-    fn summary(&self) -> &'static str {
-        "The vertical seen from the body, k = (a′, b′, c′), projected from the pole S onto the body plane gives \
+const SPEC: LabSpec = LabSpec {
+    id: "p3",
+    title: "Paper 3: (w, z) on the Riemann sphere",
+    paper: "Matveev et al., Devices and Methods of Measurements 2025;16(3):202–211",
+    summary: "The vertical seen from the body, k = (a′, b′, c′), projected from the pole S onto the body plane gives \
          w = u + jv = (a′ + jb′)/(1 + c′) (eq. 12); z is the turn about the vertical, A = A(w)·A(z). \
          The gyro drives u̇ = vω_ζ + uvω_ξ − ½ω_η(1 + u² − v²), v̇ = −uω_ζ − uvω_η + ½ω_ξ(1 − u² + v²), \
          ż = ω_ζ + uω_ξ + vω_η (eq. 21) — (u, v) without z. Accelerometers give uᵃ = n_ξ/(1 + n_ζ), \
@@ -246,11 +236,20 @@ impl Lab for WzSphere {
          wᵏ = HPF(w) + LPF(wᵃ) with time constant T keeps the best of both, and the Kalman filter \
          chooses its own gain from the noise levels (its 3σ ellipse is drawn on the plane and the sphere). \
          Sliders: bias, noise, bump, T and the KF scale act live; the motion sliders apply at Reset. \
-         The slow tumble turns the body upside down: watch the chart switch to s = 1/w."
-    }
+         The slow tumble turns the body upside down: watch the chart switch to s = 1/w.",
+    params: PARAMS,
+    presets: &[],
+    default_duration_s: 100.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        PARAMS
+const PAGE: Page = Page {
+    figures: FIGURES,
+    ..Page::DEFAULT
+};
+
+impl Lab for WzSphere {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, params: &ParamValues) -> f64 {
@@ -284,16 +283,18 @@ impl Lab for WzSphere {
         }
     }
 
-    fn default_duration_s(&self) -> f64 {
-        100.0
+    fn page(&self) -> &'static Page {
+        &PAGE
     }
 
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
+    }
+}
+
+impl Study for WzSphere {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
-    }
-
-    fn figures(&self) -> &'static [Figure] {
-        FIGURES
     }
 
     fn timing_items(&self) -> Vec<TimingItem> {

@@ -12,8 +12,8 @@ mod tuning;
 use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
-    Estimator, ExampleLog, Figure, Lab, LabRun, ParamSpec, ParamValues, Preset, ReproError,
-    Reproduction, SINGLE_AXIS_VIEWS, SeriesKey, SweepSpec, ViewKind, q,
+    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, Page, ParamSpec, ParamValues, Preset,
+    ReproError, Reproduction, SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -177,21 +177,11 @@ pub fn datasheet_sigmas(p: &ParamValues) -> (f64, f64) {
     )
 }
 
-impl Lab for QuadrotorRoll {
-    fn id(&self) -> &'static str {
-        "p4"
-    }
-
-    fn title(&self) -> &'static str {
-        "Paper 4: quadrotor roll, KF tuned by γ = det Q/det R"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Pham, Shilin, Girnik, Nguyen, Kalman filter synthesis for an asymmetric quadrotor, Inzhenernyj vestnik Dona 2025 No. 10"
-    }
-
-    fn summary(&self) -> &'static str {
-        "A rig rolls about one axis: the paper's test bench (a lever on a bearing with one motor, \
+const SPEC: LabSpec = LabSpec {
+    id: "p4",
+    title: "Paper 4: quadrotor roll, KF tuned by γ = det Q/det R",
+    paper: "Pham, Shilin, Girnik, Nguyen, Kalman filter synthesis for an asymmetric quadrotor, Inzhenernyj vestnik Dona 2025 No. 10",
+    summary: "A rig rolls about one axis: the paper's test bench (a lever on a bearing with one motor, \
          Fig. 3) or a quadrotor whose arms and motors differ (eq. 2), so that holding any angle \
          needs a constant command u₀ ≠ 0. The controller — the nested P–PI of Fig. 1, or a plain \
          PID — splits its command into the integral's u₀ and a zero-mean u_v. An MPU-6050 (datasheet \
@@ -208,11 +198,28 @@ impl Lab for QuadrotorRoll {
          same motion. The sweeps below run the paper's tuning experiment: J = α·MSE + β·t_tr against \
          γ for its three (α, β) pairs (5 seeds, medians, argmin ringed), the Q landscape over two \
          elements of Q with the γ lines on it, and, while a log is replayed, the γ sweep on the \
-         log. `attlab reproduce p4` measures Table 1."
-    }
+         log. `attlab reproduce p4` measures Table 1.",
+    params: PARAMS,
+    presets: PRESETS,
+    default_duration_s: 16.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        PARAMS
+const PAGE: Page = Page {
+    figures: FIGURES,
+    views: SINGLE_AXIS_VIEWS,
+    log_format: Some(&crate::sensors::IMU_LOG),
+    // Synthetic (assets/make_p4_log.py): a lever's 20° steps with datasheet noise and a
+    // 0.5 °/s gyro offset, in raw counts.
+    example_log: Some(ExampleLog {
+        name: "p4-arduino-mpu6050.csv",
+        text: include_str!("../../../../assets/p4-arduino-mpu6050.csv"),
+    }),
+    ..Page::DEFAULT
+};
+
+impl Lab for QuadrotorRoll {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, p: &ParamValues) -> f64 {
@@ -261,40 +268,21 @@ impl Lab for QuadrotorRoll {
         }
     }
 
-    fn default_duration_s(&self) -> f64 {
-        16.0
+    fn page(&self) -> &'static Page {
+        &PAGE
     }
 
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
+    }
+}
+
+impl Study for QuadrotorRoll {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
-    fn figures(&self) -> &'static [Figure] {
-        FIGURES
-    }
-
-    fn presets(&self) -> &'static [Preset] {
-        PRESETS
-    }
-
-    fn views(&self) -> &'static [ViewKind] {
-        SINGLE_AXIS_VIEWS
-    }
-
     fn sweeps(&self) -> &'static [SweepSpec] {
         tuning::SWEEPS
-    }
-
-    fn log_format(&self) -> Option<&'static crate::model::LogFormat> {
-        Some(&crate::sensors::IMU_LOG)
-    }
-
-    fn example_log(&self) -> Option<ExampleLog> {
-        // Synthetic (assets/make_p4_log.py): a lever's 20° steps with datasheet noise and a
-        // 0.5 °/s gyro offset, in raw counts.
-        Some(ExampleLog {
-            name: "p4-arduino-mpu6050.csv",
-            text: include_str!("../../../../assets/p4-arduino-mpu6050.csv"),
-        })
     }
 }

@@ -14,8 +14,7 @@ mod truth;
 use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
 use crate::model::{
-    Diagram, Estimator, Figure, Lab, LabRun, OutputFile, ParamSpec, ParamValues, Preset,
-    ReproError, Reproduction,
+    Estimator, Lab, LabRun, LabSpec, OutputFile, Page, ParamValues, ReproError, Reproduction, Study,
 };
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
@@ -28,21 +27,11 @@ pub use reproduce::first_hit_s;
 /// The paper-5 lab.
 pub struct SensitivityLab;
 
-impl Lab for SensitivityLab {
-    fn id(&self) -> &'static str {
-        "p5"
-    }
-
-    fn title(&self) -> &'static str {
-        "Paper 5: correcting rates with the sensitivity matrix"
-    }
-
-    fn paper(&self) -> &'static str {
-        "Bashniakov, Pichkur, Polishchuk, Linder, adaptive correction of angular velocities via the sensitivity matrix"
-    }
-
-    fn summary(&self) -> &'static str {
-        "Measured rates ω drive the quaternion, 2Λ̇ = Λ ∘ (ω + p), with an additive correction p. \
+const SPEC: LabSpec = LabSpec {
+    id: "p5",
+    title: "Paper 5: correcting rates with the sensitivity matrix",
+    paper: "Bashniakov, Pichkur, Polishchuk, Linder, adaptive correction of angular velocities via the sensitivity matrix",
+    summary: "Measured rates ω drive the quaternion, 2Λ̇ = Λ ∘ (ω + p), with an additive correction p. \
          Beside Λ runs the sensitivity U = ∂Λ/∂p (4×3), reset to 0 at every reference. At each \
          reference attitude (every Δt) p takes one Gauss–Newton step h = (UᵀQU + εI)⁻¹UᵀQ(Λ_ref − Λ). \
          Method (9) continues the state and — linearised, its update has determinant 1, both \
@@ -52,11 +41,21 @@ impl Lab for SensitivityLab {
          converges in a few intervals. The diagram shows the eigenvalues for the current Δt and ε. \
          With a biased gyro p converges to −b; with the reference lost, the corrected integration \
          runs free and re-converges when it returns. The output file is the paper's: rows of \
-         (t, angle₁, angle₂, angle₃) ending at the first row within tolerance."
-    }
+         (t, angle₁, angle₂, angle₃) ending at the first row within tolerance.",
+    params: params::PARAMS,
+    presets: params::PRESETS,
+    default_duration_s: 30.0,
+};
 
-    fn params(&self) -> &'static [ParamSpec] {
-        params::PARAMS
+const PAGE: Page = Page {
+    figures: page::FIGURES,
+    diagrams: Some(page::diagrams),
+    ..Page::DEFAULT
+};
+
+impl Lab for SensitivityLab {
+    fn spec(&self) -> &'static LabSpec {
+        &SPEC
     }
 
     fn dt_s(&self, p: &ParamValues) -> f64 {
@@ -103,27 +102,21 @@ impl Lab for SensitivityLab {
         }
     }
 
-    fn default_duration_s(&self) -> f64 {
-        30.0
+    fn page(&self) -> &'static Page {
+        &PAGE
     }
 
+    fn study(&self) -> Option<&dyn Study> {
+        Some(self)
+    }
+}
+
+impl Study for SensitivityLab {
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
-    fn figures(&self) -> &'static [Figure] {
-        page::FIGURES
-    }
-
-    fn presets(&self) -> &'static [Preset] {
-        params::PRESETS
-    }
-
     fn output_file(&self, p: &ParamValues) -> Option<OutputFile> {
         Some(page::output_file(p))
-    }
-
-    fn diagrams(&self, p: &ParamValues) -> Vec<Diagram> {
-        page::diagrams(p)
     }
 }
