@@ -30,25 +30,11 @@ pub const GOLDEN_STEPS: usize = 200;
 /// A golden checkpoint every so many steps.
 pub const GOLDEN_EVERY: usize = 25;
 
-/// Each lab's golden scenario: its defaults with the sensor errors switched on where the
-/// defaults have none, so the noise generators are exercised too.
-pub fn golden_assignments(id: &str) -> &'static [&'static str] {
-    match id {
-        "free-rotation" => &[
-            "gyro_noise_deg_s=0.05",
-            "gyro_bias_deg_s=0.2",
-            "gyro_walk_deg_s_sqrt_s=0.01",
-        ],
-        "p3" => &["gyro_noise_deg_s=0.05"],
-        _ => &[],
-    }
-}
-
 /// Every series of lab `lab` at every [`GOLDEN_EVERY`]-th step of [`GOLDEN_STEPS`], seed 7:
 /// (series names, checkpoint rows).
 pub fn golden_trace(lab: &'static dyn Lab) -> (Vec<String>, Vec<Vec<f64>>) {
     let mut p = ParamValues::defaults(lab.params());
-    let errors = p.apply_assignments(lab.params(), golden_assignments(lab.id()).iter().copied());
+    let errors = p.apply_assignments(lab.params(), lab.golden_assignments().iter().copied());
     assert!(errors.is_empty(), "{}: {errors:?}", lab.id());
     let options = SimOptions {
         selection: Selection::All,

@@ -196,6 +196,12 @@ pub trait Study: Sync {
     fn output_file(&self, _params: &ParamValues) -> Option<OutputFile> {
         None
     }
+    /// The scenario of the lab's golden trace (tests/golden): assignments on top of its
+    /// defaults that switch its sensor errors on where the defaults have none, so the noise
+    /// generators are pinned too.
+    fn golden_assignments(&self) -> &'static [&'static str] {
+        &[]
+    }
 }
 
 /// The lab's data and its study's offers, read through any lab.
@@ -245,6 +251,10 @@ impl dyn Lab + '_ {
     /// The study's timings (none without a study).
     pub fn timing_items(&self) -> Vec<TimingItem> {
         self.study().map_or_else(Vec::new, |s| s.timing_items())
+    }
+    /// The study's golden-trace scenario (none without a study).
+    pub fn golden_assignments(&self) -> &'static [&'static str] {
+        self.study().map_or(&[], |s| s.golden_assignments())
     }
     /// The paper's output file for `params`, if the study defines one.
     pub fn output_file(&self, params: &ParamValues) -> Option<OutputFile> {

@@ -94,6 +94,14 @@ impl Lab for FreeRotation {
 }
 
 impl Study for FreeRotation {
+    fn golden_assignments(&self) -> &'static [&'static str] {
+        &[
+            "gyro_noise_deg_s=0.05",
+            "gyro_bias_deg_s=0.2",
+            "gyro_walk_deg_s_sqrt_s=0.01",
+        ]
+    }
+
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
     }

@@ -293,6 +293,10 @@ impl Lab for WzSphere {
 }
 
 impl Study for WzSphere {
+    fn golden_assignments(&self) -> &'static [&'static str] {
+        &["gyro_noise_deg_s=0.05"]
+    }
+
     fn reproduce(&self) -> Result<Reproduction, ReproError> {
         Ok(reproduce::reproduce()?)
     }
