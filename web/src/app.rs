@@ -183,6 +183,11 @@ impl AttLabApp {
             recorder_bytes: self.state.sim().recorder().memory_bytes(),
             errors: &self.app_errors,
             last_png: self.last_png.as_ref(),
+            layout: self.regions.plot_area.map(|plot| {
+                let xywh = |r: egui::Rect| [r.min.x, r.min.y, r.width(), r.height()];
+                let zoom = ui.ctx().zoom_factor();
+                (xywh(ui.ctx().content_rect()), xywh(plot), zoom)
+            }),
         });
     }
 

@@ -26,6 +26,8 @@ pub struct Regions {
     pub views: Vec<(usize, Rect)>,
     /// The plot tab row and the plot.
     pub plots: Option<Rect>,
+    /// The plot alone (its axes and legend included, the tabs not).
+    pub plot_area: Option<Rect>,
 }
 
 impl Regions {
@@ -309,6 +311,7 @@ mod tests {
                 Pos2::new(0.0, 2.0),
                 Vec2::new(10.0, 4.0),
             )),
+            plot_area: None,
         };
         let mut seen = Vec::new();
         let mut frames = 0;

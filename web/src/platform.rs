@@ -57,6 +57,9 @@ pub struct Status<'a> {
     pub errors: &'a [String],
     /// The last PNG saved: name, width, height, bytes.
     pub last_png: Option<&'a (String, usize, usize, usize)>,
+    /// The window and the plot area, `[x, y, width, height]` in points, and the pixels
+    /// per point (CSS pixels per point: the zoom, larger in presenter mode).
+    pub layout: Option<([f32; 4], [f32; 4], f32)>,
 }
 
 /// Publishes the status (browser only).
@@ -87,6 +90,14 @@ pub fn publish_status(status: &Status<'_>) {
             let _ = Reflect::set(&png, &"height".into(), &JsValue::from_f64(*h as f64));
             let _ = Reflect::set(&png, &"bytes".into(), &JsValue::from_f64(*n as f64));
             let _ = Reflect::set(&o, &"lastPng".into(), &png);
+        }
+        if let Some((window, plot, zoom)) = status.layout {
+            let _ = Reflect::set(&o, &"zoom".into(), &JsValue::from_f64(f64::from(zoom)));
+            let rect = |r: [f32; 4]| -> Array {
+                r.iter().map(|v| JsValue::from_f64(f64::from(*v))).collect()
+            };
+            let _ = Reflect::set(&o, &"window".into(), &rect(window));
+            let _ = Reflect::set(&o, &"plotArea".into(), &rect(plot));
         }
         let _ = Reflect::set(
             &o,

@@ -146,6 +146,25 @@ impl<'a> Session<'a> {
             .ok_or_else(|| format!("log is not an array: {value}"))
     }
 
+    /// Emulates a viewport of `width` × `height` CSS pixels (Chromium's DevTools protocol
+    /// through chromedriver); `None` ends the emulation.
+    pub(crate) fn set_viewport(&self, size: Option<(u32, u32)>) -> Result<(), String> {
+        let (cmd, params) = match size {
+            Some((width, height)) => (
+                "Emulation.setDeviceMetricsOverride",
+                json!({ "width": width, "height": height, "deviceScaleFactor": 1,
+                        "mobile": false }),
+            ),
+            None => ("Emulation.clearDeviceMetricsOverride", json!({})),
+        };
+        self.call(
+            "POST",
+            "/goog/cdp/execute",
+            Some(&json!({ "cmd": cmd, "params": params })),
+        )
+        .map(|_| ())
+    }
+
     /// A PNG screenshot of the viewport.
     pub(crate) fn screenshot(&self) -> Result<Vec<u8>, String> {
         let value = self.call("GET", "/screenshot", None)?;

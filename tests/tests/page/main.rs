@@ -19,6 +19,7 @@ use std::time::{Duration, Instant};
 
 mod checks;
 mod driver;
+mod screens;
 mod server;
 mod soak;
 
@@ -138,6 +139,7 @@ fn page_renders_without_errors() {
         }
         Err(e) => problems.push(format!("presenter: navigate failed: {e}")),
     }
+    problems.extend(screens::projector_problems(&session, &base));
     problems.extend(png_export_problems(&session, &base));
     drop(session);
     assert!(

@@ -2,11 +2,12 @@
 //! plane or the lab's diagram; for a single-axis lab a dial and the phase portrait), the plot
 //! tabs and plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
+use super::tabs;
 use crate::export::Regions;
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
-use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View, ViewCommand};
+use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
 use attlab::math::{WzAttitude, WzChart};
-use attlab::model::{Quantity, SeriesGroup, SeriesKey, StateKind, TRUTH, ViewKind, q};
+use attlab::model::{Quantity, SeriesKey, StateKind, TRUTH, ViewKind, q};
 use attlab::record::Recorder;
 use egui::{Pos2, Rect, Ui, Vec2};
 use nalgebra::Vector3;
@@ -38,7 +39,15 @@ pub fn central(
             }
             _ => {}
         }
-        let top_h = (full.height() * 0.55).max(220.0);
+        // The plots carry each paper's result: the views take what leaves the plot itself
+        // (below the chips and the tab rows) at least 40 % of the window's height.
+        let window_h = ui.ctx().content_rect().height();
+        let chrome = ui
+            .ctx()
+            .data(|d| d.get_temp::<f32>(chrome_id()))
+            .unwrap_or(PLOT_CHROME_PT);
+        let below_views = PLOT_SHARE * window_h + chrome + 6.0;
+        let top_h = (full.height() - below_views).clamp(MIN_VIEW_PT, full.height() * 0.55);
         let top = Rect::from_min_size(full.min, Vec2::new(full.width(), top_h));
         let total: f32 = kinds.iter().map(|k| weight(*k)).sum();
         let mut x = top.min.x;
@@ -56,6 +65,19 @@ pub fn central(
         });
     });
 }
+
+/// The share of the window's height the plot itself gets at least.
+const PLOT_SHARE: f32 = 0.42;
+/// What of the plots' area is not the plot itself (the estimator chips, the tab rows, the
+/// axes), before a frame has measured it (points).
+const PLOT_CHROME_PT: f32 = 120.0;
+
+/// Where the height of the chips and tab rows, as last drawn, is kept between frames.
+fn chrome_id() -> egui::Id {
+    egui::Id::unique("attlab_plot_chrome_height")
+}
+/// The views' height below which they are no use (points).
+const MIN_VIEW_PT: f32 = 120.0;
 
 /// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
 /// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
@@ -78,10 +100,11 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
 
 /// The plot tabs and the selected plot; the tab row and the plot are the PNG export's area.
 fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut Vec<Command>) {
-    estimator_legend(ui, app, commands);
+    let area = ui.available_rect_before_wrap();
+    tabs::estimator_legend(ui, app, commands);
     regions.plots = Some(ui.available_rect_before_wrap());
-    plot_tabs(ui, app, commands);
-    plots::show(
+    tabs::plot_tabs(ui, app, commands);
+    regions.plot_area = Some(plots::show(
         ui,
         app.sim().recorder(),
         app.sim().lab().page().figures,
@@ -89,7 +112,12 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
         &app.view().plots,
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,
-    );
+    ));
+    // Everything of this area that is not the plot itself: chips, tabs, axes.
+    if let Some(plot) = regions.plot_area {
+        let chrome = area.height() - plot.height();
+        ui.ctx().data_mut(|d| d.insert_temp(chrome_id(), chrome));
+    }
 }
 
 /// Share of the top row a view takes.
@@ -182,89 +210,6 @@ fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
         }
     }
     (out, shown)
-}
-
-/// One chip per estimator in its colour: a click hides it (or shows it again) in every
-/// view and plot.
-fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    ui.horizontal_wrapped(|ui| {
-        ui.label(egui::RichText::new("Estimators:").small());
-        for (i, e) in app.sim().estimators().iter().enumerate() {
-            let source = i + 1;
-            let shown = !app.view().hidden.contains(&source);
-            let color = if shown {
-                plots::source_color(source)
-            } else {
-                egui::Color32::from_gray(90)
-            };
-            let text = egui::RichText::new(format!("● {}", e.id()))
-                .small()
-                .color(color);
-            if ui
-                .selectable_label(shown, text)
-                .on_hover_text(format!(
-                    "{} — click to {} it everywhere",
-                    e.label(),
-                    if shown { "hide" } else { "show" }
-                ))
-                .clicked()
-            {
-                commands.push(Command::from(ViewCommand::ToggleSource(source)));
-            }
-        }
-    });
-}
-
-/// The tab row and the options of the selected tab.
-fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let figures = app.sim().lab().page().figures;
-    let current = app.view().plots.tab;
-    ui.horizontal_wrapped(|ui| {
-        for (i, f) in figures.iter().enumerate() {
-            if ui
-                .selectable_label(current == plots::Tab::Figure(i), f.title)
-                .clicked()
-            {
-                commands.push(Command::from(ViewCommand::SelectTab(plots::Tab::Figure(i))));
-            }
-        }
-        if !figures.is_empty() {
-            ui.separator();
-        }
-        for g in plots::groups(app.sim().available_specs()) {
-            if ui
-                .selectable_label(current == plots::Tab::Group(g), g.title())
-                .clicked()
-            {
-                commands.push(Command::from(ViewCommand::SelectTab(plots::Tab::Group(g))));
-            }
-        }
-        ui.separator();
-        match current {
-            plots::Tab::Group(SeriesGroup::Covariance) => {
-                let mut on = app.view().plots.log_covariance;
-                if ui.checkbox(&mut on, "log10").changed() {
-                    commands.push(Command::from(ViewCommand::SetLogCovariance(on)));
-                }
-            }
-            _ => {
-                let mut on = app.view().plots.show_bands;
-                if ui.checkbox(&mut on, "±3σ bands").changed() {
-                    commands.push(Command::from(ViewCommand::SetShowBands(on)));
-                }
-            }
-        }
-        if !app.sim().lab().page().outages.is_empty() {
-            let mut on = app.view().plots.show_outages;
-            if ui
-                .checkbox(&mut on, "shade outages")
-                .on_hover_text("Shade the intervals where a sensor gives nothing (every plot)")
-                .changed()
-            {
-                commands.push(Command::from(ViewCommand::SetShowOutages(on)));
-            }
-        }
-    });
 }
 
 fn draw_body(

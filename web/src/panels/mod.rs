@@ -7,6 +7,7 @@ mod controls;
 mod keys;
 mod lab_tools;
 mod sweeps;
+mod tabs;
 
 pub use central::central;
 pub use controls::controls;
@@ -36,7 +37,15 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
         ui.horizontal_wrapped(|ui| {
             let s = &app.run().stats;
             let rec = app.sim().recorder();
-            ui.monospace(format!(
+            if app.view().presenter {
+                // A room reads the time and the pace; the rest is for the engineer.
+                ui.monospace(format!(
+                    "t = {:7.2} s · ×{} real time requested",
+                    app.sim().t_s(),
+                    app.run().speed
+                ));
+            } else {
+                ui.monospace(format!(
                 "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s (×{} requested) · frame {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
                 app.sim().t_s(),
                 app.sim().dt_s() * 1e3,
@@ -47,6 +56,7 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
                 rec.memory_bytes() as f64 / f64::from(1 << 20),
                 rec.specs().len(),
             ));
+            }
             if s.behind {
                 ui.colored_label(egui::Color32::YELLOW, "· behind real time: lower the speed");
             }

@@ -153,7 +153,7 @@ pub fn show(
     state: &PlotState,
     line_width: f32,
     hidden: &[usize],
-) {
+) -> egui::Rect {
     let tab = match state.tab {
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
         t => t,
@@ -163,27 +163,116 @@ pub fn show(
         Tab::Figure(f) => figures[f].log,
         Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
     };
-    Plot::new(("series_plot", format!("{tab:?}")))
-        .legend(Legend::default().text_style(egui::TextStyle::Small))
-        .x_axis_label("t [s]")
-        .show(ui, |plot| {
-            if state.show_outages {
-                shade_outages(plot, rec, outages);
-            }
-            for (i, color) in lines {
-                let spec = &rec.specs()[i];
-                if spec.source > 0 && hidden.contains(&spec.source) {
-                    continue;
+    let full = ui.available_rect_before_wrap();
+    // On a wide plot the legend stands beside it and covers no data.
+    let side = full.width() >= SIDE_LEGEND_MIN_PT;
+    let legend_w = if side {
+        (full.width() * 0.27).min(380.0)
+    } else {
+        0.0
+    };
+    let plot_rect = egui::Rect::from_min_max(full.min, full.max - egui::vec2(legend_w, 0.0));
+    let mut plot = Plot::new(("series_plot", format!("{tab:?}"))).x_axis_label("t [s]");
+    if !side {
+        plot = plot.legend(Legend::default().text_style(egui::TextStyle::Small));
+    }
+    let shown: Vec<(usize, Color32)> = lines
+        .into_iter()
+        .filter(|(i, _)| {
+            let source = rec.specs()[*i].source;
+            source == 0 || !hidden.contains(&source)
+        })
+        .collect();
+    let rect = ui
+        .scope_builder(egui::UiBuilder::new().max_rect(plot_rect), |ui| {
+            plot.show(ui, |plot| {
+                if state.show_outages {
+                    shade_outages(plot, rec, outages);
                 }
-                let style = LineLook {
-                    color,
-                    width: line_width,
-                    log,
-                    bands: state.show_bands,
-                };
-                draw_series(plot, rec, i, style);
-            }
+                for (i, color) in &shown {
+                    let style = LineLook {
+                        color: *color,
+                        width: line_width,
+                        log,
+                        bands: state.show_bands,
+                    };
+                    draw_series(plot, rec, *i, style);
+                }
+            })
+            .response
+            .rect
+        })
+        .inner;
+    if side {
+        let legend_rect =
+            egui::Rect::from_min_max(egui::pos2(plot_rect.max.x + 8.0, full.min.y), full.max);
+        ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
+            side_legend(ui, rec, &shown, log, state, outages);
         });
+    }
+    ui.advance_cursor_after_rect(full);
+    rect
+}
+
+/// A plot at least this wide (points) has its legend beside it.
+const SIDE_LEGEND_MIN_PT: f32 = 560.0;
+
+/// The legend beside a plot: each drawn series' label and unit in its colour, the ±3σ
+/// bands' line style and the outages' shading.
+fn side_legend(
+    ui: &mut Ui,
+    rec: &Recorder,
+    shown: &[(usize, Color32)],
+    log: bool,
+    state: &PlotState,
+    outages: &[Outage],
+) {
+    let swatch = |ui: &mut Ui, color: Color32, dashed: bool| {
+        let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
+        let y = r.center().y;
+        let stroke = egui::Stroke::new(3.0, color);
+        if dashed {
+            for k in 0..3 {
+                let x = r.min.x + 7.0 * k as f32;
+                ui.painter()
+                    .line_segment([egui::pos2(x, y), egui::pos2(x + 4.0, y)], stroke);
+            }
+        } else {
+            ui.painter()
+                .line_segment([egui::pos2(r.min.x, y), egui::pos2(r.max.x, y)], stroke);
+        }
+    };
+    egui::ScrollArea::vertical().show(ui, |ui| {
+        for (i, color) in shown {
+            let spec = &rec.specs()[*i];
+            let text = if log {
+                format!("log10 {}", spec.legend())
+            } else {
+                spec.legend()
+            };
+            ui.horizontal(|ui| {
+                swatch(ui, *color, false);
+                ui.add(egui::Label::new(text).wrap());
+            });
+        }
+        let banded = shown.iter().any(|(i, _)| rec.specs()[*i].band.is_some());
+        if state.show_bands && banded && !log {
+            ui.horizontal(|ui| {
+                swatch(ui, Color32::GRAY, true);
+                ui.label("±3σ of the filter's own covariance");
+            });
+        }
+        if state.show_outages {
+            for (k, o) in outages.iter().enumerate() {
+                ui.horizontal(|ui| {
+                    let (r, _) =
+                        ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
+                    ui.painter().rect_filled(r, 2.0, outage_color(k));
+                    ui.label(o.label);
+                });
+            }
+        }
+    });
 }
 
 /// The series a tab draws with their colours: by source, so an estimator has one colour

@@ -243,6 +243,10 @@ fn plane_segments(w: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
     out
 }
 
+/// A small view draws its legend for at most this many sources, and only when it is at
+/// least this tall (points).
+pub const ROOM_FOR_LEGEND: (usize, f32) = (5, 280.0);
+
 /// The complex plane with the w trajectories and the unit circle |w| = 1.
 pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
     let circle: PlotPoints<'_> = (0..=96)
@@ -251,13 +255,16 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
             [a.cos(), a.sin()]
         })
         .collect();
-    Plot::new("w_plane")
-        .data_aspect(1.0)
-        .legend(
+    let mut plane = Plot::new("w_plane").data_aspect(1.0);
+    // A legend of many sources would hide the plane: the estimator chips give the colours.
+    if tracks.len() <= ROOM_FOR_LEGEND.0 && ui.available_height() >= ROOM_FOR_LEGEND.1 {
+        plane = plane.legend(
             Legend::default()
                 .text_style(egui::TextStyle::Small)
                 .background_alpha(0.6),
-        )
+        );
+    }
+    plane
         .include_x(-2.0)
         .include_x(2.0)
         .include_y(-2.0)

@@ -154,9 +154,12 @@ pub fn phase_portrait(
         ui.label(
             egui::RichText::new("Phase portrait: rate against angle (the recent trail)").small(),
         );
-        Plot::new("phase_portrait")
-            .height((rect.height() - 24.0).max(60.0))
-            .legend(Legend::default().text_style(egui::TextStyle::Small))
+        let mut portrait = Plot::new("phase_portrait").height((rect.height() - 24.0).max(60.0));
+        let (most, tall) = super::riemann_sphere::ROOM_FOR_LEGEND;
+        if sources.len() <= most && rect.height() >= tall {
+            portrait = portrait.legend(Legend::default().text_style(egui::TextStyle::Small));
+        }
+        portrait
             .x_axis_label("angle [°]")
             .y_axis_label("rate [°/s]")
             .show(ui, |plot| {

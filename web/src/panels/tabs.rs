@@ -1,0 +1,164 @@
+//! Above the plot: one chip per estimator (hide or show it everywhere) and the plot tabs,
+//! the paper's figures first and the rest behind a "More…" menu, with the tab's options.
+
+use crate::render::plots;
+use crate::state::{AppState, Command, ViewCommand};
+use attlab::model::SeriesGroup;
+use egui::Ui;
+
+/// One chip per estimator in its colour: a click hides it (or shows it again) in every
+/// view and plot. The chips take one row; those that do not fit are behind a menu.
+pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let estimators = app.sim().estimators();
+    let mut room = ui.available_width() - 160.0;
+    let fits = estimators
+        .iter()
+        .take_while(|e| {
+            room -= tab_width(ui, &format!("● {}", e.id())) * 0.9;
+            room >= 0.0
+        })
+        .count();
+    ui.horizontal(|ui| {
+        ui.label(egui::RichText::new("Estimators:").small());
+        for i in 0..fits {
+            estimator_chip(ui, app, i, commands);
+        }
+        if fits < estimators.len() {
+            let label = format!("+{} more…", estimators.len() - fits);
+            ui.menu_button(egui::RichText::new(label).small(), |ui| {
+                for i in fits..estimators.len() {
+                    estimator_chip(ui, app, i, commands);
+                }
+            });
+        }
+    });
+}
+
+/// The chip of estimator `i`: its id in its colour, grey while hidden.
+fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Command>) {
+    let Some(e) = app.sim().estimators().get(i) else {
+        return;
+    };
+    let source = i + 1;
+    let shown = !app.view().hidden.contains(&source);
+    let color = if shown {
+        plots::source_color(source)
+    } else {
+        egui::Color32::from_gray(90)
+    };
+    let text = egui::RichText::new(format!("● {}", e.id()))
+        .small()
+        .color(color);
+    if ui
+        .selectable_label(shown, text)
+        .on_hover_text(format!(
+            "{} — click to {} it everywhere",
+            e.label(),
+            if shown { "hide" } else { "show" }
+        ))
+        .clicked()
+    {
+        commands.push(Command::from(ViewCommand::ToggleSource(source)));
+    }
+}
+
+/// The tab row and the options of the selected tab: the paper's figures first, as many as
+/// fit in two rows; the rest of them and the generic tabs (Attitude, Rates, Covariance, …)
+/// behind one "More…" menu, which names the tab when one of those is shown.
+pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let figures = app.sim().lab().page().figures;
+    let groups = plots::groups(app.sim().available_specs());
+    let current = app.view().plots.tab;
+    let mut tabs: Vec<(plots::Tab, &str)> = figures
+        .iter()
+        .enumerate()
+        .map(|(i, f)| (plots::Tab::Figure(i), f.title))
+        .collect();
+    tabs.extend(groups.iter().map(|g| (plots::Tab::Group(*g), g.title())));
+    // The figures (or, for a lab without figures, the groups) that fit in two rows beside
+    // the More menu and the options.
+    let first = if figures.is_empty() {
+        tabs.len()
+    } else {
+        figures.len()
+    };
+    let budget = 2.0 * ui.available_width() - OPTIONS_WIDTH_PT;
+    let mut used = 0.0;
+    let shown = tabs[..first]
+        .iter()
+        .take_while(|(_, title)| {
+            used += tab_width(ui, title);
+            used <= budget
+        })
+        .count();
+    let select = |commands: &mut Vec<Command>, tab| {
+        commands.push(Command::from(ViewCommand::SelectTab(tab)));
+    };
+    ui.horizontal_wrapped(|ui| {
+        for (tab, title) in &tabs[..shown] {
+            if ui.selectable_label(current == *tab, *title).clicked() {
+                select(commands, *tab);
+            }
+        }
+        let more = &tabs[shown..];
+        if !more.is_empty() {
+            let label = match more.iter().find(|(tab, _)| *tab == current) {
+                Some((_, title)) => format!("More: {title}"),
+                None => "More…".to_string(),
+            };
+            ui.menu_button(label, |ui| {
+                for (tab, title) in more {
+                    if ui.selectable_label(current == *tab, *title).clicked() {
+                        select(commands, *tab);
+                        ui.close();
+                    }
+                }
+            });
+        }
+        ui.separator();
+        tab_options(ui, app, commands);
+    });
+}
+
+/// Room the More menu and the options take at the end of the tab rows (points).
+const OPTIONS_WIDTH_PT: f32 = 330.0;
+
+/// The width a tab button with `title` takes in `ui`, spacing included (points).
+fn tab_width(ui: &Ui, title: &str) -> f32 {
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let text = ui.ctx().fonts_mut(|f| {
+        f.layout_no_wrap(title.to_string(), font, egui::Color32::WHITE)
+            .size()
+            .x
+    });
+    text + 2.0 * ui.spacing().button_padding.x + ui.spacing().item_spacing.x
+}
+
+/// The options of the selected tab: log10 for covariances, ±3σ bands otherwise, and the
+/// outages' shading where the lab has outages.
+fn tab_options(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    match app.view().plots.tab {
+        plots::Tab::Group(SeriesGroup::Covariance) => {
+            let mut on = app.view().plots.log_covariance;
+            if ui.checkbox(&mut on, "log10").changed() {
+                commands.push(Command::from(ViewCommand::SetLogCovariance(on)));
+            }
+        }
+        _ => {
+            let mut on = app.view().plots.show_bands;
+            if ui.checkbox(&mut on, "±3σ bands").changed() {
+                commands.push(Command::from(ViewCommand::SetShowBands(on)));
+            }
+        }
+    }
+    if !app.sim().lab().page().outages.is_empty() {
+        let mut on = app.view().plots.show_outages;
+        if ui
+            .checkbox(&mut on, "shade outages")
+            .on_hover_text("Shade the intervals where a sensor gives nothing (every plot)")
+            .changed()
+        {
+            commands.push(Command::from(ViewCommand::SetShowOutages(on)));
+        }
+    }
+}
