@@ -11,7 +11,9 @@
 //! channels HPF(u), HPF(v), LPF(uᵃ), LPF(vᵃ) are published for the paper's Fig. 10.
 
 use crate::math::{RateSegment, WzAttitude, chart_coords_of_vertical, step_uvz_rk4};
-use crate::model::{Attitude, Estimate, Estimator, Measurements, ParamValues, Quantity, Tuner};
+use crate::model::{
+    Attitude, Estimate, Estimator, Extras, Measurements, ParamValues, Quantity, Tuner,
+};
 use nalgebra::Vector3;
 
 // The series this estimator records besides the catalogue's (figures name them).
@@ -152,8 +154,11 @@ impl Estimator for BlendedWz {
         }
     }
 
-    fn extras(&self, out: &mut [f64]) {
+    fn extras(&self, out: &mut Extras<'_>) {
         let [lu, lv, lua, lva] = self.channels;
-        out.copy_from_slice(&[self.gyro.u - lu, self.gyro.v - lv, lua, lva]);
+        out.put(&HPF_U, self.gyro.u - lu);
+        out.put(&HPF_V, self.gyro.v - lv);
+        out.put(&LPF_UA, lua);
+        out.put(&LPF_VA, lva);
     }
 }

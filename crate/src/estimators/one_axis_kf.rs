@@ -14,7 +14,7 @@ use super::covariance_matching::{
     AdaptMode, Adaptation, AdaptiveKf, rotation_transition, torsion_transition,
 };
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+    Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
     StateInfo, StateKind, Tuner,
 };
 use nalgebra::{Matrix2, Vector2, Vector3};
@@ -184,9 +184,15 @@ impl Estimator for OneAxisKf {
         QUANTITIES
     }
 
-    fn extras(&self, out: &mut [f64]) {
-        out[0] = self.rate_minus_sensor_rad_s.to_degrees();
-        out[1] = (self.kf.x()[0] - self.phi_int_rad).to_degrees();
+    fn extras(&self, out: &mut Extras<'_>) {
+        out.put(
+            &RATE_MINUS_SENSOR_DEG_S,
+            self.rate_minus_sensor_rad_s.to_degrees(),
+        );
+        out.put(
+            &ANGLE_MINUS_INT_DEG,
+            (self.kf.x()[0] - self.phi_int_rad).to_degrees(),
+        );
     }
 
     fn status(&self) -> &EstimatorStatus {

@@ -16,7 +16,7 @@
 
 use super::kf::{KalmanState, LinearObservation};
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity,
+    Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
     StateInfo, StateKind, Tuner,
 };
 use nalgebra::{SMatrix, SVector, Vector3};
@@ -266,9 +266,9 @@ impl<const N: usize> Estimator for RollKf<N> {
         if N == 3 { &BIAS } else { &[] }
     }
 
-    fn extras(&self, out: &mut [f64]) {
+    fn extras(&self, out: &mut Extras<'_>) {
         if N == 3 {
-            out[0] = self.kf.x[N - 1].to_degrees();
+            out.put(&GYRO_BIAS_DEG_S, self.kf.x[N - 1].to_degrees());
         }
     }
 }

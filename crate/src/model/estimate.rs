@@ -2,7 +2,7 @@
 
 use super::data::LabData;
 use super::params::ParamValues;
-use super::series::Quantity;
+use super::series::{Extras, Quantity};
 use crate::math::WzAttitude;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -307,5 +307,5 @@ pub trait Estimator: Send {
         &[]
     }
     /// Writes the internals of [`Estimator::extra_quantities`] into `out` (same length).
-    fn extras(&self, _out: &mut [f64]) {}
+    fn extras(&self, _out: &mut Extras<'_>) {}
 }

@@ -5,7 +5,7 @@ use super::estimate::{Estimator, Measurements};
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
-use super::series::SeriesSpec;
+use super::series::{Extras, SeriesSpec};
 use super::study::{OutputFile, SweepSpec, TimingItem};
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
@@ -57,7 +57,7 @@ pub trait TruthModel: Send {
         Vec::new()
     }
     /// Writes the values of [`TruthModel::extra_series`], in order, into `out` (same length).
-    fn extra_values(&self, _out: &mut [f64]) {}
+    fn extra_values(&self, _out: &mut Extras<'_>) {}
     /// Draws the random inputs (e.g. a disturbance torque) for the next step.
     fn draw_noise(&mut self, _rng: &mut ChaCha8Rng) {}
 }
@@ -74,7 +74,7 @@ pub trait SensorModel: Send {
         Vec::new()
     }
     /// Writes the values of [`SensorModel::extra_series`], in order, into `out`.
-    fn extra_values(&self, _out: &mut [f64]) {}
+    fn extra_values(&self, _out: &mut Extras<'_>) {}
     /// What the last sample adds to the 3D view (reference directions, the orbit).
     fn scene(&self) -> SceneExtras {
         SceneExtras::default()

@@ -34,7 +34,7 @@ pub use page::{
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};
-pub use series::{PlotTab, Quantity, SeriesGroup, SeriesSpec, display_unit};
+pub use series::{Extras, PlotTab, Quantity, SeriesGroup, SeriesSpec, display_unit};
 pub use study::{
     ExampleLog, OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem,
 };

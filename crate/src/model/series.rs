@@ -58,6 +58,67 @@ impl Quantity {
     }
 }
 
+/// Where a model or an estimator writes this step's values of its own series, each under
+/// its quantity and in the order it declared them. In a debug build (every test) a value
+/// written under another quantity than the one declared at its place fails at once, so a
+/// value never lands in another series' column.
+///
+/// ```
+/// # use attlab::model::{Extras, Quantity};
+/// const A: Quantity = Quantity::new("a", "a", "");
+/// const B: Quantity = Quantity::new("b", "b", "");
+/// let keys: Vec<Box<str>> = vec!["a".into(), "b".into()];
+/// let mut out = [0.0; 2];
+/// let mut extras = Extras::new(&keys, &mut out);
+/// extras.put(&A, 1.0);
+/// extras.put(&B, 2.0);
+/// assert_eq!(extras.written(), 2);
+/// assert_eq!(out, [1.0, 2.0]);
+/// ```
+pub struct Extras<'a> {
+    keys: &'a [Box<str>],
+    out: &'a mut [f64],
+    at: usize,
+}
+
+impl<'a> Extras<'a> {
+    /// Values for the quantities with these keys, written into `out` (one slot per key).
+    pub fn new(keys: &'a [Box<str>], out: &'a mut [f64]) -> Self {
+        debug_assert_eq!(keys.len(), out.len(), "one slot per declared quantity");
+        Self { keys, out, at: 0 }
+    }
+
+    /// This step's value of `quantity`, the next one declared.
+    pub fn put(&mut self, quantity: &Quantity, value: f64) {
+        debug_assert!(
+            self.keys.get(self.at).is_some_and(|k| **k == *quantity.key),
+            "extra value `{}` written where `{}` is declared",
+            quantity.key,
+            self.keys.get(self.at).map_or("nothing", |k| k)
+        );
+        if let Some(slot) = self.out.get_mut(self.at) {
+            *slot = value;
+        }
+        self.at += 1;
+    }
+
+    /// The values of `quantities`, in order.
+    pub fn put_all<'q>(
+        &mut self,
+        quantities: impl IntoIterator<Item = &'q Quantity>,
+        values: impl IntoIterator<Item = f64>,
+    ) {
+        for (q, v) in quantities.into_iter().zip(values) {
+            self.put(q, v);
+        }
+    }
+
+    /// How many values were written.
+    pub fn written(&self) -> usize {
+        self.at
+    }
+}
+
 /// A unit as a student reads it: degrees as °, the rest as written.
 ///
 /// ```

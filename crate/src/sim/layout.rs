@@ -8,7 +8,8 @@ use super::catalogue::{Candidate, Q, Source, bit, candidates, error_truth_needs,
 use super::derived::{Derived, NAN_DERIVED, derive, nees_att};
 use super::selection::{Selection, UnknownSeries};
 use crate::model::{
-    Attitude, Estimate, Estimator, SensorModel, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Attitude, Estimate, Estimator, Extras, SensorModel, SeriesKey, SeriesSpec, TruthModel,
+    TruthState,
 };
 
 /// The column table of one simulation.
@@ -20,14 +21,17 @@ pub struct Layout {
     single_axis: bool,
     truth_needs: u32,
     est_needs: Vec<u32>,
-    truth_extra_len: usize,
     any_truth_extra: bool,
-    extra_lens: Vec<usize>,
     any_extra: Vec<bool>,
     truth_extra_buf: Vec<f64>,
     any_sensor_extra: bool,
     sensor_extra_buf: Vec<f64>,
     extra_bufs: Vec<Vec<f64>>,
+    /// The keys of the truth's, the sensors' and each estimator's own quantities, in the
+    /// order their values are written ([`Extras`] checks it).
+    truth_extra_keys: Vec<Box<str>>,
+    sensor_extra_keys: Vec<Box<str>>,
+    extra_keys: Vec<Vec<Box<str>>>,
     est_derived: Vec<Derived>,
 }
 
@@ -85,12 +89,13 @@ impl Layout {
                 _ => {}
             }
         }
-        let extra_lens: Vec<usize> = estimators
+        let extra_keys: Vec<Vec<Box<str>>> = estimators
             .iter()
-            .map(|e| e.extra_quantities().len())
+            .map(|e| keys_of_estimator(e.as_ref()))
             .collect();
-        let truth_extra_len = truth.extra_series().len();
-        let sensor_extra_len = sensors.extra_series().len();
+        let truth_extra_keys = keys_of(&truth.extra_series());
+        let sensor_extra_keys = keys_of(&sensors.extra_series());
+        let sensor_extra_len = sensor_extra_keys.len();
         Ok(Self {
             columns,
             specs,
@@ -98,14 +103,15 @@ impl Layout {
             single_axis,
             truth_needs,
             est_needs,
-            truth_extra_len,
             any_truth_extra,
-            extra_bufs: extra_lens.iter().map(|n| vec![f64::NAN; *n]).collect(),
-            extra_lens,
+            extra_bufs: extra_keys.iter().map(|k| vec![f64::NAN; k.len()]).collect(),
             any_extra,
-            truth_extra_buf: vec![f64::NAN; truth_extra_len],
+            truth_extra_buf: vec![f64::NAN; truth_extra_keys.len()],
             any_sensor_extra: any_sensor_extra && sensor_extra_len > 0,
             sensor_extra_buf: vec![f64::NAN; sensor_extra_len],
+            truth_extra_keys,
+            sensor_extra_keys,
+            extra_keys,
             est_derived: vec![NAN_DERIVED; n_est],
         })
     }
@@ -156,19 +162,22 @@ impl Layout {
         } else {
             NAN_DERIVED
         };
-        if self.any_truth_extra && self.truth_extra_len > 0 {
-            truth_model.extra_values(&mut self.truth_extra_buf);
+        if self.any_truth_extra && !self.truth_extra_keys.is_empty() {
+            let keys = &self.truth_extra_keys;
+            truth_model.extra_values(&mut Extras::new(keys, &mut self.truth_extra_buf));
         }
         if self.any_sensor_extra {
-            sensors.extra_values(&mut self.sensor_extra_buf);
+            let keys = &self.sensor_extra_keys;
+            sensors.extra_values(&mut Extras::new(keys, &mut self.sensor_extra_buf));
         }
         for (i, e) in estimates.iter().enumerate() {
             let needs = self.est_needs[i];
             if needs != 0 {
                 self.est_derived[i] = derive(needs, e, Some((truth, &truth_d)), self.single_axis);
             }
-            if self.any_extra[i] && self.extra_lens[i] > 0 {
-                estimators[i].extras(&mut self.extra_bufs[i]);
+            if self.any_extra[i] && !self.extra_keys[i].is_empty() {
+                let keys = &self.extra_keys[i];
+                estimators[i].extras(&mut Extras::new(keys, &mut self.extra_bufs[i]));
             }
         }
         let est_d = &self.est_derived;
@@ -198,6 +207,24 @@ impl Layout {
             *slot = v;
         }
     }
+}
+
+/// The keys of an estimator's own quantities, in its order.
+fn keys_of_estimator(e: &dyn Estimator) -> Vec<Box<str>> {
+    e.extra_quantities().iter().map(|q| q.key.into()).collect()
+}
+
+/// The quantity keys of a lab's own series (`truth.energy_j` → `energy_j`).
+fn keys_of(specs: &[SeriesSpec]) -> Vec<Box<str>> {
+    specs
+        .iter()
+        .map(|s| {
+            s.name
+                .split_once('.')
+                .map_or(s.name.as_str(), |(_, k)| k)
+                .into()
+        })
+        .collect()
 }
 
 /// Which of `candidates` `selection` keeps (with `figure_series`, the series the lab's

@@ -2,13 +2,19 @@
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
 use crate::model::{
-    LabData, Measurements, ParamValues, SensorModel, SeriesGroup, SeriesSpec, TruthModel,
-    TruthState,
+    Extras, LabData, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey,
+    SeriesSpec, TruthModel, TruthState,
 };
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 use std::sync::Arc;
+
+/// The logged gyro reading (deg/s), a series of the replayed sensors.
+const LOGGED_GYRO_DEG_S: Quantity = Quantity::new("gyro_deg_s", "logged gyro reading ω", "deg/s");
+/// The logged accelerometer's angle (deg), where the log has an accelerometer.
+const LOGGED_ACCEL_ANGLE_DEG: Quantity =
+    Quantity::new("accel_angle_deg", "logged accelerometer angle θ_acc", "deg");
 
 /// "Truth" of a replay: time runs, the logged rate stands in for the true rate, the angle is
 /// unknown (so every error is missing).
@@ -101,29 +107,31 @@ impl SensorModel for LogSensor {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        let mut s = vec![
-            SeriesSpec::new("sensors.gyro_deg_s", "deg/s", SeriesGroup::Rate)
-                .labelled("logged gyro reading ω"),
-        ];
+        let mut s = vec![SeriesSpec::of(
+            SeriesKey::sensors(&LOGGED_GYRO_DEG_S),
+            SeriesGroup::Rate,
+        )];
         if !self.log.accel_g.is_empty() {
-            s.push(
-                SeriesSpec::new("sensors.accel_angle_deg", "deg", SeriesGroup::Attitude)
-                    .labelled("logged accelerometer angle θ_acc"),
-            );
+            s.push(SeriesSpec::of(
+                SeriesKey::sensors(&LOGGED_ACCEL_ANGLE_DEG),
+                SeriesGroup::Attitude,
+            ));
         }
         s
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
+    fn extra_values(&self, out: &mut Extras<'_>) {
         let k = self.last;
         let rate = k.and_then(|k| self.log.rate_rad_s.get(k));
-        if let Some(slot) = out.get_mut(0) {
-            *slot = rate.map_or(f64::NAN, |w| w.to_degrees());
-        }
-        if let Some(slot) = out.get_mut(1) {
-            *slot = k
+        out.put(
+            &LOGGED_GYRO_DEG_S,
+            rate.map_or(f64::NAN, |w| w.to_degrees()),
+        );
+        if !self.log.accel_g.is_empty() {
+            let angle = k
                 .and_then(|k| self.log.accel_g.get(k))
                 .map_or(f64::NAN, |a| a.y.atan2(a.z).to_degrees());
+            out.put(&LOGGED_ACCEL_ANGLE_DEG, angle);
         }
     }
 }

@@ -2,7 +2,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use attlab::labs;
-use attlab::model::{Lab, ParamKind, ParamValues, SeriesKey};
+use attlab::model::{Extras, Lab, ParamKind, ParamValues, SeriesKey};
 use attlab::sim::{Selection, SimOptions, Simulation};
 use rand::SeedableRng;
 use std::collections::HashSet;
@@ -153,14 +153,32 @@ fn estimators_publish_what_they_describe() {
                 "{}",
                 e.id()
             );
-            let mut extras = vec![f64::NAN; e.extra_quantities().len()];
+            let keys: Vec<Box<str>> = e.extra_quantities().iter().map(|q| q.key.into()).collect();
+            let mut values = vec![f64::NAN; keys.len()];
+            let mut extras = Extras::new(&keys, &mut values);
             e.extras(&mut extras);
+            assert_eq!(extras.written(), keys.len(), "{}: extras written", e.id());
             assert!(
-                extras.iter().all(|v| !v.is_nan()),
+                values.iter().all(|v| !v.is_nan()),
                 "{}: extras not all written",
                 e.id()
             );
         }
+        // The truth's and the sensors' own series: every declared value written, under its
+        // own quantity (Extras checks the order).
+        let key_of = |s: &attlab::model::SeriesSpec| -> Box<str> {
+            s.name.split_once('.').map_or(&*s.name, |(_, k)| k).into()
+        };
+        let keys: Vec<Box<str>> = run.truth.extra_series().iter().map(key_of).collect();
+        let mut values = vec![f64::NAN; keys.len()];
+        let mut extras = Extras::new(&keys, &mut values);
+        run.truth.extra_values(&mut extras);
+        assert_eq!(extras.written(), keys.len(), "{}: truth extras", lab.id());
+        let keys: Vec<Box<str>> = run.sensors.extra_series().iter().map(key_of).collect();
+        let mut values = vec![f64::NAN; keys.len()];
+        let mut extras = Extras::new(&keys, &mut values);
+        run.sensors.extra_values(&mut extras);
+        assert_eq!(extras.written(), keys.len(), "{}: sensor extras", lab.id());
     }
 }
 

@@ -24,7 +24,7 @@
 use super::kf::KalmanState;
 use crate::math::symmetrize;
 use crate::model::{
-    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues,
+    Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues,
     Quantity, StateInfo,
 };
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
@@ -441,22 +441,22 @@ impl<const N: usize> Estimator for Mekf<N> {
         }
     }
 
-    fn extras(&self, out: &mut [f64]) {
-        out[0] = self.nis[0];
-        out[1] = self.nis[1];
-        let mut k = 2;
-        let mut put = |v: Vector3<f64>| {
-            out[k..k + 3].copy_from_slice(v.as_slice());
-            k += 3;
-        };
+    fn extras(&self, out: &mut Extras<'_>) {
+        out.put(&NIS, self.nis[0]);
+        out.put(&NIS_DOF, self.nis[1]);
         if self.cfg.states.gyro_bias().is_some() {
-            put(self.gyro_bias.map(f64::to_degrees));
+            let b = self.gyro_bias.map(f64::to_degrees);
+            out.put_all(
+                [&GBIAS_X_DEG_S, &GBIAS_Y_DEG_S, &GBIAS_Z_DEG_S],
+                b.iter().copied(),
+            );
         }
         if self.cfg.states.mag_bias().is_some() {
-            put(self.mag_bias);
+            let b = self.mag_bias;
+            out.put_all([&MBIAS_X_NT, &MBIAS_Y_NT, &MBIAS_Z_NT], b.iter().copied());
         }
         if let Some(d) = self.dist {
-            put(d.d);
+            out.put_all([&D_X_S2, &D_Y_S2, &D_Z_S2], d.d.iter().copied());
         }
     }
 }

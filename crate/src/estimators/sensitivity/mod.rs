@@ -23,7 +23,8 @@
 
 use crate::math::{sequence_from_quaternion, symmetrize, wrap_pi};
 use crate::model::{
-    Attitude, Estimate, Estimator, EstimatorStatus, Measurements, ParamValues, Quantity, Tuner,
+    Attitude, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
+    Tuner,
 };
 use nalgebra::{
     Complex, Matrix2, Matrix3, Matrix4, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector4,
@@ -406,7 +407,7 @@ impl Estimator for SensitivityCorrection {
         QUANTITIES
     }
 
-    fn extras(&self, out: &mut [f64]) {
+    fn extras(&self, out: &mut Extras<'_>) {
         let axes = self.settings.axes;
         let k = sequence_from_quaternion(axes, &UnitQuaternion::new_normalize(self.q));
         // Within tolerance of the last reference on every angle (the paper's stop rule).
@@ -417,21 +418,16 @@ impl Estimator for SensitivityCorrection {
                 .all(|(a, b)| wrap_pi(a - b).abs() <= self.settings.tolerance_rad)
         });
         let i = self.info;
-        out.copy_from_slice(&[
-            self.p.x.to_degrees(),
-            self.p.y.to_degrees(),
-            self.p.z.to_degrees(),
-            k[0],
-            k[1],
-            k[2],
-            f64::from(u8::from(within)),
-            i.condition,
-            i.singular_values[0],
-            i.singular_values[1],
-            i.singular_values[2],
-            i.step,
-            self.q.norm(),
-        ]);
+        out.put_all(
+            [&P_X_DEG_S, &P_Y_DEG_S, &P_Z_DEG_S],
+            self.p.iter().map(|v| v.to_degrees()),
+        );
+        out.put_all([&ANGLE_1_RAD, &ANGLE_2_RAD, &ANGLE_3_RAD], k);
+        out.put(&WITHIN_TOL, f64::from(u8::from(within)));
+        out.put(&COND_UTQU, i.condition);
+        out.put_all([&SV1, &SV2, &SV3], i.singular_values);
+        out.put(&STEP_S, i.step);
+        out.put(&NORM_LAMBDA, self.q.norm());
     }
 }
 

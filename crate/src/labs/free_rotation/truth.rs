@@ -3,7 +3,8 @@
 use crate::dynamics::{RigidBody, RigidBodyState};
 use crate::math::EulerYpr;
 use crate::model::{
-    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel,
+    TruthState,
 };
 use nalgebra::Vector3;
 
@@ -72,8 +73,8 @@ impl TruthModel for Tumble {
         ]
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out[0] = self.body.kinetic_energy_j();
-        out[1] = self.body.angular_momentum_ref().norm();
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put(&ENERGY_J, self.body.kinetic_energy_j());
+        out.put(&MOMENTUM_N_M_S, self.body.angular_momentum_ref().norm());
     }
 }

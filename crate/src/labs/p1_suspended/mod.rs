@@ -11,9 +11,9 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec, ParamValues,
-    Preset, Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup,
-    SeriesKey, SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
+    Estimator, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec,
+    ParamValues, Preset, Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel,
+    SeriesGroup, SeriesKey, SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
@@ -431,9 +431,9 @@ impl TruthModel for Suspended {
         ]
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out[0] = self.pendulum.period_s();
-        out[1] = self.swing_angle_and_rate().0.to_degrees();
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put(&PERIOD_S, self.pendulum.period_s());
+        out.put(&SWING_DEG, self.swing_angle_and_rate().0.to_degrees());
     }
 
     fn draw_noise(&mut self, rng: &mut ChaCha8Rng) {

@@ -21,7 +21,7 @@ use crate::dynamics::{
 };
 use crate::estimators::Onboard;
 use crate::model::{
-    LabData, Measurements, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
+    Extras, LabData, Measurements, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
     SensorModel, SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::sensors::{RandomWalk, WhiteNoise};
@@ -452,7 +452,7 @@ impl SensorModel for Sensors {
         self.scene.clone()
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
+    fn extra_values(&self, out: &mut Extras<'_>) {
         let (e, sun, star) = self.seen;
         let b = self.gyro_bias_rad_s
             + Vector3::new(
@@ -460,12 +460,11 @@ impl SensorModel for Sensors {
                 self.gyro_walk[1].value,
                 self.gyro_walk[2].value,
             );
-        out[..3].copy_from_slice(&[
-            f64::from(u8::from(e)),
-            f64::from(u8::from(sun)),
-            f64::from(u8::from(star)),
-        ]);
-        out[3..6].copy_from_slice(b.map(f64::to_degrees).as_slice());
-        out[6..9].copy_from_slice(self.mag_bias_nt.as_slice());
+        let flag = |on: bool| f64::from(u8::from(on));
+        out.put(&ECLIPSE, flag(e));
+        out.put(&SUN_SEEN, flag(sun));
+        out.put(&STAR_AVAILABLE, flag(star));
+        out.put_all(&GYRO_BIAS, b.iter().map(|v| v.to_degrees()));
+        out.put_all(&MAG_BIAS, self.mag_bias_nt.iter().copied());
     }
 }

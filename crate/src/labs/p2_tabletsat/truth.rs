@@ -4,7 +4,8 @@
 
 use crate::dynamics::{CircularOrbit, Epoch};
 use crate::model::{
-    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel,
+    TruthState,
 };
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rand::Rng;
@@ -214,7 +215,7 @@ impl TruthModel for Spacecraft {
             .collect()
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out.copy_from_slice(self.h.as_slice());
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put_all(&WHEEL_H, self.h.iter().copied());
     }
 }

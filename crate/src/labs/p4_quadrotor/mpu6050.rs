@@ -19,7 +19,7 @@
 //! rig moves fast, as on the real bench.
 
 use crate::model::{
-    Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    Extras, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
     TruthState,
 };
 use crate::sensors::WhiteNoise;
@@ -151,8 +151,9 @@ impl SensorModel for Mpu6050 {
         ]
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out.copy_from_slice(&[self.last.0, self.last.1]);
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put(&ACCEL_ANGLE_DEG, self.last.0);
+        out.put(&GYRO_DEG_S, self.last.1);
     }
 }
 

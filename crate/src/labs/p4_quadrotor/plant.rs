@@ -21,7 +21,8 @@
 
 use crate::estimators::ControlInput;
 use crate::model::{
-    LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel,
+    TruthState,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -324,14 +325,12 @@ impl TruthModel for Plant {
         ]
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out.copy_from_slice(&[
-            self.setpoint_rad().to_degrees(),
-            self.accel_rad_s2.to_degrees(),
-            self.control.varying_rad_s2,
-            self.control.constant_rad_s2,
-            self.hover_u0(),
-            self.forces_n.iter().sum(),
-        ]);
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put(&SETPOINT_DEG, self.setpoint_rad().to_degrees());
+        out.put(&ACCEL_DEG_S2, self.accel_rad_s2.to_degrees());
+        out.put(&U_V_RAD_S2, self.control.varying_rad_s2);
+        out.put(&U0_RAD_S2, self.control.constant_rad_s2);
+        out.put(&U0_NEEDED_RAD_S2, self.hover_u0());
+        out.put(&THRUST_TOTAL_N, self.forces_n.iter().sum());
     }
 }

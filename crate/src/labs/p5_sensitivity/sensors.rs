@@ -2,7 +2,7 @@
 //! noise, and lost during a dropout).
 
 use crate::model::{
-    Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    Extras, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
     TruthState,
 };
 use crate::sensors::WhiteNoise;
@@ -86,7 +86,7 @@ impl SensorModel for Sensors {
         )]
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out[0] = f64::from(u8::from(self.delivered));
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        out.put(&REFERENCE, f64::from(u8::from(self.delivered)));
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::estimators::sensitivity::{ANGLE_1_RAD, ANGLE_2_RAD, ANGLE_3_RAD};
 use crate::model::{
-    ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -67,7 +67,8 @@ impl TruthModel for Turning {
             .collect()
     }
 
-    fn extra_values(&self, out: &mut [f64]) {
-        out.copy_from_slice(&crate::math::sequence_from_quaternion(self.axes, &self.q));
+    fn extra_values(&self, out: &mut Extras<'_>) {
+        let angles = crate::math::sequence_from_quaternion(self.axes, &self.q);
+        out.put_all(ANGLES, angles);
     }
 }
