@@ -67,9 +67,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
         egui::FontId::proportional(13.0),
         Color32::from_gray(200),
     );
-    let legend_h = 16.0 * sources.len() as f32;
-    let center = Pos2::new(rect.center().x, rect.center().y - legend_h / 2.0 + 8.0);
-    let radius = ((rect.width().min(rect.height() - legend_h - 30.0)) / 2.0 - 12.0).max(20.0);
+    let (center, radius, readouts) = dial_layout(rect, sources.len());
     painter.circle_stroke(center, radius, Stroke::new(1.5, Color32::from_gray(120)));
     for k in 0..36 {
         let a = f64::from(k) * 10f64.to_radians();
@@ -86,12 +84,18 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
             Stroke::new(1.0, Color32::from_gray(140)),
         );
     }
-    for (label, a) in [
-        ("0°", 0.0),
-        ("90°", 90.0),
-        ("±180°", 180.0),
-        ("−90°", -90.0),
-    ] {
+    // On a small dial the ticks say enough; the labels would run into each other.
+    let labels: &[(&str, f64)] = if radius >= 40.0 {
+        &[
+            ("0°", 0.0),
+            ("90°", 90.0),
+            ("±180°", 180.0),
+            ("−90°", -90.0),
+        ]
+    } else {
+        &[]
+    };
+    for &(label, a) in labels {
         let pos = center + direction(f64::to_radians(a)) * (radius * 0.74);
         painter.text(
             pos,
@@ -116,19 +120,45 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
     }
     painter.circle_filled(center, 4.0, Color32::from_gray(200));
     for (k, s) in sources.iter().enumerate() {
-        let y = rect.bottom() - legend_h - 4.0 + 16.0 * k as f32;
+        let at = readouts + Vec2::new(0.0, READOUT_ROW_PT * k as f32);
         let text = if s.angle_rad.is_finite() {
             format!("{}  {:+.2}°", s.name, s.angle_rad.to_degrees())
         } else {
             format!("{}  —", s.name)
         };
         painter.text(
-            Pos2::new(rect.left() + 10.0, y),
+            at,
             egui::Align2::LEFT_TOP,
             text,
             egui::FontId::monospace(11.0),
             s.color,
         );
+    }
+}
+
+/// Height of one readout line under or beside the dial (points).
+const READOUT_ROW_PT: f32 = 16.0;
+/// Height of the dial's title (points).
+const DIAL_TITLE_PT: f32 = 24.0;
+
+/// Where the dial goes in `rect` with `n` readouts: its centre and radius, and the top left
+/// of the readouts. A wide, low rect (a projector's short top row) puts the readouts beside
+/// the dial; a tall one puts them below. Neither overlaps the title.
+fn dial_layout(rect: Rect, n: usize) -> (Pos2, f32, Pos2) {
+    let body = Rect::from_min_max(rect.min + Vec2::new(0.0, DIAL_TITLE_PT), rect.max);
+    let readouts_h = READOUT_ROW_PT * n as f32;
+    if body.width() > 1.3 * body.height() {
+        let radius = ((body.height() - 8.0) / 2.0)
+            .min(body.width() * 0.25)
+            .max(12.0);
+        let center = Pos2::new(body.left() + 12.0 + radius, body.center().y);
+        let readouts = Pos2::new(center.x + radius + 14.0, body.center().y - readouts_h / 2.0);
+        (center, radius, readouts)
+    } else {
+        let radius = (body.width().min(body.height() - readouts_h - 8.0) / 2.0 - 8.0).max(12.0);
+        let center = Pos2::new(body.center().x, body.top() + 4.0 + radius);
+        let readouts = Pos2::new(rect.left() + 10.0, center.y + radius + 8.0);
+        (center, radius, readouts)
     }
 }
 
@@ -210,6 +240,34 @@ mod tests {
             t.push(1.0 + f64::from(k), &[source(f64::NAN)]);
         }
         assert_eq!(t.trails[0].1.len(), 1, "a NaN angle adds no point");
+    }
+
+    #[test]
+    fn the_dial_never_overlaps_its_title_or_its_readouts() {
+        for (w, h) in [
+            (260.0, 130.0),
+            (300.0, 420.0),
+            (180.0, 180.0),
+            (520.0, 150.0),
+        ] {
+            let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(w, h));
+            let n = 4;
+            let (c, r, at) = dial_layout(rect, n);
+            let dial = Rect::from_center_size(c, Vec2::splat(2.0 * r));
+            let readouts = Rect::from_min_size(at, Vec2::new(90.0, READOUT_ROW_PT * n as f32));
+            assert!(
+                dial.top() >= rect.top() + DIAL_TITLE_PT,
+                "{w}×{h}: dial under the title"
+            );
+            assert!(
+                !dial.intersects(readouts),
+                "{w}×{h}: {dial:?} and {readouts:?}"
+            );
+            assert!(
+                rect.contains_rect(dial),
+                "{w}×{h}: dial {dial:?} outside {rect:?}"
+            );
+        }
     }
 
     #[test]
