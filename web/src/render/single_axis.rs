@@ -67,7 +67,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
         egui::FontId::proportional(13.0),
         Color32::from_gray(200),
     );
-    let (center, radius, readouts) = dial_layout(rect, sources.len());
+    let (center, radius, readouts, row) = dial_layout(rect, sources.len());
     painter.circle_stroke(center, radius, Stroke::new(1.5, Color32::from_gray(120)));
     for k in 0..36 {
         let a = f64::from(k) * 10f64.to_radians();
@@ -120,7 +120,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
     }
     painter.circle_filled(center, 4.0, Color32::from_gray(200));
     for (k, s) in sources.iter().enumerate() {
-        let at = readouts + Vec2::new(0.0, READOUT_ROW_PT * k as f32);
+        let at = readouts + Vec2::new(0.0, row * k as f32);
         let text = if s.angle_rad.is_finite() {
             format!("{}  {:+.2}°", s.name, s.angle_rad.to_degrees())
         } else {
@@ -138,27 +138,37 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
 
 /// Height of one readout line under or beside the dial (points).
 const READOUT_ROW_PT: f32 = 16.0;
+/// Width a readout line needs ("kf-torsion  +123.45°" in 11-pt monospace), in points.
+const READOUT_W_PT: f32 = 125.0;
 /// Height of the dial's title (points).
 const DIAL_TITLE_PT: f32 = 24.0;
 
-/// Where the dial goes in `rect` with `n` readouts: its centre and radius, and the top left
-/// of the readouts. A wide, low rect (a projector's short top row) puts the readouts beside
-/// the dial; a tall one puts them below. Neither overlaps the title.
-fn dial_layout(rect: Rect, n: usize) -> (Pos2, f32, Pos2) {
+/// Where the dial goes in `rect` with `n` readouts: its centre and radius, the top left of
+/// the readouts and their line height. A wide, low rect (a projector's short top row) puts
+/// the readouts beside the dial; otherwise they go below it, closer together where the
+/// view is short. Neither overlaps the title, and both stay inside `rect`.
+fn dial_layout(rect: Rect, n: usize) -> (Pos2, f32, Pos2, f32) {
+    const MIN_RADIUS: f32 = 12.0;
     let body = Rect::from_min_max(rect.min + Vec2::new(0.0, DIAL_TITLE_PT), rect.max);
-    let readouts_h = READOUT_ROW_PT * n as f32;
-    if body.width() > 1.3 * body.height() {
+    let rows = n.max(1) as f32;
+    // Beside the dial only where a dial of radius 24 still fits next to the readouts.
+    if body.width() > 1.3 * body.height() && body.width() >= 26.0 + READOUT_W_PT + 48.0 {
+        let row = READOUT_ROW_PT.min((body.height() - 4.0) / rows);
         let radius = ((body.height() - 8.0) / 2.0)
-            .min(body.width() * 0.25)
-            .max(12.0);
+            .min((body.width() - 26.0 - READOUT_W_PT) / 2.0)
+            .max(MIN_RADIUS);
         let center = Pos2::new(body.left() + 12.0 + radius, body.center().y);
-        let readouts = Pos2::new(center.x + radius + 14.0, body.center().y - readouts_h / 2.0);
-        (center, radius, readouts)
+        let readouts = Pos2::new(center.x + radius + 14.0, body.center().y - row * rows / 2.0);
+        (center, radius, readouts, row)
     } else {
-        let radius = (body.width().min(body.height() - readouts_h - 8.0) / 2.0 - 8.0).max(12.0);
+        // 4 above the dial, 8 between it and the readouts, 8 below them.
+        let row = READOUT_ROW_PT
+            .min((body.height() - 2.0 * MIN_RADIUS - 20.0) / rows)
+            .max(10.0);
+        let radius = (body.width().min(body.height() - row * rows - 20.0) / 2.0).max(MIN_RADIUS);
         let center = Pos2::new(body.center().x, body.top() + 4.0 + radius);
         let readouts = Pos2::new(rect.left() + 10.0, center.y + radius + 8.0);
-        (center, radius, readouts)
+        (center, radius, readouts, row)
     }
 }
 
@@ -244,29 +254,32 @@ mod tests {
 
     #[test]
     fn the_dial_never_overlaps_its_title_or_its_readouts() {
-        for (w, h) in [
+        let views = [
             (260.0, 130.0),
             (300.0, 420.0),
             (180.0, 180.0),
             (520.0, 150.0),
-        ] {
+            (140.0, 129.0),
+        ];
+        for (w, h) in views {
             let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(w, h));
-            let n = 4;
-            let (c, r, at) = dial_layout(rect, n);
+            // The truth and p4's four filters.
+            let n = 5;
+            let (c, r, at, row) = dial_layout(rect, n);
             let dial = Rect::from_center_size(c, Vec2::splat(2.0 * r));
-            let readouts = Rect::from_min_size(at, Vec2::new(90.0, READOUT_ROW_PT * n as f32));
+            let readouts = Rect::from_min_size(at, Vec2::new(READOUT_W_PT, row * n as f32));
+            let tag = format!("{w}×{h}: dial {dial:?}, readouts {readouts:?}");
             assert!(
                 dial.top() >= rect.top() + DIAL_TITLE_PT,
-                "{w}×{h}: dial under the title"
+                "{tag}: under the title"
             );
+            assert!(!dial.intersects(readouts), "{tag}: they overlap");
+            assert!(rect.contains_rect(dial), "{tag}: the dial is cut off");
             assert!(
-                !dial.intersects(readouts),
-                "{w}×{h}: {dial:?} and {readouts:?}"
+                rect.contains_rect(readouts),
+                "{tag}: the readouts are cut off"
             );
-            assert!(
-                rect.contains_rect(dial),
-                "{w}×{h}: dial {dial:?} outside {rect:?}"
-            );
+            assert!(row >= 10.0, "{tag}: lines {row} pt apart");
         }
     }
 
