@@ -22,6 +22,32 @@ pub struct UrlState {
     pub params: ParamValues,
     /// Presenter mode (for a projector).
     pub presenter: bool,
+    /// The colour theme asked for; `None` follows the mode (light in presenter mode).
+    pub theme: Option<Theme>,
+}
+
+/// The page's colour theme.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Theme {
+    /// Light panels in dark type: for projectors, which wash dark backgrounds out.
+    Light,
+    /// Dark panels: for a screen in a dim room.
+    Dark,
+}
+
+impl Theme {
+    /// The word in a link (`theme=light`).
+    pub fn slug(self) -> &'static str {
+        match self {
+            Self::Light => "light",
+            Self::Dark => "dark",
+        }
+    }
+
+    /// The theme a page without an explicit choice shows: light in presenter mode.
+    pub fn for_mode(presenter: bool) -> Self {
+        if presenter { Self::Light } else { Self::Dark }
+    }
 }
 
 /// Speeds the UI offers (× real time).
@@ -48,6 +74,7 @@ impl UrlState {
             speed: 1.0,
             params: ParamValues::defaults(lab.params()),
             presenter: false,
+            theme: None,
         }
     }
 
@@ -60,6 +87,9 @@ impl UrlState {
             .append_pair("speed", &self.speed.to_string());
         if self.presenter {
             out.append_pair("presenter", "1");
+        }
+        if let Some(theme) = self.theme {
+            out.append_pair("theme", theme.slug());
         }
         if let Some(lab) = labs::find(self.lab_id) {
             for spec in lab.params() {
@@ -140,6 +170,11 @@ impl UrlState {
                     "0" | "false" | "off" => state.presenter = false,
                     _ => errors.push(err(*pos, item, "presenter must be 1 or 0".into())),
                 },
+                "theme" => match value.as_str() {
+                    "light" => state.theme = Some(Theme::Light),
+                    "dark" => state.theme = Some(Theme::Dark),
+                    _ => errors.push(err(*pos, item, "theme must be light or dark".into())),
+                },
                 _ => {
                     if let Err(e) = state.params.set_text(lab.params(), key, value) {
                         errors.push(err(*pos, item, e.to_string()));
@@ -173,6 +208,16 @@ mod tests {
         assert!(!back.presenter);
         assert_eq!(errors.len(), 1);
         assert!(errors[0].to_string().contains("presenter must be 1 or 0"));
+        let (back, errors) = UrlState::parse("theme=light");
+        assert_eq!((back.theme, errors.len()), (Some(Theme::Light), 0));
+        assert_eq!(UrlState::parse(&back.encode()).0.theme, Some(Theme::Light));
+        let (back, errors) = UrlState::parse("theme=sepia");
+        assert_eq!(back.theme, None);
+        assert!(
+            errors[0]
+                .to_string()
+                .contains("theme must be light or dark")
+        );
     }
 
     #[test]

@@ -22,6 +22,8 @@ pub struct AttLabApp {
     app_errors: Vec<String>,
     frames: u64,
     zoomed_for: Option<bool>,
+    /// The theme set on the context last.
+    themed: Option<attlab::state::Theme>,
     /// A PNG capture in progress.
     capture: Option<Capture>,
     /// Where the central area drew each part in the last frame.
@@ -38,9 +40,6 @@ impl AttLabApp {
     /// Creates the app, restoring lab, seed, speed and parameters from the URL fragment.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
         crate::render::fonts::install(&cc.egui_ctx);
-        // The 3D view and the sphere are drawn on dark panels, and the truth is drawn in
-        // white: the whole app is dark.
-        cc.egui_ctx.set_theme(egui::Theme::Dark);
         let gpu_ready = cc.wgpu_render_state.as_ref().map(body3d::init).is_some();
         let mut app = Self::headless(AppState::from_fragment(&platform::initial_fragment()));
         app.gpu_ready = gpu_ready;
@@ -60,6 +59,7 @@ impl AttLabApp {
             app_errors: Vec::new(),
             frames: 0,
             zoomed_for: None,
+            themed: None,
             capture: None,
             regions: Regions::default(),
             last_png: None,
@@ -155,9 +155,27 @@ impl AttLabApp {
             });
             self.zoomed_for = Some(self.state.view().presenter);
         }
+        let theme = self.state.view().theme();
+        if self.themed != Some(theme) {
+            ui.ctx().set_theme(match theme {
+                attlab::state::Theme::Light => egui::Theme::Light,
+                attlab::state::Theme::Dark => egui::Theme::Dark,
+            });
+            self.themed = Some(theme);
+        }
+        // A phone or an upright tablet: the view and the plot on top, the controls in a sheet.
+        let narrow = panels::is_narrow(ui.ctx());
+        if narrow {
+            panels::touch_style(ui);
+        }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state, &mut commands);
-        panels::controls(ui, &self.state, &mut commands);
+        if narrow {
+            panels::narrow_sheet(ui, &self.state, &mut commands);
+            panels::narrow_bar(ui, &self.state, &mut commands);
+        } else {
+            panels::controls(ui, &self.state, &mut commands);
+        }
         self.regions = Regions::default();
         panels::central(
             ui,

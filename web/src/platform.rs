@@ -43,6 +43,19 @@ pub fn set_fragment(fragment: &str) {
     let _ = fragment;
 }
 
+/// The page's address without its fragment (`https://host/path/`), in the browser.
+pub fn page_address() -> Option<String> {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let href = web_sys::window()?.location().href().ok()?;
+        Some(href.split('#').next().unwrap_or_default().to_string())
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        None
+    }
+}
+
 /// What the page test reads as `window.attlabStatus`.
 pub struct Status<'a> {
     /// Frames drawn.
@@ -117,9 +130,9 @@ pub fn publish_status(status: &Status<'_>) {
     let _ = status;
 }
 
-/// Offers `contents` to the user as a file named `name`, through `rfd`: in the browser a
-/// download link (rfd's overlay: click it to save), on the desktop a save dialog. Returns a
-/// message for the user.
+/// Offers `contents` to the user as a file named `name`: in the browser a direct download
+/// (a link to a blob, clicked at once: nothing on the page waits for a click), on the
+/// desktop a save dialog. Returns a message for the user.
 /// On the desktop, `dir` saves there without asking (scripted and headless use).
 pub fn save_file(
     name: &str,
@@ -130,19 +143,8 @@ pub fn save_file(
     let _ = (mime, dir);
     #[cfg(target_arch = "wasm32")]
     {
-        let owned = name.to_string();
-        wasm_bindgen_futures::spawn_local(async move {
-            let name = owned;
-            if let Some(handle) = rfd::AsyncFileDialog::new()
-                .set_file_name(&name)
-                .save_file()
-                .await
-                && let Err(e) = handle.write(&contents).await
-            {
-                log::error!("saving {name}: {e}");
-            }
-        });
-        Ok(format!("{name} ready: click the download link"))
+        download(name, mime, &contents).map_err(|e| format!("the browser refused: {e:?}"))?;
+        Ok(format!("{name} downloaded"))
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
@@ -157,6 +159,32 @@ pub fn save_file(
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         Ok(format!("saved {}", path.display()))
     }
+}
+
+/// Downloads `contents` as `name` through a blob URL and a clicked `<a download>`; the URL
+/// is revoked a minute later (the browser has the file by then).
+#[cfg(target_arch = "wasm32")]
+fn download(name: &str, mime: &str, contents: &[u8]) -> Result<(), wasm_bindgen::JsValue> {
+    use wasm_bindgen::JsCast;
+    let window = web_sys::window().ok_or("no window")?;
+    let document = window.document().ok_or("no document")?;
+    let bytes = js_sys::Uint8Array::from(contents);
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(
+        &js_sys::Array::of1(&bytes),
+        &options,
+    )?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob)?;
+    let a: web_sys::HtmlAnchorElement = document.create_element("a")?.dyn_into()?;
+    a.set_href(&url);
+    a.set_download(name);
+    a.click();
+    let revoke = wasm_bindgen::closure::Closure::once_into_js(move || {
+        let _ = web_sys::Url::revoke_object_url(&url);
+    });
+    window.set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 60_000)?;
+    Ok(())
 }
 
 /// Where a picked file arrives: `(file name, text)` or an error message. The browser's picker

@@ -120,6 +120,17 @@ impl ViewKind {
             Self::PhasePortrait => "phase-portrait",
         }
     }
+
+    /// The view's name for a reader (the switcher of a narrow screen).
+    pub fn title(self) -> &'static str {
+        match self {
+            Self::Body3d => "3D body",
+            Self::Sphere => "Riemann sphere",
+            Self::WPlane => "w plane",
+            Self::Dial => "Dial",
+            Self::PhasePortrait => "Phase portrait",
+        }
+    }
 }
 
 /// The views of a lab that does not say otherwise.

@@ -4,6 +4,7 @@
 
 use super::tabs;
 use crate::export::Regions;
+use crate::render::palette::{self, Palette};
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
 use attlab::math::{WzAttitude, WzChart};
@@ -47,11 +48,22 @@ pub fn central(
             .data(|d| d.get_temp::<f32>(chrome_id()))
             .unwrap_or(PLOT_CHROME_PT);
         let below_views = PLOT_SHARE * window_h + chrome + 6.0;
-        let top_h = (full.height() - below_views).clamp(MIN_VIEW_PT, full.height() * 0.55);
+        // Never more than 55 % of the area (a short window, or a phone with its sheet open,
+        // can make that less than the views' least height: then that wins).
+        let top_h = (full.height() - below_views)
+            .max(MIN_VIEW_PT)
+            .min(full.height() * 0.55);
         let top = Rect::from_min_size(full.min, Vec2::new(full.width(), top_h));
-        let total: f32 = kinds.iter().map(|k| weight(*k)).sum();
+        // A narrow screen shows one view at a time (the bar's switcher picks it).
+        let shown: Vec<(usize, &ViewKind)> = if super::narrow::is_narrow(ui.ctx()) {
+            let k = app.view().narrow_view.min(kinds.len().saturating_sub(1));
+            kinds.get(k).map(|kind| (k, kind)).into_iter().collect()
+        } else {
+            kinds.iter().enumerate().collect()
+        };
+        let total: f32 = shown.iter().map(|(_, k)| weight(**k)).sum();
         let mut x = top.min.x;
-        for (k, kind) in kinds.iter().enumerate() {
+        for (k, kind) in shown {
             let w = top.width() * weight(*kind) / total.max(1.0);
             let rect = Rect::from_min_size(Pos2::new(x, top.min.y), Vec2::new(w - 4.0, top_h));
             x += w;
@@ -83,7 +95,9 @@ const MIN_VIEW_PT: f32 = 120.0;
 /// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
 /// the picture).
 fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut Vec<Command>) {
-    if app.view().capturing || !ui.rect_contains_pointer(rect) {
+    // On a touch screen there is no hover: the button stays.
+    let touch = super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.any_touches());
+    if app.view().capturing || !(touch || ui.rect_contains_pointer(rect)) {
         return;
     }
     let size = Vec2::new(38.0, 18.0);
@@ -143,7 +157,7 @@ fn draw_view(
     match kind {
         ViewKind::Body3d => draw_body(ui, app, &mut view.camera, rect, gpu_ready),
         ViewKind::Sphere => {
-            let mut tracks = tracks(app);
+            let mut tracks = tracks(app, palette::of(ui.visuals()));
             attach_ellipses(app, &mut tracks);
             let caption = chart_caption(app);
             riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, &caption);
@@ -155,7 +169,7 @@ fn draw_view(
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
                     None => {
-                        let mut tracks = tracks(app);
+                        let mut tracks = tracks(app, palette::of(ui.visuals()));
                         attach_ellipses(app, &mut tracks);
                         riemann_sphere::show_plane(ui, &tracks);
                     }
@@ -163,7 +177,7 @@ fn draw_view(
             });
         }
         ViewKind::Dial => {
-            let (sources, shown) = axis_sources(app);
+            let (sources, shown) = axis_sources(app, palette::of(ui.visuals()));
             let visible: Vec<_> = sources
                 .into_iter()
                 .zip(shown)
@@ -174,7 +188,7 @@ fn draw_view(
         }
         ViewKind::PhasePortrait => {
             // Trails are kept for hidden sources too, so showing one again loses nothing.
-            let (sources, shown) = axis_sources(app);
+            let (sources, shown) = axis_sources(app, palette::of(ui.visuals()));
             view.trails.push(app.sim().t_s(), &sources);
             single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown);
         }
@@ -183,12 +197,13 @@ fn draw_view(
 
 /// Truth and every single-axis estimator: angle and rate about the axis, in source colours,
 /// and whether each is shown.
-fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
+fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
     let mut shown = vec![true];
     let truth = app.sim().truth();
     let mut out = vec![single_axis::AxisSource {
         name: "truth".into(),
-        color: plots::source_color(0),
+        color: colours.source(0),
+        pattern: palette::pattern(0),
         angle_rad: truth.angle_rad.unwrap_or(f64::NAN),
         rate_rad_s: truth.rate_body_rad_s.z,
     }];
@@ -203,7 +218,8 @@ fn axis_sources(app: &AppState) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
             shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
                 name: e.id().to_string(),
-                color: plots::source_color(i + 1),
+                color: colours.source(i + 1),
+                pattern: palette::pattern(i + 1),
                 angle_rad: angle,
                 rate_rad_s: est.rate_body_rad_s.map_or(f64::NAN, |w| w.z),
             });
@@ -248,23 +264,33 @@ fn draw_body(
     body3d::show(ui, rect, camera, &scene, gpu_ready);
 }
 
+/// Which chart of w each estimator integrates in, one line per chart in use (the estimators
+/// by id), so four filters make two short lines rather than four long ones.
 fn chart_caption(app: &AppState) -> String {
-    app.sim()
-        .estimators()
-        .iter()
-        .zip(app.sim().estimates())
-        .filter_map(|(e, est)| {
-            est.attitude.wz().map(|wz| match wz.chart {
-                WzChart::North => format!("{}: chart w (projection from S)", e.id()),
-                WzChart::Flipped => format!("{}: chart s = 1/w (body upside down)", e.id()),
-            })
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
+    let mut north = Vec::new();
+    let mut flipped = Vec::new();
+    for (e, est) in app.sim().estimators().iter().zip(app.sim().estimates()) {
+        match est.attitude.wz().map(|wz| wz.chart) {
+            Some(WzChart::North) => north.push(e.id()),
+            Some(WzChart::Flipped) => flipped.push(e.id()),
+            None => {}
+        }
+    }
+    let mut lines = Vec::new();
+    if !north.is_empty() {
+        lines.push(format!("chart w (from S): {}", north.join(", ")));
+    }
+    if !flipped.is_empty() {
+        lines.push(format!(
+            "chart s = 1/w (upside down): {}",
+            flipped.join(", ")
+        ));
+    }
+    lines.join("\n")
 }
 
 /// The recent trail of every source with a vertical: truth, then each estimator.
-fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
+fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack> {
     let rec = app.sim().recorder();
     let mut names = vec![(TRUTH, "truth")];
     names.extend(app.sim().estimators().iter().map(|e| (e.id(), e.label())));
@@ -299,7 +325,8 @@ fn tracks(app: &AppState) -> Vec<riemann_sphere::SphereTrack> {
         }
         out.push(riemann_sphere::SphereTrack {
             name: label.to_string(),
-            color: plots::source_color(i),
+            color: colours.source(i),
+            pattern: palette::pattern(i),
             k_body,
             w,
             ellipse: None,

@@ -4,9 +4,11 @@
 use crate::state::{AppState, Command, IoCommand, PngTarget, RunCommand, UrlCommand, ViewCommand};
 use attlab::labs;
 use attlab::model::{ParamKind, ParamSpec, Scale};
-use egui::{Color32, RichText, Ui};
+use attlab::state::Theme;
+use egui::{RichText, Ui};
 
-/// Draws the left panel and collects commands.
+/// Draws the left panel and collects commands (on a wide screen; a narrow one gets
+/// `narrow`'s bar and sheet instead).
 pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     // Presenter mode: a narrow panel, so the views keep the projector's width.
     let panel = if app.view().presenter {
@@ -23,31 +25,36 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             ui.separator();
             run_controls(ui, app, commands);
             ui.separator();
-            if app.view().presenter {
-                // For the projector: the presets carry the lesson; the sliders wait
-                // behind one click.
-                presets(ui, app, commands);
-                egui::CollapsingHeader::new("All parameters")
-                    .default_open(false)
-                    .show(ui, |ui| parameters(ui, app, commands));
-                super::lab_tools::accuracy(ui, app, commands);
-                messages(ui, app, commands);
-                return;
-            }
-            parameters(ui, app, commands);
-            ui.separator();
-            super::lab_tools::accuracy(ui, app, commands);
-            super::sweeps::sweeps(ui, app, commands);
-            super::lab_tools::laboratory_mode(ui, app, commands);
-            outputs(ui, app, commands);
-            messages(ui, app, commands);
-            ui.separator();
-            explanation(ui, app);
+            body(ui, app, commands);
         });
     });
 }
 
-fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+/// Everything of the controls below the run buttons: presets, parameters, tools, outputs,
+/// messages and the explanation (presenter mode: the presets, the rest behind one click).
+pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if app.view().presenter {
+        // For the projector: the presets carry the lesson; the sliders wait behind one click.
+        presets(ui, app, commands);
+        egui::CollapsingHeader::new("All parameters")
+            .default_open(false)
+            .show(ui, |ui| parameters(ui, app, commands));
+        super::lab_tools::accuracy(ui, app, commands);
+        messages(ui, app, commands);
+        return;
+    }
+    parameters(ui, app, commands);
+    ui.separator();
+    super::lab_tools::accuracy(ui, app, commands);
+    super::sweeps::sweeps(ui, app, commands);
+    super::lab_tools::laboratory_mode(ui, app, commands);
+    outputs(ui, app, commands);
+    messages(ui, app, commands);
+    ui.separator();
+    explanation(ui, app);
+}
+
+pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let current = app.sim().lab();
     egui::ComboBox::from_label("Lab")
         .selected_text(current.title())
@@ -68,7 +75,20 @@ fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal_wrapped(|ui| {
-        let label = if app.run().playing { "Pause" } else { "▶ Play" };
+        run_buttons(ui, app, commands);
+        mode_buttons(ui, app, commands);
+    });
+    seed_and_speed(ui, app, commands);
+}
+
+/// Play or Pause, Step and Reset.
+pub(super) fn run_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    {
+        let label = if app.run().playing {
+            "Pause"
+        } else {
+            "▶ Play"
+        };
         if ui.button(label).clicked() {
             commands.push(Command::from(RunCommand::SetPlaying(!app.run().playing)));
         }
@@ -85,6 +105,12 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         {
             commands.push(Command::from(RunCommand::Reset));
         }
+    }
+}
+
+/// Presenter mode and the light theme.
+pub(super) fn mode_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    {
         if ui
             .selectable_label(app.view().presenter, "Presenter")
             .on_hover_text("For a projector: large type, thick lines, the presets only (also `presenter=1` in the link)")
@@ -92,7 +118,20 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         {
             commands.push(Command::from(ViewCommand::SetPresenter(!app.view().presenter)));
         }
-    });
+        let light = app.view().theme() == Theme::Light;
+        if ui
+            .selectable_label(light, "Light")
+            .on_hover_text("Light panels in dark type, for a projector (the default in presenter mode; also `theme=light` or `theme=dark` in the link)")
+            .clicked()
+        {
+            let next = if light { Theme::Dark } else { Theme::Light };
+            commands.push(Command::from(ViewCommand::SetTheme(Some(next))));
+        }
+    }
+}
+
+/// The seed (with New seed) and the speed slider.
+pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
         let label = ui.label("Seed");
         let mut seed = app.run().seed;
@@ -311,10 +350,11 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     for (i, m) in app.messages().iter().enumerate() {
         ui.horizontal_wrapped(|ui| {
+            let colours = crate::render::palette::of(ui.visuals());
             let color = if m.is_error {
-                Color32::LIGHT_RED
+                colours.error
             } else {
-                Color32::LIGHT_GREEN
+                colours.good
             };
             if ui.small_button("✕").clicked() {
                 commands.push(Command::Dismiss(i));

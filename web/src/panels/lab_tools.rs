@@ -2,14 +2,14 @@
 //! diagrams and the laboratory mode that replays a recorded gyro or IMU log (the sweeps have
 //! their own file).
 
-use crate::render::plots::source_color;
 use crate::state::{AppState, Command, IoCommand, ViewCommand};
 use egui::Ui;
-use egui_plot::{Legend, Line, Plot, Points};
+use egui_plot::{Line, Plot, Points};
 
 /// The live accuracy table: each estimator's measured σ over the last window and its own
 /// √max diag P beside the paper's numbers. Clicking a row shows that estimator as the ghost.
 pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let colours = crate::render::palette::of(ui.visuals());
     let Some((title, window_s, rows)) = app.sim().accuracy() else {
         return;
     };
@@ -39,7 +39,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     let selected = app.view().ghost_index == i;
                     // Row i is estimator i (source i + 1): its colour, as in every plot.
                     ui.horizontal(|ui| {
-                        ui.label(egui::RichText::new("●").small().color(source_color(i + 1)));
+                        ui.label(egui::RichText::new("●").small().color(colours.source(i + 1)));
                         if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
                             commands.push(Command::from(ViewCommand::SetGhost(i)));
                         }
@@ -64,8 +64,17 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit
 /// circle), filling `ui`, with its title above; a point of an estimator in its colour.
 pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
+    let colours = crate::render::palette::of(ui.visuals());
     ui.label(egui::RichText::new(&d.title).small());
-    let height = (ui.available_height() - 4.0).max(80.0);
+    // The legend goes below the diagram, so it covers no point.
+    let row = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
+    let legend_h = row * (d.points.len() as f32 / 2.0).ceil().max(1.0);
+    let height = (ui.available_height() - legend_h - 8.0).max(80.0);
+    let shown = |source: Option<usize>| source.is_none_or(|s| !app.view().hidden.contains(&s));
+    let source_of = |id: Option<&str>| {
+        id.and_then(|id| app.sim().estimators().iter().position(|e| e.id() == id))
+            .map(|i| i + 1)
+    };
     Plot::new(("diagram_plot", d.title.as_str()))
         .height(height)
         .data_aspect(1.0)
@@ -73,7 +82,6 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
         .include_x(1.2)
         .include_y(-1.2)
         .include_y(1.2)
-        .legend(Legend::default().text_style(egui::TextStyle::Small))
         .show(ui, |plot| {
             if d.unit_circle {
                 let circle: Vec<[f64; 2]> = (0..=96)
@@ -82,18 +90,15 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
                         [a.cos(), a.sin()]
                     })
                     .collect();
-                plot.line(Line::new("|λ| = 1", circle).color(egui::Color32::GRAY));
+                plot.line(Line::new("|λ| = 1", circle).color(colours.ink_dim));
             }
             for p in &d.points {
                 // A point of an estimator takes its colour and hides with it.
-                let source = p
-                    .source
-                    .and_then(|id| app.sim().estimators().iter().position(|e| e.id() == id))
-                    .map(|i| i + 1);
-                if source.is_some_and(|s| app.view().hidden.contains(&s)) {
+                let source = source_of(p.source);
+                if !shown(source) {
                     continue;
                 }
-                let color = source.map_or(egui::Color32::LIGHT_GRAY, source_color);
+                let color = source.map_or(colours.ink_dim, |s| colours.source(s));
                 plot.points(
                     Points::new(p.label.clone(), vec![p.xy])
                         .radius(5.0)
@@ -101,6 +106,19 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
                 );
             }
         });
+    ui.horizontal_wrapped(|ui| {
+        for p in &d.points {
+            let source = source_of(p.source);
+            if shown(source) {
+                let color = source.map_or(colours.ink_dim, |s| colours.source(s));
+                ui.label(
+                    egui::RichText::new(format!("● {}", p.label))
+                        .small()
+                        .color(color),
+                );
+            }
+        }
+    });
 }
 
 /// The laboratory mode of a lab that reads a kind of recorded log: its unit choices (the

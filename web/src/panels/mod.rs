@@ -6,12 +6,14 @@ mod central;
 mod controls;
 mod keys;
 mod lab_tools;
+mod narrow;
 mod sweeps;
 mod tabs;
 
 pub use central::central;
 pub use controls::controls;
 pub use keys::{shortcuts, tabs};
+pub use narrow::{bar as narrow_bar, is_narrow, sheet as narrow_sheet, touch_style};
 
 use crate::state::{AppState, Command, RunCommand};
 use attlab::model::EstimatorStatus;
@@ -34,22 +36,25 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
                 }
             });
         }
+        let colours = crate::render::palette::of(ui.visuals());
         ui.horizontal_wrapped(|ui| {
             let s = &app.run().stats;
             let rec = app.sim().recorder();
-            if app.view().presenter {
-                // A room reads the time and the pace; the rest is for the engineer.
+            if app.view().presenter || is_narrow(ui.ctx()) {
+                // A room (or a phone) reads the time and the pace; the rest is for the engineer.
                 ui.monospace(format!(
-                    "t = {:7.2} s · ×{} real time requested",
+                    "t = {:7.2} s · ×{:.2} real time (×{} asked)",
                     app.sim().t_s(),
+                    s.realtime,
                     app.run().speed
                 ));
             } else {
                 ui.monospace(format!(
-                "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s (×{} requested) · frame {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
+                "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s · ×{:.2} real time (×{} asked) · frame every {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
                 app.sim().t_s(),
                 app.sim().dt_s() * 1e3,
                 s.steps_per_s,
+                s.realtime,
                 app.run().speed,
                 s.frame_ms,
                 s.step_ms,
@@ -58,16 +63,16 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
             ));
             }
             if s.behind {
-                ui.colored_label(egui::Color32::YELLOW, "· behind real time: lower the speed");
+                ui.colored_label(colours.warn, "· behind real time: lower the speed");
             }
             for (e, status) in app.sim().estimators().iter().zip(app.sim().statuses()) {
                 match status {
                     EstimatorStatus::Ok => {}
                     EstimatorStatus::Diverged(why) => {
-                        ui.colored_label(egui::Color32::LIGHT_RED, format!("· {} diverged: {why} (press Reset)", e.id()));
+                        ui.colored_label(colours.error, format!("· {} diverged: {why} (press Reset)", e.id()));
                     }
                     EstimatorStatus::Unobservable(why) => {
-                        ui.colored_label(egui::Color32::YELLOW, format!("· {} unobservable: {why}", e.id()));
+                        ui.colored_label(colours.warn, format!("· {} unobservable: {why}", e.id()));
                     }
                 }
             }

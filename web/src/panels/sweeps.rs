@@ -3,7 +3,6 @@
 //! objective's curve and argmin (paper 4's J(γ)); or, for a two-parameter grid, a heat map
 //! with the lab's lines over it and the optimum marked (paper 4's Q landscape).
 
-use crate::render::plots::source_color;
 use crate::state::{AppState, Command, RunCommand};
 use attlab::analysis::sweep::{Sweep, SweepPoint};
 use attlab::model::{SweepSpec, fmt_sig};
@@ -104,18 +103,21 @@ fn problems(ui: &mut Ui, s: &Sweep) {
     let spec = s.spec();
     for p in s.points.iter().filter(|p| p.missing.iter().any(|m| *m > 0)) {
         ui.colored_label(
-            Color32::LIGHT_RED,
+            crate::render::palette::of(ui.visuals()).error,
             format!("{}: a filter diverged (missing samples)", at(spec, p)),
         );
     }
     for p in s.points.iter().filter(|p| !p.unscored.is_empty()) {
         ui.colored_label(
-            Color32::LIGHT_RED,
+            crate::render::palette::of(ui.visuals()).error,
             format!("{}: not scored: {}", at(spec, p), p.unscored.join("; ")),
         );
     }
     for reason in &s.skipped {
-        ui.colored_label(Color32::LIGHT_RED, format!("skipped {reason}"));
+        ui.colored_label(
+            crate::render::palette::of(ui.visuals()).error,
+            format!("skipped {reason}"),
+        );
     }
 }
 
@@ -144,6 +146,7 @@ fn log_points(s: &Sweep, f: impl Fn(&SweepPoint) -> f64) -> Vec<[f64; 2]> {
 
 /// RMS (largest |value|) of each series against log10 of the value.
 fn rms_plot(ui: &mut Ui, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
     let spec = s.spec();
     for k in 0..spec.series.len() {
         if let Some((value, rms)) = s.best(k) {
@@ -162,7 +165,7 @@ fn rms_plot(ui: &mut Ui, s: &Sweep, i: usize) {
         .show(ui, |plot| {
             for k in 0..spec.series.len() {
                 let pts = log_points(s, |p| p.max_abs[k].log10());
-                let color = source_color(k + 1);
+                let color = colours.source(k + 1);
                 let legend = s.legend(k);
                 plot.line(Line::new(legend.clone(), pts.clone()).color(color));
                 plot.points(Points::new(legend, pts).radius(3.0).color(color));
@@ -172,6 +175,7 @@ fn rms_plot(ui: &mut Ui, s: &Sweep, i: usize) {
 
 /// Each objective against log10 of the value, its argmin ringed.
 fn objective_plot(ui: &mut Ui, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
     Plot::new(("sweep_objectives", i))
@@ -181,7 +185,7 @@ fn objective_plot(ui: &mut Ui, s: &Sweep, i: usize) {
         .y_axis_label("objective")
         .show(ui, |plot| {
             for (k, (name, _)) in scoring.objectives.iter().enumerate() {
-                let color = source_color(k + 1);
+                let color = colours.source(k + 1);
                 let pts = log_points(s, |p| p.objectives[k]);
                 plot.line(Line::new(*name, pts.clone()).color(color));
                 plot.points(Points::new(*name, pts).radius(2.5).color(color));
@@ -201,6 +205,7 @@ fn objective_plot(ui: &mut Ui, s: &Sweep, i: usize) {
 /// One row per value: the median scores (with their range over the seeds) and objectives;
 /// each objective's argmin in bold.
 fn score_table(ui: &mut Ui, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
     for (k, (name, _)) in scoring.objectives.iter().enumerate() {
@@ -250,7 +255,7 @@ fn score_table(ui: &mut Ui, s: &Sweep, i: usize) {
                             let best = s.argmin(k).is_some_and(|b| std::ptr::eq(b, p));
                             let text = RichText::new(cell(*j)).small().monospace();
                             ui.label(if best {
-                                text.strong().color(source_color(k + 1))
+                                text.strong().color(colours.source(k + 1))
                             } else {
                                 text
                             });
@@ -283,6 +288,7 @@ fn palette(x: f64) -> Color32 {
 /// The grid's first objective as a heat map over log10 of both parameters, the lab's lines
 /// over it and the optimum ringed.
 fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
     let (Some(scoring), Some(axis)) = (s.scoring(), s.spec().grid) else {
         return;
     };
@@ -335,7 +341,7 @@ fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             for (k, (label, pts)) in lines.iter().enumerate() {
                 plot.line(
                     Line::new(label.clone(), grid.clip(pts))
-                        .color(source_color(k + 1))
+                        .color(colours.source(k + 1))
                         .width(2.0),
                 );
             }

@@ -36,15 +36,16 @@ pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<C
 
 /// The chip of estimator `i`: its id in its colour, grey while hidden.
 fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Command>) {
+    let colours = crate::render::palette::of(ui.visuals());
     let Some(e) = app.sim().estimators().get(i) else {
         return;
     };
     let source = i + 1;
     let shown = !app.view().hidden.contains(&source);
     let color = if shown {
-        plots::source_color(source)
+        colours.source(source)
     } else {
-        egui::Color32::from_gray(90)
+        colours.ink_dim.gamma_multiply(0.6)
     };
     let text = egui::RichText::new(format!("● {}", e.id()))
         .small()

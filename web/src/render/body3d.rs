@@ -57,9 +57,14 @@ impl OrbitCamera {
             self.yaw_rad -= f64::from(d.x) * 0.01;
             self.pitch_rad = (self.pitch_rad + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
         }
+        // The wheel, and two fingers pinching (egui's zoom delta: > 1 spreads them).
+        let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+        let factor = (1.0 - f64::from(scroll) * 0.002) / f64::from(pinch);
         if response.hovered() {
-            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
-            self.distance = (self.distance * (1.0 - f64::from(scroll) * 0.002)).clamp(3.0, 30.0);
+            self.distance = (self.distance * factor).clamp(3.0, 30.0);
+        }
+        if response.double_clicked() {
+            *self = Self::default();
         }
     }
 }
@@ -273,14 +278,15 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
     let response = ui.allocate_rect(rect, Sense::click_and_drag());
     camera.handle_input(&response, ui);
     let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 4.0, egui::Color32::from_rgb(16, 20, 30));
+    let colours = super::palette::of(ui.visuals());
+    painter.rect_filled(rect, 4.0, colours.view_bg);
     if !gpu_ready {
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
             "3D view needs the wgpu renderer",
             egui::FontId::proportional(14.0),
-            egui::Color32::LIGHT_RED,
+            colours.error,
         );
         return;
     }
@@ -395,30 +401,24 @@ fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
 /// What is solid and what is the ghost, and how to move the camera.
 fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) {
     let font = egui::FontId::proportional(13.0);
-    let dim = egui::Color32::from_gray(200);
-    painter.text(
-        rect.left_top() + egui::vec2(8.0, 6.0),
-        egui::Align2::LEFT_TOP,
-        "truth (solid)",
-        font.clone(),
-        dim,
+    let colours = super::palette::of_ctx(painter.ctx());
+    let mut top = vec!["truth (solid)".to_string()];
+    // On its own line: a long estimator label would run into the truth's.
+    top.extend(
+        scene
+            .ghost
+            .map(|(_, label)| format!("estimate (ghost): {label}")),
     );
-    if let Some((_, label)) = scene.ghost {
-        // On its own line: a long estimator label would run into the truth's.
-        painter.text(
-            rect.left_top() + egui::vec2(8.0, 24.0),
-            egui::Align2::LEFT_TOP,
-            format!("estimate (ghost): {label}"),
-            font.clone(),
-            dim,
-        );
+    for (k, text) in top.into_iter().enumerate() {
+        let at = rect.left_top() + egui::vec2(8.0, 6.0 + 18.0 * k as f32);
+        painter.text(at, egui::Align2::LEFT_TOP, text, font.clone(), colours.ink);
     }
     painter.text(
         rect.left_bottom() + egui::vec2(8.0, -6.0),
         egui::Align2::LEFT_BOTTOM,
-        "drag to orbit · scroll to zoom · axes x red, y green, z blue",
+        "drag: orbit · wheel or pinch: zoom · double-click: reset · x red, y green, z blue",
         font,
-        egui::Color32::from_gray(140),
+        colours.ink_dim,
     );
 }
 

@@ -2,8 +2,10 @@
 //! portrait, and the plots.
 
 pub mod body3d;
+pub mod clip;
 pub mod fonts;
 pub mod mesh;
+pub mod palette;
 pub mod plots;
 pub mod riemann_sphere;
 pub mod single_axis;

@@ -2,72 +2,11 @@
 //! per series group, coloured by source, with ±3σ bands where a series says which variance
 //! bounds it.
 
+use super::palette::{self, Palette};
 use attlab::model::{Figure, Lab, Outage, SeriesGroup, SeriesSpec};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Line, LineStyle, Plot, Span};
-
-/// Colour of a source: truth white, estimators from a fixed palette by position — the same
-/// colour in the 3D ghost, the sphere, the dial, every plot and the tables. Past the first
-/// eight, hues step by the golden angle so sixteen filters stay tellable apart.
-pub fn source_color(source_index: usize) -> Color32 {
-    const PALETTE: [Color32; 8] = [
-        Color32::from_rgb(235, 235, 235),
-        Color32::from_rgb(255, 140, 60),
-        Color32::from_rgb(80, 200, 255),
-        Color32::from_rgb(120, 220, 110),
-        Color32::from_rgb(230, 110, 220),
-        Color32::from_rgb(250, 220, 80),
-        Color32::from_rgb(255, 90, 90),
-        Color32::from_rgb(160, 140, 255),
-    ];
-    if let Some(c) = PALETTE.get(source_index) {
-        return *c;
-    }
-    let hue = (source_index as f32 * 0.618_034 + 0.13).fract();
-    let value = if source_index.is_multiple_of(2) {
-        0.95
-    } else {
-        0.75
-    };
-    egui::ecolor::Hsva::new(hue, 0.55, value, 1.0).into()
-}
-
-/// Colours of a figure's series: an estimator's series in its source colour when it is that
-/// source's only series in the figure; several series of one estimator (its x, y, z) in the
-/// bright palette by position, so they stay apart; the truth's first series white; a second
-/// truth series and sensor readings in muted colours no estimator uses.
-pub fn figure_colors(specs: &[&SeriesSpec]) -> Vec<Color32> {
-    const OTHERS: [Color32; 5] = [
-        Color32::from_rgb(150, 150, 150),
-        Color32::from_rgb(90, 140, 160),
-        Color32::from_rgb(200, 170, 130),
-        Color32::from_rgb(130, 170, 120),
-        Color32::from_rgb(170, 130, 170),
-    ];
-    let count = |src: usize| specs.iter().filter(|s| s.source == src).count();
-    let mut other = 0;
-    let mut truth_seen = false;
-    specs
-        .iter()
-        .enumerate()
-        .map(|(position, s)| {
-            let is_truth = s.name.starts_with("truth.");
-            if is_truth && !truth_seen {
-                truth_seen = true;
-                return source_color(0);
-            }
-            if !is_truth && s.source > 0 {
-                if count(s.source) == 1 {
-                    return source_color(s.source);
-                }
-                return source_color(position + 1);
-            }
-            other += 1;
-            OTHERS[(other - 1) % OTHERS.len()]
-        })
-        .collect()
-}
+use egui_plot::{Line, LineStyle, Plot, Span};
 
 pub use attlab::model::PlotTab as Tab;
 
@@ -133,16 +72,6 @@ pub fn outage_intervals(rec: &Recorder, index: usize, out_when: f64) -> Vec<[f64
     out
 }
 
-/// Shading colours of outages, by position.
-fn outage_color(k: usize) -> Color32 {
-    const C: [Color32; 3] = [
-        Color32::from_rgba_premultiplied(60, 50, 0, 40),
-        Color32::from_rgba_premultiplied(60, 0, 30, 40),
-        Color32::from_rgba_premultiplied(0, 40, 60, 40),
-    ];
-    C[k % C.len()]
-}
-
 /// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
 /// tab changes are commands.
 pub fn show(
@@ -158,41 +87,36 @@ pub fn show(
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
         t => t,
     };
-    let lines = tab_lines(rec, figures, tab);
     let log = match tab {
         Tab::Figure(f) => figures[f].log,
         Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
     };
     let full = ui.available_rect_before_wrap();
-    // On a wide plot the legend stands beside it and covers no data.
-    let side = full.width() >= SIDE_LEGEND_MIN_PT;
-    let legend_w = if side {
-        (full.width() * 0.27).min(380.0)
-    } else {
-        0.0
-    };
-    let plot_rect = egui::Rect::from_min_max(full.min, full.max - egui::vec2(legend_w, 0.0));
-    let mut plot = Plot::new(("series_plot", format!("{tab:?}"))).x_axis_label("t [s]");
-    if !side {
-        plot = plot.legend(Legend::default().text_style(egui::TextStyle::Small));
-    }
-    let shown: Vec<(usize, Color32)> = lines
+    let colours = palette::of(ui.visuals());
+    let shown: Vec<(usize, Color32)> = lines(rec, figures, tab, colours)
         .into_iter()
         .filter(|(i, _)| {
             let source = rec.specs()[*i].source;
             source == 0 || !hidden.contains(&source)
         })
         .collect();
+    // The legend never covers data: beside a wide plot, below a narrow one.
+    let (plot_rect, legend_rect) = split_for_legend(ui, full, shown.len());
+    let plot = Plot::new(("series_plot", format!("{tab:?}")))
+        .x_axis_label("t [s]")
+        .y_axis_label(y_title(rec, &shown, log))
+        .y_grid_spacer(nice_marks);
     let rect = ui
         .scope_builder(egui::UiBuilder::new().max_rect(plot_rect), |ui| {
             plot.show(ui, |plot| {
                 if state.show_outages {
-                    shade_outages(plot, rec, outages);
+                    shade_outages(plot, rec, outages, colours);
                 }
                 for (i, color) in &shown {
                     let style = LineLook {
                         color: *color,
                         width: line_width,
+                        pattern: palette::pattern(rec.specs()[*i].source),
                         log,
                         bands: state.show_bands,
                     };
@@ -203,23 +127,92 @@ pub fn show(
             .rect
         })
         .inner;
-    if side {
-        let legend_rect =
-            egui::Rect::from_min_max(egui::pos2(plot_rect.max.x + 8.0, full.min.y), full.max);
-        ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
-            side_legend(ui, rec, &shown, log, state, outages);
-        });
-    }
+    ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
+        legend(ui, rec, &shown, log, state, outages);
+    });
     ui.advance_cursor_after_rect(full);
     rect
+}
+
+/// The y axis' title: the unit the drawn series share (`[°]`, `log10 [°²]`, `[–]` for none),
+/// or "mixed units (see the legend)".
+fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool) -> String {
+    let mut units = shown.iter().map(|(i, _)| rec.specs()[*i].unit);
+    let Some(first) = units.next() else {
+        return String::new();
+    };
+    let unit = if units.all(|u| u == first) {
+        if first.is_empty() {
+            "[–]".to_string()
+        } else {
+            format!("[{}]", attlab::model::display_unit(first))
+        }
+    } else {
+        "mixed units (see the legend)".to_string()
+    };
+    if log { format!("log10 {unit}") } else { unit }
+}
+
+/// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
+/// marks whatever its height, with a finer unlabelled grid of a fifth of it.
+pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    let (lo, hi) = input.bounds;
+    let span = hi - lo;
+    if !(span.is_finite() && span > 0.0) {
+        return Vec::new();
+    }
+    // The largest round step that still gives three labelled marks.
+    let mut step = nice_step(span / 5.0);
+    while ((hi / step).floor() - (lo / step).ceil()) < 2.0 {
+        step = nice_step(step * 0.99 / 2.5);
+    }
+    let mut out = Vec::new();
+    for (size, limit) in [(step, 12.0), (step / 5.0, 60.0)] {
+        if span / size > limit {
+            continue;
+        }
+        let first = (lo / size).ceil() as i64;
+        let last = (hi / size).floor() as i64;
+        out.extend((first..=last).map(|k| egui_plot::GridMark {
+            value: k as f64 * size,
+            step_size: size,
+        }));
+    }
+    out
+}
+
+/// The least of 1, 2, 5 × 10ⁿ at least `raw`.
+fn nice_step(raw: f64) -> f64 {
+    let decade = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|s| *s >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0 * decade)
+}
+
+/// Splits `full` into the plot and its legend: a column on the right of a wide plot, a strip
+/// below a narrow one (as high as `entries` lines need, at most a third of `full`).
+fn split_for_legend(ui: &Ui, full: egui::Rect, entries: usize) -> (egui::Rect, egui::Rect) {
+    if full.width() >= SIDE_LEGEND_MIN_PT {
+        let w = (full.width() * 0.27).min(380.0);
+        let plot = egui::Rect::from_min_max(full.min, full.max - egui::vec2(w, 0.0));
+        let legend = egui::Rect::from_min_max(egui::pos2(plot.max.x + 8.0, full.min.y), full.max);
+        return (plot, legend);
+    }
+    let row = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let h = (row * (entries as f32 + 1.0)).min(full.height() / 3.0);
+    let plot = egui::Rect::from_min_max(full.min, full.max - egui::vec2(0.0, h));
+    let legend = egui::Rect::from_min_max(egui::pos2(full.min.x, plot.max.y + 4.0), full.max);
+    (plot, legend)
 }
 
 /// A plot at least this wide (points) has its legend beside it.
 const SIDE_LEGEND_MIN_PT: f32 = 560.0;
 
-/// The legend beside a plot: each drawn series' label and unit in its colour, the ±3σ
-/// bands' line style and the outages' shading.
-fn side_legend(
+/// The legend beside or below a plot: each drawn series' label and unit in its colour and
+/// line pattern, the ±3σ bands' line style and the outages' shading.
+fn legend(
     ui: &mut Ui,
     rec: &Recorder,
     shown: &[(usize, Color32)],
@@ -227,20 +220,12 @@ fn side_legend(
     state: &PlotState,
     outages: &[Outage],
 ) {
-    let swatch = |ui: &mut Ui, color: Color32, dashed: bool| {
-        let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
+    let colours = palette::of(ui.visuals());
+    let swatch = |ui: &mut Ui, color: Color32, style: LineStyle| {
+        let (r, _) = ui.allocate_exact_size(egui::vec2(30.0, 10.0), egui::Sense::hover());
         let y = r.center().y;
-        let stroke = egui::Stroke::new(3.0, color);
-        if dashed {
-            for k in 0..3 {
-                let x = r.min.x + 7.0 * k as f32;
-                ui.painter()
-                    .line_segment([egui::pos2(x, y), egui::pos2(x + 4.0, y)], stroke);
-            }
-        } else {
-            ui.painter()
-                .line_segment([egui::pos2(r.min.x, y), egui::pos2(r.max.x, y)], stroke);
-        }
+        let line = vec![egui::pos2(r.min.x, y), egui::pos2(r.max.x, y)];
+        palette::styled_polyline(ui.painter(), line, egui::Stroke::new(2.5, color), style);
     };
     egui::ScrollArea::vertical().show(ui, |ui| {
         for (i, color) in shown {
@@ -251,14 +236,14 @@ fn side_legend(
                 spec.legend()
             };
             ui.horizontal(|ui| {
-                swatch(ui, *color, false);
+                swatch(ui, *color, palette::pattern(spec.source));
                 ui.add(egui::Label::new(text).wrap());
             });
         }
         let banded = shown.iter().any(|(i, _)| rec.specs()[*i].band.is_some());
         if state.show_bands && banded && !log {
             ui.horizontal(|ui| {
-                swatch(ui, Color32::GRAY, true);
+                swatch(ui, Color32::GRAY, LineStyle::dashed_loose());
                 ui.label("±3σ of the filter's own covariance");
             });
         }
@@ -267,7 +252,7 @@ fn side_legend(
                 ui.horizontal(|ui| {
                     let (r, _) =
                         ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
-                    ui.painter().rect_filled(r, 2.0, outage_color(k));
+                    ui.painter().rect_filled(r, 2.0, outage_color(colours, k));
                     ui.label(o.label);
                 });
             }
@@ -278,7 +263,7 @@ fn side_legend(
 /// The series a tab draws with their colours: by source, so an estimator has one colour
 /// everywhere; a figure that shows several series of one source tells them apart by
 /// position.
-fn tab_lines(rec: &Recorder, figures: &[Figure], tab: Tab) -> Vec<(usize, Color32)> {
+fn lines(rec: &Recorder, figures: &[Figure], tab: Tab, colours: &Palette) -> Vec<(usize, Color32)> {
     match tab {
         Tab::Figure(f) => {
             let idx: Vec<usize> = figures[f]
@@ -287,20 +272,28 @@ fn tab_lines(rec: &Recorder, figures: &[Figure], tab: Tab) -> Vec<(usize, Color3
                 .filter_map(|n| rec.index_of(&n.name()))
                 .collect();
             let specs: Vec<&SeriesSpec> = idx.iter().map(|i| &rec.specs()[*i]).collect();
-            idx.iter().copied().zip(figure_colors(&specs)).collect()
+            idx.iter()
+                .copied()
+                .zip(palette::figure_colors(colours, &specs))
+                .collect()
         }
         Tab::Group(g) => rec
             .specs()
             .iter()
             .enumerate()
             .filter(|(_, s)| s.group == g)
-            .map(|(i, s)| (i, source_color(s.source)))
+            .map(|(i, s)| (i, colours.source(s.source)))
             .collect(),
     }
 }
 
 /// The intervals of every outage the lab declares, shaded.
-fn shade_outages(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, outages: &[Outage]) {
+fn shade_outages(
+    plot: &mut egui_plot::PlotUi<'_>,
+    rec: &Recorder,
+    outages: &[Outage],
+    colours: &Palette,
+) {
     for (k, o) in outages.iter().enumerate() {
         let Some(i) = rec.index_of(&o.series.name()) else {
             continue;
@@ -308,11 +301,16 @@ fn shade_outages(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, outages: &[Ou
         for [t0, t1] in outage_intervals(rec, i, o.out_when) {
             plot.span(
                 Span::new(o.label, t0..=t1)
-                    .fill(outage_color(k))
+                    .fill(outage_color(colours, k))
                     .border_width(0.0),
             );
         }
     }
+}
+
+/// Shading colour of outage `k`.
+fn outage_color(colours: &Palette, k: usize) -> Color32 {
+    colours.outages[k % colours.outages.len()]
 }
 
 /// How one series is drawn.
@@ -320,6 +318,8 @@ fn shade_outages(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, outages: &[Ou
 struct LineLook {
     color: Color32,
     width: f32,
+    /// The source's line pattern.
+    pattern: LineStyle,
     /// log10 of the values.
     log: bool,
     /// ±3σ bands where the series has one.
@@ -338,11 +338,12 @@ fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look:
         }
         label = format!("log10 {label}");
     }
-    for piece in Recorder::split_at_gaps(&pts) {
+    for piece in pieces(plot, &pts, look.pattern) {
         plot.line(
             Line::new(label.clone(), piece)
                 .color(look.color)
-                .width(look.width),
+                .width(look.width)
+                .style(look.pattern),
         );
     }
     let band = spec.band.as_ref().filter(|_| look.bands && !look.log);
@@ -358,60 +359,66 @@ fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look:
     };
     let name = format!("{} ±3σ", spec.label);
     for sign in [1.0, -1.0] {
-        plot.line(
-            Line::new(name.clone(), sigma3(sign))
-                .color(look.color.gamma_multiply(0.6))
-                .style(LineStyle::dashed_loose()),
-        );
+        for piece in pieces(plot, &sigma3(sign), LineStyle::dashed_loose()) {
+            plot.line(
+                Line::new(name.clone(), piece)
+                    .color(look.color.gamma_multiply(0.6))
+                    .style(LineStyle::dashed_loose()),
+            );
+        }
     }
+}
+
+/// The pieces of a series to draw: broken at its missing samples, and a dashed or dotted
+/// one cut to what the plot shows (see [`super::clip`]).
+pub fn pieces(
+    plot: &egui_plot::PlotUi<'_>,
+    pts: &[[f64; 2]],
+    style: LineStyle,
+) -> Vec<Vec<[f64; 2]>> {
+    if style == LineStyle::Solid {
+        return Recorder::split_at_gaps(pts);
+    }
+    super::clip::clip_to_bounds(pts, &plot.plot_bounds())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use attlab::model::{SeriesKey, q};
-
-    fn spec(key: SeriesKey, source: usize) -> SeriesSpec {
-        SeriesSpec::of(key, SeriesGroup::Attitude).from_source(source)
+    fn labelled(lo: f64, hi: f64) -> Vec<f64> {
+        let marks = nice_marks(egui_plot::GridInput {
+            bounds: (lo, hi),
+            base_step_size: (hi - lo) / 1000.0,
+        });
+        let biggest = marks.iter().map(|m| m.step_size).fold(0.0, f64::max);
+        marks
+            .iter()
+            .filter(|m| m.step_size == biggest)
+            .map(|m| m.value)
+            .collect()
     }
 
     #[test]
-    fn sixteen_sources_get_sixteen_distinct_colours() {
-        let colours: Vec<Color32> = (0..17).map(source_color).collect();
-        for (i, a) in colours.iter().enumerate() {
-            for b in &colours[i + 1..] {
-                assert_ne!(a, b);
-            }
+    fn every_axis_gets_at_least_three_labelled_ticks_on_round_numbers() {
+        for (lo, hi) in [
+            (-7.0, 7.0),
+            (0.0, 0.3),
+            (-2e-4, 9e-4),
+            (1.6, 1.72),
+            (3.0, 3e4),
+        ] {
+            let marks = labelled(lo, hi);
+            assert!((3..=12).contains(&marks.len()), "{lo}..{hi}: {marks:?}");
+            let step = marks[1] - marks[0];
+            let mantissa = step / 10f64.powf(step.log10().floor());
+            assert!(
+                [1.0, 2.0, 5.0].iter().any(|m| (mantissa - m).abs() < 1e-6),
+                "{lo}..{hi}: step {step}"
+            );
         }
-    }
-
-    #[test]
-    fn a_figure_keeps_each_estimators_colour_and_gives_the_rest_others() {
-        let specs = [
-            spec(SeriesKey::truth(&q::ANGLE_DEG), 0),
-            spec(SeriesKey::truth(&q::RATE_DEG_S), 0),
-            spec(SeriesKey::sensors(&q::ANGLE_DEG), 0),
-            spec(SeriesKey::new("kf", &q::ANGLE_DEG), 1),
-            spec(SeriesKey::new("cf", &q::ANGLE_DEG), 2),
-        ];
-        let refs: Vec<&SeriesSpec> = specs.iter().collect();
-        let c = figure_colors(&refs);
-        assert_eq!(c[0], source_color(0));
-        assert_eq!(c[3], source_color(1));
-        assert_eq!(c[4], source_color(2));
-        for other in &c[1..3] {
-            assert!((0..17).all(|s| *other != source_color(s)), "{other:?}");
-        }
-        assert_ne!(c[1], c[2]);
-        // One filter's three axes: three different bright colours.
-        let axes = [
-            spec(SeriesKey::new("st", &q::ERR_X_DEG), 3),
-            spec(SeriesKey::new("st", &q::ERR_Y_DEG), 3),
-            spec(SeriesKey::new("st", &q::ERR_Z_DEG), 3),
-        ];
-        let refs: Vec<&SeriesSpec> = axes.iter().collect();
-        let c = figure_colors(&refs);
-        assert!(c[0] != c[1] && c[1] != c[2] && c[0] != c[2], "{c:?}");
+        // −7 … 7 (the one lone "0"): −6 … 6 in steps of 2 or 5.
+        assert!(labelled(-7.0, 7.0).contains(&0.0));
+        assert!(labelled(f64::NAN, 1.0).is_empty());
     }
 }

@@ -13,6 +13,8 @@ pub struct SphereTrack {
     pub name: String,
     /// Colour.
     pub color: Color32,
+    /// Line pattern (the source's everywhere).
+    pub pattern: egui_plot::LineStyle,
     /// k in body axes (unit vectors).
     pub k_body: Vec<Vector3<f64>>,
     /// (u, v) points for the complex plane (non-finite where w is at infinity).
@@ -81,8 +83,9 @@ fn circle_points(f: impl Fn(f64) -> Vector3<f64>) -> impl Iterator<Item = Vector
 }
 
 fn draw_grid(pr: &Projector, painter: &Painter) {
-    let front = Stroke::new(0.8, Color32::from_gray(95));
-    let back = Stroke::new(0.6, Color32::from_gray(50));
+    let colours = super::palette::of_ctx(painter.ctx());
+    let front = Stroke::new(0.8, colours.grid_front);
+    let back = Stroke::new(0.6, colours.grid_back);
     for lat_deg in [-60.0f64, -30.0, 30.0, 60.0] {
         let (s, c) = lat_deg.to_radians().sin_cos();
         pr.polyline(
@@ -102,15 +105,15 @@ fn draw_grid(pr: &Projector, painter: &Painter) {
         );
     }
     // The complex plane ζ′ = 0 cuts the sphere in |w| = 1 (pitch ±90° in paper 3).
-    let eq_front = Stroke::new(1.8, Color32::from_rgb(120, 160, 230));
-    let eq_back = Stroke::new(1.0, Color32::from_rgb(60, 80, 120));
+    let eq_front = Stroke::new(1.8, colours.equator[0]);
+    let eq_back = Stroke::new(1.0, colours.equator[1]);
     pr.polyline(
         painter,
         circle_points(|a| Vector3::new(a.cos(), a.sin(), 0.0)),
         eq_front,
         eq_back,
     );
-    let axis = Stroke::new(1.0, Color32::from_gray(140));
+    let axis = Stroke::new(1.0, colours.ink_dim);
     for (dir, label) in [
         (Vector3::x(), "ξ′ → u"),
         (Vector3::y(), "η′ → v"),
@@ -124,17 +127,17 @@ fn draw_grid(pr: &Projector, painter: &Painter) {
             Align2::LEFT_CENTER,
             label,
             FontId::proportional(12.0),
-            Color32::from_gray(180),
+            colours.ink,
         );
     }
     let (s, _) = pr.project(&Vector3::new(0.0, 0.0, -1.0));
-    painter.circle_filled(s, 4.0, Color32::from_rgb(230, 200, 80));
+    painter.circle_filled(s, 4.0, colours.highlight);
     painter.text(
         s + Vec2::new(6.0, 2.0),
         Align2::LEFT_TOP,
         "S (pole of w)",
         FontId::proportional(12.0),
-        Color32::from_rgb(230, 200, 80),
+        colours.highlight,
     );
 }
 
@@ -182,14 +185,18 @@ pub fn show_sphere(
     tracks: &[SphereTrack],
     caption: &str,
 ) {
-    let response = ui.allocate_rect(rect, Sense::drag());
+    let response = ui.allocate_rect(rect, Sense::click_and_drag());
+    if response.double_clicked() {
+        *view = SphereView::default();
+    }
     if response.dragged() {
         let d = response.drag_delta();
         view.yaw_rad += f64::from(d.x) * 0.01;
         view.pitch_rad = (view.pitch_rad + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
     }
     let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 4.0, Color32::from_rgb(16, 20, 30));
+    let colours = super::palette::of(ui.visuals());
+    painter.rect_filled(rect, 4.0, colours.view_bg);
     let radius = 0.33 * rect.width().min(rect.height() * 1.1);
     let rot = Rotation3::from_axis_angle(&Vector3::x_axis(), view.pitch_rad)
         * Rotation3::from_axis_angle(&Vector3::z_axis(), view.yaw_rad);
@@ -202,26 +209,29 @@ pub fn show_sphere(
         pr.center,
         radius,
         Color32::from_rgba_unmultiplied(60, 80, 120, 40),
-        Stroke::new(1.2, Color32::from_gray(120)),
+        Stroke::new(1.2, colours.ink_dim),
     );
     draw_grid(&pr, &painter);
     for t in tracks {
         draw_track(&pr, &painter, t);
     }
-    painter.text(
-        rect.left_top() + Vec2::new(8.0, 6.0),
-        Align2::LEFT_TOP,
-        "Riemann sphere: vertical k in body axes",
+    // Title and caption wrap inside the view, so neither runs off it or into the other.
+    let wrap = (rect.width() - 16.0).max(40.0);
+    let title = painter.layout(
+        "Riemann sphere: vertical k in body axes".into(),
         FontId::proportional(13.0),
-        Color32::from_gray(210),
+        colours.ink,
+        wrap,
     );
-    painter.text(
-        rect.left_bottom() + Vec2::new(8.0, -6.0),
-        Align2::LEFT_BOTTOM,
-        caption,
+    painter.galley(rect.left_top() + Vec2::new(8.0, 6.0), title, colours.ink);
+    let caption = painter.layout(
+        caption.to_string(),
         FontId::proportional(12.0),
-        Color32::from_rgb(230, 200, 80),
+        colours.highlight,
+        wrap,
     );
+    let at = rect.left_bottom() + Vec2::new(8.0, -6.0 - caption.size().y);
+    painter.galley(at, caption, colours.highlight);
 }
 
 /// Largest |w| drawn on the complex plane: beyond it the point is near the pole S and the
@@ -249,6 +259,7 @@ pub const ROOM_FOR_LEGEND: (usize, f32) = (5, 280.0);
 
 /// The complex plane with the w trajectories and the unit circle |w| = 1.
 pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
+    let colours = super::palette::of(ui.visuals());
     let circle: PlotPoints<'_> = (0..=96)
         .map(|i| {
             let a = f64::from(i) * std::f64::consts::TAU / 96.0;
@@ -274,7 +285,7 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
         .show(ui, |plot| {
             plot.line(
                 Line::new("|w| = 1", circle)
-                    .color(Color32::from_rgb(120, 160, 230))
+                    .color(colours.equator[0])
                     .width(1.0),
             );
             for t in tracks {
@@ -289,17 +300,30 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
                             .color(t.color),
                     );
                 }
+                // Dashed lines cut to the view, so a deep zoom draws no endless dashes.
+                let cut = |plot: &egui_plot::PlotUi<'_>, seg: &[[f64; 2]], style| {
+                    super::plots::pieces(plot, seg, style)
+                };
                 for seg in plane_segments(&t.w) {
-                    plot.line(Line::new(t.name.clone(), seg).color(t.color));
+                    for piece in cut(plot, &seg, t.pattern) {
+                        plot.line(
+                            Line::new(t.name.clone(), piece)
+                                .color(t.color)
+                                .style(t.pattern),
+                        );
+                    }
                 }
                 if let Some((ring, _)) = &t.ellipse {
                     let closed: Vec<[f64; 2]> = ring.iter().chain(ring.first()).copied().collect();
+                    let dense = egui_plot::LineStyle::dashed_dense();
                     for seg in plane_segments(&closed) {
-                        plot.line(
-                            Line::new(format!("{} 3σ", t.name), seg)
-                                .color(t.color)
-                                .style(egui_plot::LineStyle::dashed_dense()),
-                        );
+                        for piece in cut(plot, &seg, dense) {
+                            plot.line(
+                                Line::new(format!("{} 3σ", t.name), piece)
+                                    .color(t.color)
+                                    .style(dense),
+                            );
+                        }
                     }
                 }
             }

@@ -13,6 +13,8 @@ pub struct AxisSource {
     pub name: String,
     /// Colour (the source's everywhere).
     pub color: Color32,
+    /// Line pattern (the source's everywhere).
+    pub pattern: egui_plot::LineStyle,
     /// Angle (rad).
     pub angle_rad: f64,
     /// Rate about the axis (rad/s).
@@ -59,16 +61,17 @@ impl PhaseTrails {
 /// as on an instrument.
 pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
     let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 4.0, Color32::from_gray(18));
+    let colours = super::palette::of(ui.visuals());
+    painter.rect_filled(rect, 4.0, colours.view_bg);
     painter.text(
         rect.left_top() + Vec2::new(8.0, 6.0),
         egui::Align2::LEFT_TOP,
         "Angle on a dial (0° up)",
         egui::FontId::proportional(13.0),
-        Color32::from_gray(200),
+        colours.ink,
     );
     let (center, radius, readouts, row) = dial_layout(rect, sources.len());
-    painter.circle_stroke(center, radius, Stroke::new(1.5, Color32::from_gray(120)));
+    painter.circle_stroke(center, radius, Stroke::new(1.5, colours.ink_dim));
     for k in 0..36 {
         let a = f64::from(k) * 10f64.to_radians();
         let len = if k % 9 == 0 {
@@ -81,7 +84,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
         let dir = direction(a);
         painter.line_segment(
             [center + dir * radius, center + dir * radius * (1.0 - len)],
-            Stroke::new(1.0, Color32::from_gray(140)),
+            Stroke::new(1.0, colours.ink_dim),
         );
     }
     // On a small dial the ticks say enough; the labels would run into each other.
@@ -102,7 +105,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
             egui::Align2::CENTER_CENTER,
             label,
             egui::FontId::proportional(11.0),
-            Color32::from_gray(170),
+            colours.ink_dim,
         );
     }
     for (k, s) in sources.iter().enumerate().rev() {
@@ -118,7 +121,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
             Stroke::new(width, s.color),
         );
     }
-    painter.circle_filled(center, 4.0, Color32::from_gray(200));
+    painter.circle_filled(center, 4.0, colours.ink);
     for (k, s) in sources.iter().enumerate() {
         let at = readouts + Vec2::new(0.0, row * k as f32);
         let text = if s.angle_rad.is_finite() {
@@ -212,7 +215,14 @@ pub fn phase_portrait(
                 {
                     let pts: Vec<[f64; 2]> = trail.iter().copied().collect();
                     if let Some(last) = pts.last().copied() {
-                        plot.line(Line::new(name.clone(), pts).color(s.color).width(1.2));
+                        for piece in super::plots::pieces(plot, &pts, s.pattern) {
+                            plot.line(
+                                Line::new(name.clone(), piece)
+                                    .color(s.color)
+                                    .width(1.2)
+                                    .style(s.pattern),
+                            );
+                        }
                         plot.points(
                             Points::new(name.clone(), vec![last])
                                 .radius(3.5)
@@ -232,6 +242,7 @@ mod tests {
         AxisSource {
             name: "truth".into(),
             color: Color32::WHITE,
+            pattern: egui_plot::LineStyle::Solid,
             angle_rad: angle,
             rate_rad_s: 0.5,
         }

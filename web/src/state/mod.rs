@@ -157,6 +157,7 @@ impl AppState {
         let lab = attlab::labs::find(url.lab_id).unwrap_or(attlab::labs::all()[0]);
         let mut state = Self::new(lab, url.params, url.seed, url.speed);
         state.view.presenter = url.presenter;
+        state.view.theme = url.theme;
         state.messages.extend(
             errors
                 .into_iter()

@@ -25,6 +25,8 @@ pub struct Stats {
     pub step_ms: f64,
     /// The simulation could not keep up with the requested speed.
     pub behind: bool,
+    /// Simulated seconds per wall-clock second, as measured (smoothed).
+    pub realtime: f64,
 }
 
 /// The run's clock, seed and background work.
@@ -164,6 +166,7 @@ impl AppState {
     fn select_lab(&mut self, lab: &'static dyn Lab) {
         self.view = ViewState {
             presenter: self.view.presenter,
+            theme: self.view.theme,
             capturing: self.view.capturing,
             ..ViewState::for_lab(lab)
         };
@@ -232,14 +235,17 @@ impl AppState {
             return;
         }
         let run = &mut self.run;
-        let frame_s = run
+        // The stats report the interval as it was; the stepping takes at most 0.1 s of it
+        // (a tab in the background must not come back to a minute of catching up).
+        let wall_s = run
             .last_frame
-            .map_or(0.0, |t| now.duration_since(t).as_secs_f64())
-            .min(0.1);
+            .map_or(0.0, |t| now.duration_since(t).as_secs_f64());
+        let frame_s = wall_s.min(0.1);
         run.last_frame = Some(now);
-        run.stats.frame_ms = 0.9 * run.stats.frame_ms + 0.1 * frame_s * 1e3;
+        run.stats.frame_ms = 0.9 * run.stats.frame_ms + 0.1 * wall_s * 1e3;
         if !run.playing {
             run.stats.steps_per_s *= 0.9;
+            run.stats.realtime *= 0.9;
             return;
         }
         run.step_debt += run.speed * frame_s / self.sim.dt_s();
@@ -255,8 +261,10 @@ impl AppState {
             }
         }
         run.stats.step_ms = now.elapsed().as_secs_f64() * 1e3;
-        if frame_s > 0.0 {
-            run.stats.steps_per_s = 0.9 * run.stats.steps_per_s + 0.1 * f64::from(steps) / frame_s;
+        if wall_s > 0.0 {
+            let rate = f64::from(steps) / wall_s;
+            run.stats.steps_per_s = 0.9 * run.stats.steps_per_s + 0.1 * rate;
+            run.stats.realtime = 0.9 * run.stats.realtime + 0.1 * rate * self.sim.dt_s();
         }
     }
 }

@@ -28,7 +28,9 @@ impl AppState {
     pub(super) fn apply_url(&mut self, command: UrlCommand) -> Option<Effect> {
         match command {
             UrlCommand::CopyLink => {
-                return Some(Effect::Clipboard(format!("#{}", self.fragment())));
+                // The whole address, so the link opens the page from a chat or an e-mail.
+                let page = platform::page_address().unwrap_or_default();
+                return Some(Effect::Clipboard(format!("{page}#{}", self.fragment())));
             }
             UrlCommand::Sync => self.sync_url(),
             UrlCommand::Load(fragment) => self.load_fragment(&fragment),
@@ -44,6 +46,7 @@ impl AppState {
             speed: self.run.speed,
             params: self.sim.params().clone(),
             presenter: self.view.presenter,
+            theme: self.view.theme,
         }
         .encode()
     }

@@ -6,6 +6,7 @@ use super::AppState;
 use crate::render::plots::PlotState;
 use attlab::model::{Lab, PlotTab};
 use attlab::sim::{Selection, Simulation};
+use attlab::state::Theme;
 
 /// What the central area shows: everything, or one view (or the plots) at full size.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -42,13 +43,24 @@ pub struct ViewState {
     pub hidden: Vec<usize>,
     /// Presenter mode: large type, thick lines, only the controls that matter.
     pub presenter: bool,
+    /// The theme chosen; `None` follows the mode (light in presenter mode).
+    pub theme: Option<Theme>,
     /// Which estimator the 3D ghost shows.
     pub ghost_index: usize,
     /// A PNG capture is running: the views hide their buttons and the simulation holds.
     pub capturing: bool,
+    /// On a narrow screen: the controls' sheet is open over the lower part of the page.
+    pub sheet_open: bool,
+    /// On a narrow screen: the index of the one view shown above the plots.
+    pub narrow_view: usize,
 }
 
 impl ViewState {
+    /// The theme shown: the one chosen, else light in presenter mode and dark otherwise.
+    pub fn theme(&self) -> Theme {
+        self.theme.unwrap_or(Theme::for_mode(self.presenter))
+    }
+
     /// The view a lab opens with.
     pub fn for_lab(lab: &dyn Lab) -> Self {
         Self {
@@ -56,8 +68,11 @@ impl ViewState {
             focus: Focus::All,
             hidden: Vec::new(),
             presenter: false,
+            theme: None,
             ghost_index: 0,
             capturing: false,
+            sheet_open: false,
+            narrow_view: 0,
         }
     }
 }
@@ -83,6 +98,12 @@ pub enum ViewCommand {
     SetPresenter(bool),
     /// A PNG capture started or ended.
     SetCapturing(bool),
+    /// Choose the theme (`None`: follow the mode).
+    SetTheme(Option<Theme>),
+    /// On a narrow screen: open or close the controls' sheet.
+    SetSheet(bool),
+    /// On a narrow screen: show the lab's view with this index above the plots.
+    ShowNarrowView(usize),
 }
 
 impl AppState {
@@ -105,6 +126,13 @@ impl AppState {
             },
             ViewCommand::SetPresenter(on) => view.presenter = on,
             ViewCommand::SetCapturing(on) => view.capturing = on,
+            ViewCommand::SetTheme(theme) => view.theme = theme,
+            ViewCommand::SetSheet(open) => view.sheet_open = open,
+            ViewCommand::ShowNarrowView(k) => {
+                if k < self.sim.lab().page().views.len() {
+                    view.narrow_view = k;
+                }
+            }
         }
     }
 

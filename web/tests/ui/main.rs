@@ -11,6 +11,7 @@ use egui::accesskit::{Action, ActionData, ActionRequest, Role};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
+mod narrow;
 mod png;
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {

@@ -1,0 +1,97 @@
+//! A narrow screen (a phone, a tablet held upright): one view and the plot get the page,
+//! a bar on top holds the lab, the run buttons and a switcher between the views, and the
+//! controls open as a sheet from the bottom.
+
+use super::controls;
+use crate::state::{AppState, Command, ViewCommand};
+use attlab::model::ViewKind;
+use egui::Ui;
+
+/// Below this width in CSS pixels the page stacks (a phone is 360–430 px wide).
+pub const NARROW_PX: f32 = 800.0;
+
+/// The least height of a control a finger must hit (CSS pixels).
+pub const TOUCH_TARGET_PX: f32 = 32.0;
+
+/// Whether the page is laid out for a narrow screen.
+pub fn is_narrow(ctx: &egui::Context) -> bool {
+    ctx.content_rect().width() * ctx.zoom_factor() < NARROW_PX
+}
+
+/// The bar on top: the lab picker, Play/Pause, Reset, the controls' sheet, and one button
+/// per view of the lab.
+pub fn bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    egui::Panel::top("narrow_bar").show(ui, |ui| {
+        controls::lab_picker(ui, app, commands);
+        ui.horizontal_wrapped(|ui| {
+            controls::run_buttons(ui, app, commands);
+            let open = app.view().sheet_open;
+            if ui
+                .selectable_label(open, "Controls")
+                .on_hover_text("The parameters, presets and exports, in a sheet below")
+                .clicked()
+            {
+                commands.push(Command::from(ViewCommand::SetSheet(!open)));
+            }
+        });
+        ui.horizontal_wrapped(|ui| {
+            ui.label("View:");
+            for (k, kind) in app.sim().lab().page().views.iter().enumerate() {
+                let chosen = app.view().narrow_view == k;
+                if ui
+                    .selectable_label(chosen, view_title(app, *kind))
+                    .clicked()
+                {
+                    commands.push(Command::from(ViewCommand::ShowNarrowView(k)));
+                }
+            }
+        });
+    });
+}
+
+/// What the switcher calls a view: a lab with a diagram of its own shows it where the w plane
+/// would be.
+fn view_title(app: &AppState, kind: ViewKind) -> String {
+    if kind == ViewKind::WPlane
+        && let Some(d) = app.sim().lab().page().diagrams(app.sim().params()).first()
+    {
+        return d.title.clone();
+    }
+    kind.title().to_string()
+}
+
+/// The controls' sheet over the lower half of the page, when open: seed and speed, then
+/// everything the wide page's left panel holds below its run buttons.
+pub fn sheet(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if !app.view().sheet_open {
+        return;
+    }
+    let h = ui.ctx().content_rect().height();
+    egui::Panel::bottom("narrow_sheet")
+        .resizable(true)
+        .default_size(0.5 * h)
+        .size_range(0.2 * h..=0.85 * h)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                ui.strong("Controls");
+                if ui.button("Close").clicked() {
+                    commands.push(Command::from(ViewCommand::SetSheet(false)));
+                }
+            });
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                ui.horizontal_wrapped(|ui| controls::mode_buttons(ui, app, commands));
+                controls::seed_and_speed(ui, app, commands);
+                ui.separator();
+                controls::body(ui, app, commands);
+            });
+        });
+}
+
+/// Styles `ui` for fingers: every button, slider and chip at least `TOUCH_TARGET_PX` high.
+pub fn touch_style(ui: &mut Ui) {
+    let zoom = ui.ctx().zoom_factor();
+    let spacing = ui.spacing_mut();
+    spacing.interact_size.y = TOUCH_TARGET_PX / zoom;
+    spacing.button_padding = egui::vec2(8.0, 7.0);
+    spacing.item_spacing = egui::vec2(8.0, 6.0);
+}

@@ -1,0 +1,233 @@
+//! The page's colours and line patterns, for a dark and a light (projector) theme: every
+//! source has one colour and one line pattern in every view, chosen so that a reader with
+//! deuteranopia, protanopia or tritanopia can still tell them apart (checked by the tests
+//! below with simulated colour vision), and every colour stands out from its background.
+
+use egui::{Color32, Visuals};
+use egui_plot::LineStyle;
+
+/// One theme's colours.
+#[derive(Debug)]
+pub struct Palette {
+    /// Truth, then the estimators' colours (cycled).
+    pub sources: [Color32; 8],
+    /// Colours for what is neither truth nor an estimator (a second truth series, sensors).
+    pub others: [Color32; 5],
+    /// The background of the views (3D, sphere, plane, dial).
+    pub view_bg: Color32,
+    /// What the background of the plots is (egui's panel colour), for the contrast test.
+    pub plot_bg: Color32,
+    /// Text and marks drawn on a view.
+    pub ink: Color32,
+    /// Secondary text and marks on a view.
+    pub ink_dim: Color32,
+    /// Grid lines on the front and the back of the sphere.
+    pub grid_front: Color32,
+    /// Grid lines on the back of the sphere.
+    pub grid_back: Color32,
+    /// The sphere's equator (|w| = 1), front and back.
+    pub equator: [Color32; 2],
+    /// A highlighted point (the pole S, the optimum of a sweep).
+    pub highlight: Color32,
+    /// Errors (a diverged filter, a failed step).
+    pub error: Color32,
+    /// Warnings (behind real time, unobservable).
+    pub warn: Color32,
+    /// Good news (a message that something worked).
+    pub good: Color32,
+    /// The shading of outages, by position.
+    pub outages: [Color32; 3],
+}
+
+/// The dark theme: Okabe and Ito's colour-blind-safe palette (their blue lightened so it
+/// reads on a dark panel), truth near-white.
+pub const DARK: Palette = Palette {
+    sources: [
+        Color32::from_rgb(0xEB, 0xEB, 0xEB),
+        Color32::from_rgb(0xE6, 0x9F, 0x00),
+        Color32::from_rgb(0x56, 0xB4, 0xE9),
+        Color32::from_rgb(0x00, 0x9E, 0x73),
+        Color32::from_rgb(0xF0, 0xE4, 0x42),
+        Color32::from_rgb(0x3D, 0x8B, 0xD9),
+        Color32::from_rgb(0xD5, 0x5E, 0x00),
+        Color32::from_rgb(0xCC, 0x79, 0xA7),
+    ],
+    others: [
+        Color32::from_rgb(150, 150, 150),
+        Color32::from_rgb(90, 140, 160),
+        Color32::from_rgb(200, 170, 130),
+        Color32::from_rgb(130, 170, 120),
+        Color32::from_rgb(170, 130, 170),
+    ],
+    view_bg: Color32::from_rgb(16, 20, 30),
+    plot_bg: Color32::from_rgb(27, 27, 27),
+    ink: Color32::from_gray(210),
+    ink_dim: Color32::from_gray(150),
+    grid_front: Color32::from_gray(95),
+    grid_back: Color32::from_gray(50),
+    equator: [
+        Color32::from_rgb(120, 160, 230),
+        Color32::from_rgb(60, 80, 120),
+    ],
+    highlight: Color32::from_rgb(230, 200, 80),
+    error: Color32::from_rgb(255, 128, 128),
+    warn: Color32::from_rgb(240, 220, 90),
+    good: Color32::from_rgb(140, 220, 140),
+    outages: [
+        Color32::from_rgba_premultiplied(60, 50, 0, 40),
+        Color32::from_rgba_premultiplied(60, 0, 30, 40),
+        Color32::from_rgba_premultiplied(0, 40, 60, 40),
+    ],
+};
+
+/// The light theme for projectors: truth black; vermillion, blue and bluish green from
+/// Okabe and Ito, the rest found by a search that kept every pair apart under simulated
+/// colour-blindness and every colour at 3:1 or more against white.
+pub const LIGHT: Palette = Palette {
+    sources: [
+        Color32::from_rgb(0x00, 0x00, 0x00),
+        Color32::from_rgb(0xD5, 0x5E, 0x00),
+        Color32::from_rgb(0x00, 0x72, 0xB2),
+        Color32::from_rgb(0x00, 0x9E, 0x73),
+        Color32::from_rgb(0x99, 0x00, 0xFF),
+        Color32::from_rgb(0x77, 0x44, 0x66),
+        Color32::from_rgb(0xDD, 0x00, 0x44),
+        Color32::from_rgb(0x99, 0x66, 0xEE),
+    ],
+    others: [
+        Color32::from_rgb(120, 120, 120),
+        Color32::from_rgb(60, 110, 130),
+        Color32::from_rgb(150, 110, 60),
+        Color32::from_rgb(80, 120, 70),
+        Color32::from_rgb(140, 90, 140),
+    ],
+    view_bg: Color32::from_rgb(244, 246, 250),
+    plot_bg: Color32::from_rgb(248, 248, 248),
+    ink: Color32::from_gray(25),
+    ink_dim: Color32::from_gray(90),
+    grid_front: Color32::from_gray(170),
+    grid_back: Color32::from_gray(220),
+    equator: [
+        Color32::from_rgb(30, 80, 180),
+        Color32::from_rgb(150, 170, 215),
+    ],
+    highlight: Color32::from_rgb(170, 120, 0),
+    error: Color32::from_rgb(190, 0, 0),
+    warn: Color32::from_rgb(140, 90, 0),
+    good: Color32::from_rgb(0, 120, 40),
+    outages: [
+        Color32::from_rgba_premultiplied(60, 50, 0, 40),
+        Color32::from_rgba_premultiplied(60, 0, 30, 40),
+        Color32::from_rgba_premultiplied(0, 40, 60, 40),
+    ],
+};
+
+/// The palette of the theme `visuals` belong to.
+pub fn of(visuals: &Visuals) -> &'static Palette {
+    if visuals.dark_mode { &DARK } else { &LIGHT }
+}
+
+/// The palette of the theme a context shows (for painters, which have no `Ui`).
+pub fn of_ctx(ctx: &egui::Context) -> &'static Palette {
+    if ctx.theme() == egui::Theme::Dark {
+        &DARK
+    } else {
+        &LIGHT
+    }
+}
+
+/// Estimators' colours cycle through the seven after the truth's.
+const ESTIMATOR_COLOURS: usize = 7;
+
+/// The line patterns, cycled by estimator: with seven colours and four patterns, no two of
+/// the first 28 estimators share both.
+const PATTERNS: usize = 4;
+
+impl Palette {
+    /// Colour of a source: truth, then estimators by position — the same colour in the 3D
+    /// ghost, the sphere, the dial, every plot and the tables.
+    pub fn source(&self, source_index: usize) -> Color32 {
+        match source_index {
+            0 => self.sources[0],
+            s => self.sources[1 + (s - 1) % ESTIMATOR_COLOURS],
+        }
+    }
+}
+
+/// The line pattern of a source (the second channel besides colour): the truth solid, the
+/// estimators solid, long dashes, dots, short dashes in turn.
+pub fn pattern(source_index: usize) -> LineStyle {
+    match source_index {
+        0 => LineStyle::Solid,
+        s => match (s - 1) % PATTERNS {
+            0 => LineStyle::Solid,
+            1 => LineStyle::Dashed { length: 14.0 },
+            2 => LineStyle::Dotted { spacing: 6.0 },
+            _ => LineStyle::Dashed { length: 5.0 },
+        },
+    }
+}
+
+/// Draws `points` as one polyline in `style` with `stroke` (the views' trails use the
+/// plots' patterns).
+pub fn styled_polyline(
+    painter: &egui::Painter,
+    points: Vec<egui::Pos2>,
+    stroke: egui::Stroke,
+    style: LineStyle,
+) {
+    match style {
+        LineStyle::Solid => {
+            painter.add(egui::Shape::line(points, stroke));
+        }
+        LineStyle::Dashed { length } => {
+            painter.extend(egui::Shape::dashed_line(
+                &points,
+                stroke,
+                length,
+                0.6 * length,
+            ));
+        }
+        LineStyle::Dotted { spacing } => {
+            painter.extend(egui::Shape::dotted_line(
+                &points,
+                stroke.color,
+                spacing,
+                stroke.width,
+            ));
+        }
+    }
+}
+
+/// Colours of a figure's series: an estimator's series in its source colour when it is that
+/// source's only series in the figure; several series of one estimator (its x, y, z) in the
+/// palette by position, so they stay apart; the truth's first series in the truth's colour;
+/// a second truth series and sensor readings in muted colours no estimator uses.
+pub fn figure_colors(palette: &Palette, specs: &[&attlab::model::SeriesSpec]) -> Vec<Color32> {
+    let count = |src: usize| specs.iter().filter(|s| s.source == src).count();
+    let mut other = 0;
+    let mut truth_seen = false;
+    specs
+        .iter()
+        .enumerate()
+        .map(|(position, s)| {
+            let is_truth = s.name.starts_with("truth.");
+            if is_truth && !truth_seen {
+                truth_seen = true;
+                return palette.source(0);
+            }
+            if !is_truth && s.source > 0 {
+                if count(s.source) == 1 {
+                    return palette.source(s.source);
+                }
+                return palette.source(position + 1);
+            }
+            other += 1;
+            palette.others[(other - 1) % palette.others.len()]
+        })
+        .collect()
+}
+
+#[cfg(test)]
+#[path = "palette_tests.rs"]
+mod tests;

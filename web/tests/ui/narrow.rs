@@ -1,0 +1,51 @@
+//! A phone's width: the bar, the sheet, one view at a time.
+
+use super::*;
+
+fn phone(lab_id: &str) -> Harness<'static, AttLabApp> {
+    let lab = labs::find(lab_id).expect("registered");
+    let mut app = AttLabApp::with_state(lab, ParamValues::defaults(lab.params()), 1, 1.0);
+    app.apply(RunCommand::SetPlaying(false).into());
+    Harness::builder()
+        .with_size(egui::vec2(390.0, 844.0))
+        .with_context_setup(attlab_web::render::fonts::install)
+        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
+}
+
+#[test]
+fn a_phone_shows_the_plot_and_keeps_the_sliders_in_a_sheet() {
+    let mut h = phone("p4");
+    h.run();
+    // No slider on the first screen: the controls wait in the sheet.
+    assert!(h.query_all_by_role(Role::Slider).next().is_none());
+    h.get_by_label("Controls").click();
+    h.run();
+    assert!(h.state().state.view().sheet_open);
+    assert!(h.query_all_by_role(Role::Slider).next().is_some());
+    h.get_by_label("Close").click();
+    h.run();
+    assert!(!h.state().state.view().sheet_open);
+}
+
+#[test]
+fn a_phone_switches_between_the_views_one_at_a_time() {
+    let mut h = phone("p4");
+    h.run();
+    assert_eq!(h.state().state.view().narrow_view, 0);
+    h.get_by_label("Phase portrait").click();
+    h.run();
+    assert_eq!(h.state().state.view().narrow_view, 2);
+}
+
+#[test]
+fn on_a_phone_every_button_is_a_finger_high() {
+    let mut h = phone("p4");
+    h.run();
+    for node in h.query_all_by_role(Role::Button) {
+        let Some(rect) = node.accesskit_node().raw_bounds() else {
+            continue;
+        };
+        let label = node.accesskit_node().label().unwrap_or_default();
+        assert!(rect.height() >= 31.9, "{label}: {} pt high", rect.height());
+    }
+}
