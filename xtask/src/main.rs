@@ -34,6 +34,9 @@ commands:
                                 Chromium (wasm criterion bench of the labs' timing items)
   soak [--minutes M]            run the page through every lab at top speed in headless
                                 Chromium for M minutes (default 10), sampling its memory
+  fuzz-page [--minutes M]       random clicks, drags, wheel, touches and keys on every lab
+                                in headless Chromium for M minutes (default 10); a failure
+                                prints the seed (ATTLAB_FUZZ_SEED, ATTLAB_FUZZ_LABS replay it)
   size                          build dist/, print the wasm raw, gzipped and brotli'd, and
                                 a twiggy profile of it by crate
 
@@ -63,6 +66,11 @@ enum Task {
         /// Minutes.
         minutes: f64,
     },
+    /// Random input on the page for this many minutes.
+    FuzzPage {
+        /// Minutes.
+        minutes: f64,
+    },
     /// The wasm's sizes and a twiggy profile by crate.
     Size,
     /// Print usage.
@@ -81,7 +89,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
     while let Some(arg) = iter.next() {
         match arg.as_str() {
             "--no-opt" if command != "test" => optimise = false,
-            "--minutes" if command == "soak" => {
+            "--minutes" if command == "soak" || command == "fuzz-page" => {
                 let value = iter.next().ok_or("--minutes needs a value")?;
                 minutes = value
                     .parse::<f64>()
@@ -108,6 +116,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
         "test" => Ok(Task::Test),
         "bench" => Ok(Task::Bench),
         "soak" => Ok(Task::Soak { minutes }),
+        "fuzz-page" => Ok(Task::FuzzPage { minutes }),
         "size" => Ok(Task::Size),
         "help" | "--help" | "-h" => Ok(Task::Help),
         other => Err(format!("unknown command `{other}`")),
@@ -137,6 +146,13 @@ fn run(task: Task) -> cmd::Result<()> {
             let server = serve::start(&dist, 0)?;
             println!("xtask: soak of {minutes} min against {}", server.url());
             cmd::run(&mut suite::soak_command(&server.url(), minutes))
+        }
+        Task::FuzzPage { minutes } => {
+            tools::ensure_browser()?;
+            let dist = site::build(true)?;
+            let server = serve::start(&dist, 0)?;
+            println!("xtask: page fuzz of {minutes} min against {}", server.url());
+            cmd::run(&mut suite::fuzz_command(&server.url(), minutes))
         }
         Task::Size => size::run(),
         Task::Help => {
@@ -206,6 +222,11 @@ mod tests {
             Ok(Task::Soak { minutes: 3.0 })
         );
         assert!(parse(&args(&["soak", "--minutes", "-1"])).is_err());
+        assert_eq!(
+            parse(&args(&["fuzz-page", "--minutes", "0.5"])),
+            Ok(Task::FuzzPage { minutes: 0.5 })
+        );
+        assert!(parse(&args(&["fuzz-page", "--port", "1"])).is_err());
         assert_eq!(
             parse(&args(&["dist", "--no-opt"])),
             Ok(Task::Dist { optimise: false })

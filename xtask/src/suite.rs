@@ -221,7 +221,11 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let dist = suite.step("build site (dist/)", || site::build(true))?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
-    let mut page = cargo("test -p attlab-tests --test page -- --ignored --nocapture --skip soak");
+    // Every page test but the soak, the page fuzz included (its default: one round of
+    // random input per lab); one at a time, so no Chromium starves another of the 2 cores.
+    let mut page = cargo(
+        "test -p attlab-tests --test page -- --ignored --nocapture --skip soak --test-threads=1",
+    );
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
@@ -230,6 +234,18 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
         &format!("soak ({CI_SOAK_MINUTES} min, headless Chromium)"),
         soak_command(&server.url(), CI_SOAK_MINUTES),
     )
+}
+
+/// The page fuzz against `url` for `minutes` (`cargo xtask test` runs one round per lab
+/// instead, with the other page tests).
+pub fn fuzz_command(url: &str, minutes: f64) -> Command {
+    let mut fuzz = cargo(
+        "test -p attlab-tests --test page -- --ignored --nocapture --exact page_survives_random_input",
+    );
+    fuzz.env("ATTLAB_PAGE_URL", url);
+    fuzz.env("ATTLAB_FUZZ_MINUTES", minutes.to_string());
+    fuzz.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    fuzz
 }
 
 /// Minutes of the soak inside `cargo xtask test`.

@@ -94,6 +94,9 @@ pub(crate) fn console_and_screenshot(session: &Session<'_>, tag: &str, file: &st
     match session.screenshot() {
         Ok(png_bytes) => {
             let path = out_dir().join(file);
+            if let Some(dir) = path.parent() {
+                std::fs::create_dir_all(dir).expect("make the screenshot's folder");
+            }
             std::fs::write(&path, &png_bytes).expect("save the screenshot");
             println!("page test: screenshot saved to {}", path.display());
             problems.extend(screenshot_problems(&png_bytes));

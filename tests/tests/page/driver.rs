@@ -148,15 +148,27 @@ impl<'a> Session<'a> {
 
     /// Emulates a viewport of `width` × `height` CSS pixels (Chromium's DevTools protocol
     /// through chromedriver); `None` ends the emulation.
-    pub(crate) fn set_viewport(&self, size: Option<(u32, u32)>) -> Result<(), String> {
+    /// A `mobile` viewport is a phone's, with touch events on.
+    pub(crate) fn set_viewport(
+        &self,
+        size: Option<(u32, u32)>,
+        mobile: bool,
+    ) -> Result<(), String> {
         let (cmd, params) = match size {
             Some((width, height)) => (
                 "Emulation.setDeviceMetricsOverride",
                 json!({ "width": width, "height": height, "deviceScaleFactor": 1,
-                        "mobile": false }),
+                        "mobile": mobile }),
             ),
             None => ("Emulation.clearDeviceMetricsOverride", json!({})),
         };
+        self.cdp(cmd, params)?;
+        let touch = json!({ "enabled": mobile && size.is_some(), "maxTouchPoints": 5 });
+        self.cdp("Emulation.setTouchEmulationEnabled", touch)
+    }
+
+    /// One command of Chromium's DevTools protocol, through chromedriver.
+    pub(crate) fn cdp(&self, cmd: &str, params: Value) -> Result<(), String> {
         self.call(
             "POST",
             "/goog/cdp/execute",

@@ -19,6 +19,7 @@ use std::time::{Duration, Instant};
 
 mod checks;
 mod driver;
+mod fuzz;
 mod screens;
 mod server;
 mod soak;
@@ -122,24 +123,7 @@ fn page_renders_without_errors() {
             &format!("screenshot-{id}.png"),
         ));
     }
-    // Presenter mode from its link: frames, no console error, and a screenshot.
-    match session.open(&format!("{base}#lab=p3&presenter=1")) {
-        Ok(_) => {
-            let status = wait_for_frames(&session);
-            problems.extend(
-                status_problems(&status)
-                    .into_iter()
-                    .map(|p| format!("presenter: {p}")),
-            );
-            problems.extend(console_and_screenshot(
-                &session,
-                "presenter",
-                "screenshot-presenter.png",
-            ));
-        }
-        Err(e) => problems.push(format!("presenter: navigate failed: {e}")),
-    }
-    problems.extend(screens::projector_problems(&session, &base));
+    problems.extend(screens::screen_problems(&session, &base));
     problems.extend(png_export_problems(&session, &base));
     drop(session);
     assert!(
@@ -215,6 +199,13 @@ fn page_works_offline_after_one_visit() {
 
 /// The soak: one page load, every lab in turn switched by its link in the open tab at the
 /// highest speed, twice round, memory sampled; see [`soak::run`].
+/// Random clicks, drags, wheel, touches and keys on every lab (see `fuzz.rs`).
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
+fn page_survives_random_input() {
+    fuzz::run();
+}
+
 #[test]
 #[ignore = "long: `cargo xtask soak --minutes M` (a 2-minute run is part of `cargo xtask test`)"]
 fn soak() {

@@ -1,16 +1,54 @@
-//! The page at a projector's size: every lab in presenter mode at 1280×720, its plot at
-//! least 40 % of the window's height, a screenshot of each in `target/page-test/`.
+//! The page on the screens it is used on: every lab in presenter mode (light theme) on a
+//! projector's 1280×720, on a laptop's 1366×768, and on a 390×844 phone (touch, stacked);
+//! its plot a fair share of the window's height on each, a screenshot of each in
+//! `target/page-test/screens/` (the README shows them).
 
 use super::*;
 
-/// A projector's screen (CSS pixels).
-pub(crate) const PROJECTOR: (u32, u32) = (1280, 720);
-/// The share of the window's height the plot must get at least.
-const MIN_PLOT_SHARE: f64 = 0.40;
+/// A screen the page is tried on.
+pub(crate) struct Screen {
+    /// Name in file names and messages.
+    pub name: &'static str,
+    /// CSS pixels.
+    pub size: (u32, u32),
+    /// What the link adds (`&presenter=1`).
+    pub link: &'static str,
+    /// A phone: touch events and the mobile viewport.
+    pub mobile: bool,
+    /// The share of the window's height the plot must get at least.
+    pub min_plot_share: f64,
+}
+
+/// The screens, as the issue that asked for them names them.
+pub(crate) const SCREENS: [Screen; 3] = [
+    Screen {
+        name: "projector",
+        size: (1280, 720),
+        link: "&presenter=1",
+        mobile: false,
+        min_plot_share: 0.40,
+    },
+    Screen {
+        name: "laptop",
+        size: (1366, 768),
+        link: "",
+        mobile: false,
+        min_plot_share: 0.40,
+    },
+    // A phone stacks the view above the plot and the plot's legend below it: the plot
+    // shares the height with both.
+    Screen {
+        name: "phone",
+        size: (390, 844),
+        link: "",
+        mobile: true,
+        min_plot_share: 0.25,
+    },
+];
 
 /// Problems of the layout `status` reports: the window's size as emulated, and the plot's
 /// share of its height.
-pub(crate) fn layout_problems(status: &Value, (w, h): (u32, u32)) -> Vec<String> {
+pub(crate) fn layout_problems(status: &Value, (w, h): (u32, u32), min_share: f64) -> Vec<String> {
     let rect = |key: &str| -> Option<[f64; 4]> {
         let a = status[key].as_array()?;
         let v: Vec<f64> = a.iter().filter_map(Value::as_f64).collect();
@@ -36,43 +74,47 @@ pub(crate) fn layout_problems(status: &Value, (w, h): (u32, u32)) -> Vec<String>
         plot[1],
         100.0 * share
     );
-    if share < MIN_PLOT_SHARE {
+    if share < min_share {
         problems.push(format!(
             "the plot is {:.0} px high, {:.0} % of the window (want ≥ {:.0} %)",
             plot[3],
             100.0 * share,
-            100.0 * MIN_PLOT_SHARE
+            100.0 * min_share
         ));
     }
     problems
 }
 
-/// Every lab in presenter mode on a projector: frames, console, the plot's share and a
-/// screenshot (`screenshot-presenter-<lab>.png`).
-pub(crate) fn projector_problems(session: &Session<'_>, base: &str) -> Vec<String> {
+/// Every lab on every screen: frames, console, the plot's share and a screenshot
+/// (`screens/<screen>-<lab>.png`).
+pub(crate) fn screen_problems(session: &Session<'_>, base: &str) -> Vec<String> {
     let mut problems = Vec::new();
-    if let Err(e) = session.set_viewport(Some(PROJECTOR)) {
-        return vec![format!("cannot emulate {PROJECTOR:?}: {e}")];
-    }
-    for lab in attlab::labs::all() {
-        let id = lab.id();
-        let tag = format!("presenter {id} at {}×{}", PROJECTOR.0, PROJECTOR.1);
-        if let Err(e) = session.open(&format!("{base}#lab={id}&presenter=1")) {
-            problems.push(format!("{tag}: navigate failed: {e}"));
+    for screen in &SCREENS {
+        if let Err(e) = session.set_viewport(Some(screen.size), screen.mobile) {
+            problems.push(format!("cannot emulate {}: {e}", screen.name));
             continue;
         }
-        let status = wait_for_frames(session);
-        let found = status_problems(&status)
-            .into_iter()
-            .chain(layout_problems(&status, PROJECTOR))
-            .chain(console_and_screenshot(
-                session,
-                &tag,
-                &format!("screenshot-presenter-{id}.png"),
-            ));
-        problems.extend(found.map(|p| format!("{tag}: {p}")));
+        for lab in attlab::labs::all() {
+            let id = lab.id();
+            let (w, h) = screen.size;
+            let tag = format!("{} {id} at {w}×{h}", screen.name);
+            if let Err(e) = session.open(&format!("{base}#lab={id}{}", screen.link)) {
+                problems.push(format!("{tag}: navigate failed: {e}"));
+                continue;
+            }
+            let status = wait_for_frames(session);
+            let found = status_problems(&status)
+                .into_iter()
+                .chain(layout_problems(&status, screen.size, screen.min_plot_share))
+                .chain(console_and_screenshot(
+                    session,
+                    &tag,
+                    &format!("screens/{}-{id}.png", screen.name),
+                ));
+            problems.extend(found.map(|p| format!("{tag}: {p}")));
+        }
     }
-    if let Err(e) = session.set_viewport(None) {
+    if let Err(e) = session.set_viewport(None, false) {
         problems.push(format!("cannot end the emulation: {e}"));
     }
     problems
