@@ -3,7 +3,7 @@
 
 The page ships these instead of egui's bundled fonts (eframe's `default_fonts` feature is off):
 the whole Ubuntu-Light and Hack files are 0.67 MB of the wasm, and the app draws only Latin,
-Greek, punctuation and a few symbols.
+Greek, Cyrillic, punctuation and a few symbols.
 
 - AttLabSans.ttf  <- Ubuntu-Light (egui's proportional font; Ubuntu Font Licence, UFL.txt)
 - AttLabMono.ttf  <- Hack-Regular (egui's monospace font; MIT + Bitstream Vera, Hack-Regular.txt)
@@ -21,11 +21,12 @@ from fontTools import subset
 from fontTools.ttLib import TTFont
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-REGISTRY = os.path.expanduser("~/.cargo/registry/src/*/epaint_default_fonts-0.37.0/fonts")
+REGISTRY = os.environ.get("EPAINT_FONTS", os.path.expanduser("~/.cargo/registry/src/*/epaint_default_fonts-0.37.0/fonts"))
 
-# Latin (ASCII, Latin-1, Latin Extended-A), Greek, general punctuation, super/subscripts,
+# Latin (ASCII, Latin-1, Latin Extended-A), Greek, Cyrillic (the page speaks Russian; +11 kB
+# gzipped for both fonts), the numero sign, general punctuation, super/subscripts,
 # the euro sign and letter-like symbols. Monospace falls back to the other two for the rest.
-TEXT = "U+0020-007E,U+00A0-017F,U+0370-03FF,U+2000-206F,U+2070-209F,U+20AC,U+2100-214F,U+FFFD"
+TEXT = "U+0020-007E,U+00A0-017F,U+0370-03FF,U+0400-045F,U+2116,U+2000-206F,U+2070-209F,U+20AC,U+2100-214F,U+FFFD"
 MONO = TEXT
 SYMBOLS = ("U+0300-036F,U+03D0-03FF,U+1D2C-1D6A,U+2032-2037,U+2070-209F,U+2190-21FF,"
            "U+2200-22FF,U+25B6,U+25C0,U+25CF,U+2715,U+27F2-27F3")

@@ -17,10 +17,12 @@
 //! * [`analysis`]: NaN-aware statistics, scenarios, sweeps, the registry fuzzer.
 //! * [`labs`]: the registry `labs::all()`, one folder per paper.
 //! * [`state`]: the shareable URL state.
+//! * [`i18n`]: the message catalogue (English and Russian), a leaf.
 
 pub mod analysis;
 pub mod dynamics;
 pub mod estimators;
+pub mod i18n;
 pub mod labs;
 pub mod math;
 pub mod model;

@@ -5,6 +5,7 @@
 //! Parsing never fails as a whole: every bad item is reported with its position and text,
 //! and everything good is kept.
 
+use crate::i18n::Lang;
 use crate::labs;
 use crate::model::{Lab, ParamValues};
 use thiserror::Error;
@@ -24,6 +25,8 @@ pub struct UrlState {
     pub presenter: bool,
     /// The colour theme asked for; `None` follows the mode (light in presenter mode).
     pub theme: Option<Theme>,
+    /// The language asked for; `None` follows the reader's browser.
+    pub lang: Option<Lang>,
 }
 
 /// The page's colour theme.
@@ -75,6 +78,7 @@ impl UrlState {
             params: ParamValues::defaults(lab.params()),
             presenter: false,
             theme: None,
+            lang: None,
         }
     }
 
@@ -90,6 +94,9 @@ impl UrlState {
         }
         if let Some(theme) = self.theme {
             out.append_pair("theme", theme.slug());
+        }
+        if let Some(lang) = self.lang {
+            out.append_pair("lang", lang.code());
         }
         if let Some(lab) = labs::find(self.lab_id) {
             for spec in lab.params() {
@@ -146,43 +153,50 @@ impl UrlState {
                 errors.push(err(*pos, item, "expected key=value".into()));
                 continue;
             };
-            match key.as_str() {
-                "lab" => {}
-                "seed" => match value.parse::<u64>() {
-                    Ok(s) => state.seed = s,
-                    Err(_) => {
-                        errors.push(err(*pos, item, "seed must be a whole number ≥ 0".into()))
-                    }
-                },
-                "speed" => match value.parse::<f64>() {
-                    Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => state.speed = s,
-                    _ => errors.push(err(
-                        *pos,
-                        item,
-                        format!(
-                            "speed must be between {} and {}",
-                            SPEED_RANGE.0, SPEED_RANGE.1
-                        ),
-                    )),
-                },
-                "presenter" => match value.as_str() {
-                    "1" | "true" | "on" => state.presenter = true,
-                    "0" | "false" | "off" => state.presenter = false,
-                    _ => errors.push(err(*pos, item, "presenter must be 1 or 0".into())),
-                },
-                "theme" => match value.as_str() {
-                    "light" => state.theme = Some(Theme::Light),
-                    "dark" => state.theme = Some(Theme::Dark),
-                    _ => errors.push(err(*pos, item, "theme must be light or dark".into())),
-                },
-                _ => {
-                    if let Err(e) = state.params.set_text(lab.params(), key, value) {
-                        errors.push(err(*pos, item, e.to_string()));
-                    }
-                }
+            if let Err(reason) = state.apply_item(lab, key, value) {
+                errors.push(err(*pos, item, reason));
             }
         }
         (state, errors)
+    }
+
+    /// Applies one `key=value` item of a link to the state, or says what is wrong with it.
+    fn apply_item(&mut self, lab: &'static dyn Lab, key: &str, value: &str) -> Result<(), String> {
+        match key {
+            "lab" => {}
+            "seed" => {
+                self.seed = value
+                    .parse::<u64>()
+                    .map_err(|_| "seed must be a whole number ≥ 0".to_string())?;
+            }
+            "speed" => match value.parse::<f64>() {
+                Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => self.speed = s,
+                _ => {
+                    let (lo, hi) = SPEED_RANGE;
+                    return Err(format!("speed must be between {lo} and {hi}"));
+                }
+            },
+            "presenter" => match value {
+                "1" | "true" | "on" => self.presenter = true,
+                "0" | "false" | "off" => self.presenter = false,
+                _ => return Err("presenter must be 1 or 0".into()),
+            },
+            "theme" => match value {
+                "light" => self.theme = Some(Theme::Light),
+                "dark" => self.theme = Some(Theme::Dark),
+                _ => return Err("theme must be light or dark".into()),
+            },
+            "lang" => {
+                let lang = Lang::from_tag(value).ok_or("lang must be en or ru")?;
+                self.lang = Some(lang);
+            }
+            _ => {
+                self.params
+                    .set_text(lab.params(), key, value)
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -218,6 +232,12 @@ mod tests {
                 .to_string()
                 .contains("theme must be light or dark")
         );
+        let (back, errors) = UrlState::parse("lang=ru");
+        assert_eq!((back.lang, errors.len()), (Some(Lang::Ru), 0));
+        assert_eq!(UrlState::parse(&back.encode()).0.lang, Some(Lang::Ru));
+        let (back, errors) = UrlState::parse("lang=klingon");
+        assert_eq!(back.lang, None);
+        assert!(errors[0].to_string().contains("lang must be en or ru"));
     }
 
     #[test]

@@ -145,24 +145,7 @@ impl AttLabApp {
         for c in commands.drain(..) {
             self.apply(c);
         }
-        // Presenter mode: everything larger (set on a change only, so the reader's own zoom
-        // keys keep working in between).
-        if self.zoomed_for != Some(self.state.view().presenter) {
-            ui.ctx().set_zoom_factor(if self.state.view().presenter {
-                1.5
-            } else {
-                1.0
-            });
-            self.zoomed_for = Some(self.state.view().presenter);
-        }
-        let theme = self.state.view().theme();
-        if self.themed != Some(theme) {
-            ui.ctx().set_theme(match theme {
-                attlab::state::Theme::Light => egui::Theme::Light,
-                attlab::state::Theme::Dark => egui::Theme::Dark,
-            });
-            self.themed = Some(theme);
-        }
+        self.set_zoom_and_theme(ui.ctx());
         // A phone or an upright tablet: the view and the plot on top, the controls in a sheet.
         let narrow = panels::is_narrow(ui.ctx());
         if narrow {
@@ -194,6 +177,32 @@ impl AttLabApp {
         }
         self.apply(UrlCommand::Sync.into());
         self.frames += 1;
+        self.publish(ui.ctx());
+    }
+
+    /// Presenter mode makes everything larger, and the theme follows the state (each set on
+    /// a change only, so the reader's own zoom keys keep working in between).
+    fn set_zoom_and_theme(&mut self, ctx: &egui::Context) {
+        if self.zoomed_for != Some(self.state.view().presenter) {
+            ctx.set_zoom_factor(if self.state.view().presenter {
+                1.5
+            } else {
+                1.0
+            });
+            self.zoomed_for = Some(self.state.view().presenter);
+        }
+        let theme = self.state.view().theme();
+        if self.themed != Some(theme) {
+            ctx.set_theme(match theme {
+                attlab::state::Theme::Light => egui::Theme::Light,
+                attlab::state::Theme::Dark => egui::Theme::Dark,
+            });
+            self.themed = Some(theme);
+        }
+    }
+
+    /// What the page test reads (`window.attlabStatus`).
+    fn publish(&self, ctx: &egui::Context) {
         platform::publish_status(&platform::Status {
             frames: self.frames,
             lab: self.state.sim().lab().id(),
@@ -203,8 +212,7 @@ impl AttLabApp {
             last_png: self.last_png.as_ref(),
             layout: self.regions.plot_area.map(|plot| {
                 let xywh = |r: egui::Rect| [r.min.x, r.min.y, r.width(), r.height()];
-                let zoom = ui.ctx().zoom_factor();
-                (xywh(ui.ctx().content_rect()), xywh(plot), zoom)
+                (xywh(ctx.content_rect()), xywh(plot), ctx.zoom_factor())
             }),
         });
     }

@@ -43,6 +43,28 @@ pub fn set_fragment(fragment: &str) {
     let _ = fragment;
 }
 
+/// The first of the browser's languages the page speaks (`navigator.languages`); English on
+/// the desktop, where the switch or `lang=` choose.
+pub fn browser_lang() -> attlab::i18n::Lang {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let Some(navigator) = web_sys::window().map(|w| w.navigator()) else {
+            return attlab::i18n::Lang::En;
+        };
+        let tags: Vec<String> = navigator
+            .languages()
+            .iter()
+            .filter_map(|v| v.as_string())
+            .chain(navigator.language())
+            .collect();
+        attlab::i18n::Lang::negotiate(tags.iter().map(String::as_str))
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        attlab::i18n::Lang::En
+    }
+}
+
 /// The page's address without its fragment (`https://host/path/`), in the browser.
 pub fn page_address() -> Option<String> {
     #[cfg(target_arch = "wasm32")]

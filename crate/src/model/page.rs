@@ -121,14 +121,14 @@ impl ViewKind {
         }
     }
 
-    /// The view's name for a reader (the switcher of a narrow screen).
-    pub fn title(self) -> &'static str {
+    /// The id of the view's name in the page's message catalogue (`view-body3d`…).
+    pub fn message(self) -> &'static str {
         match self {
-            Self::Body3d => "3D body",
-            Self::Sphere => "Riemann sphere",
-            Self::WPlane => "w plane",
-            Self::Dial => "Dial",
-            Self::PhasePortrait => "Phase portrait",
+            Self::Body3d => "view-body3d",
+            Self::Sphere => "view-sphere",
+            Self::WPlane => "view-wplane",
+            Self::Dial => "view-dial",
+            Self::PhasePortrait => "view-phase",
         }
     }
 }

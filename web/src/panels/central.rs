@@ -2,7 +2,7 @@
 //! plane or the lab's diagram; for a single-axis lab a dial and the phase portrait), the plot
 //! tabs and plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
-use super::tabs;
+use super::{arg, tabs, tr, tr_with};
 use crate::export::Regions;
 use crate::render::palette::{self, Palette};
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
@@ -102,10 +102,10 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
     }
     let size = Vec2::new(38.0, 18.0);
     let at = Rect::from_min_size(rect.max - size - Vec2::splat(4.0), size);
-    let button = egui::Button::new(egui::RichText::new("PNG").small());
+    let button = egui::Button::new(egui::RichText::new(tr(app, "png")).small());
     if ui
         .put(at, button)
-        .on_hover_text("Save this view as a PNG (key p while it is shown alone)")
+        .on_hover_text(tr(app, "png-view-hint"))
         .clicked()
     {
         commands.push(Command::from(IoCommand::ExportPng(PngTarget::View(k))));
@@ -160,7 +160,9 @@ fn draw_view(
             let mut tracks = tracks(app, palette::of(ui.visuals()));
             attach_ellipses(app, &mut tracks);
             let caption = chart_caption(app);
-            riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, &caption);
+            let title = tr(app, "sphere-title");
+            let words = (title.as_str(), caption.as_str());
+            riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, words);
         }
         ViewKind::WPlane => {
             // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
@@ -184,7 +186,7 @@ fn draw_view(
                 .filter(|(_, v)| *v)
                 .map(|(s, _)| s)
                 .collect();
-            single_axis::dial(ui, rect, &visible);
+            single_axis::dial(ui, rect, &visible, &tr(app, "dial-title"));
         }
         ViewKind::PhasePortrait => {
             // Trails are kept for hidden sources too, so showing one again loses nothing.
@@ -201,7 +203,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
     let mut shown = vec![true];
     let truth = app.sim().truth();
     let mut out = vec![single_axis::AxisSource {
-        name: "truth".into(),
+        name: tr(app, "truth"),
         color: colours.source(0),
         pattern: palette::pattern(0),
         angle_rad: truth.angle_rad.unwrap_or(f64::NAN),
@@ -248,6 +250,8 @@ fn draw_body(
                 .map(|e| e.label()),
         );
     let extras = app.sim().scene();
+    let mut top = vec![tr(app, "body-truth")];
+    top.extend(ghost.map(|(_, label)| tr_with(app, "body-ghost", &[("label", arg(label))])));
     let scene = body3d::Scene {
         truth,
         ghost,
@@ -260,6 +264,7 @@ fn draw_body(
             .get(app.view().ghost_index)
             .and_then(|e| e.unobservable_axis_body()),
         orbit: extras.orbit,
+        captions: (top, tr(app, "body-hint")),
     };
     body3d::show(ui, rect, camera, &scene, gpu_ready);
 }
@@ -278,13 +283,10 @@ fn chart_caption(app: &AppState) -> String {
     }
     let mut lines = Vec::new();
     if !north.is_empty() {
-        lines.push(format!("chart w (from S): {}", north.join(", ")));
+        lines.push(tr_with(app, "chart-w", &[("ids", arg(north.join(", ")))]));
     }
     if !flipped.is_empty() {
-        lines.push(format!(
-            "chart s = 1/w (upside down): {}",
-            flipped.join(", ")
-        ));
+        lines.push(tr_with(app, "chart-s", &[("ids", arg(flipped.join(", ")))]));
     }
     lines.join("\n")
 }
@@ -292,7 +294,8 @@ fn chart_caption(app: &AppState) -> String {
 /// The recent trail of every source with a vertical: truth, then each estimator.
 fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack> {
     let rec = app.sim().recorder();
-    let mut names = vec![(TRUTH, "truth")];
+    let truth = tr(app, "truth");
+    let mut names = vec![(TRUTH, truth.as_str())];
     names.extend(app.sim().estimators().iter().map(|e| (e.id(), e.label())));
     let mut out = Vec::new();
     for (i, (src, label)) in names.iter().enumerate() {

@@ -1,7 +1,9 @@
 //! The left panel: lab picker, run controls, parameter sliders generated from the lab's
 //! parameter specs, export and the explanation.
 
+use super::{arg, tr, tr_with};
 use crate::state::{AppState, Command, IoCommand, PngTarget, RunCommand, UrlCommand, ViewCommand};
+use attlab::i18n::{self, Lang};
 use attlab::labs;
 use attlab::model::{ParamKind, ParamSpec, Scale};
 use attlab::state::Theme;
@@ -20,7 +22,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     };
     panel.show(ui, |ui| {
         egui::ScrollArea::vertical().show(ui, |ui| {
-            ui.heading("Attitude Lab");
+            ui.heading(tr(app, "app-title"));
             lab_picker(ui, app, commands);
             ui.separator();
             run_controls(ui, app, commands);
@@ -36,7 +38,7 @@ pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if app.view().presenter {
         // For the projector: the presets carry the lesson; the sliders wait behind one click.
         presets(ui, app, commands);
-        egui::CollapsingHeader::new("All parameters")
+        egui::CollapsingHeader::new(tr(app, "all-parameters"))
             .default_open(false)
             .show(ui, |ui| parameters(ui, app, commands));
         super::lab_tools::accuracy(ui, app, commands);
@@ -56,13 +58,17 @@ pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let current = app.sim().lab();
-    egui::ComboBox::from_label("Lab")
-        .selected_text(current.title())
+    let lang = app.view().lang();
+    let title = |lab: &dyn attlab::model::Lab| {
+        i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title())
+    };
+    egui::ComboBox::from_label(tr(app, "lab"))
+        .selected_text(title(current))
         .width(220.0)
         .show_ui(ui, |ui| {
             for lab in labs::all() {
                 if ui
-                    .selectable_label(lab.id() == current.id(), lab.title())
+                    .selectable_label(lab.id() == current.id(), title(*lab))
                     .clicked()
                     && lab.id() != current.id()
                 {
@@ -84,23 +90,19 @@ fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// Play or Pause, Step and Reset.
 pub(super) fn run_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     {
-        let label = if app.run().playing {
-            "Pause"
-        } else {
-            "▶ Play"
-        };
+        let label = tr(app, if app.run().playing { "pause" } else { "play" });
         if ui.button(label).clicked() {
             commands.push(Command::from(RunCommand::SetPlaying(!app.run().playing)));
         }
         if ui
-            .add_enabled(!app.run().playing, egui::Button::new("Step"))
+            .add_enabled(!app.run().playing, egui::Button::new(tr(app, "step")))
             .clicked()
         {
             commands.push(Command::from(RunCommand::StepOnce));
         }
         if ui
-            .button("⟲ Reset")
-            .on_hover_text("Restart at t = 0 with the seed below")
+            .button(tr(app, "reset"))
+            .on_hover_text(tr(app, "reset-hint"))
             .clicked()
         {
             commands.push(Command::from(RunCommand::Reset));
@@ -112,28 +114,42 @@ pub(super) fn run_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Comman
 pub(super) fn mode_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     {
         if ui
-            .selectable_label(app.view().presenter, "Presenter")
-            .on_hover_text("For a projector: large type, thick lines, the presets only (also `presenter=1` in the link)")
+            .selectable_label(app.view().presenter, tr(app, "presenter"))
+            .on_hover_text(tr(app, "presenter-hint"))
             .clicked()
         {
-            commands.push(Command::from(ViewCommand::SetPresenter(!app.view().presenter)));
+            commands.push(Command::from(ViewCommand::SetPresenter(
+                !app.view().presenter,
+            )));
         }
         let light = app.view().theme() == Theme::Light;
         if ui
-            .selectable_label(light, "Light")
-            .on_hover_text("Light panels in dark type, for a projector (the default in presenter mode; also `theme=light` or `theme=dark` in the link)")
+            .selectable_label(light, tr(app, "light"))
+            .on_hover_text(tr(app, "light-hint"))
             .clicked()
         {
             let next = if light { Theme::Dark } else { Theme::Light };
             commands.push(Command::from(ViewCommand::SetTheme(Some(next))));
         }
+        let lang = app.view().lang();
+        egui::ComboBox::from_id_salt("language")
+            .selected_text(lang.name())
+            .show_ui(ui, |ui| {
+                for l in Lang::ALL {
+                    if ui.selectable_label(l == lang, l.name()).clicked() && l != lang {
+                        commands.push(Command::from(ViewCommand::SetLang(l)));
+                    }
+                }
+            })
+            .response
+            .on_hover_text(format!("{} (lang=en, lang=ru)", tr(app, "language")));
     }
 }
 
 /// The seed (with New seed) and the speed slider.
 pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
-        let label = ui.label("Seed");
+        let label = ui.label(tr(app, "seed"));
         let mut seed = app.run().seed;
         if ui
             .add(egui::DragValue::new(&mut seed).range(0..=u64::MAX))
@@ -143,8 +159,8 @@ pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Com
             commands.push(Command::from(RunCommand::SetSeed(seed)));
         }
         if ui
-            .button("New seed")
-            .on_hover_text("A random seed, then Reset")
+            .button(tr(app, "new-seed"))
+            .on_hover_text(tr(app, "new-seed-hint"))
             .clicked()
         {
             commands.push(Command::from(RunCommand::NewSeed));
@@ -156,7 +172,7 @@ pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Com
         .add(
             egui::Slider::new(&mut speed, lo..=hi)
                 .logarithmic(true)
-                .text("speed ×")
+                .text(tr(app, "speed"))
                 .max_decimals(1),
         )
         .changed()
@@ -169,14 +185,11 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let presets = app.sim().lab().presets();
     if !presets.is_empty() {
         ui.horizontal_wrapped(|ui| {
-            ui.label("Presets:");
+            ui.label(tr(app, "presets"));
             for (i, preset) in presets.iter().enumerate() {
                 if ui
                     .button(preset.name)
-                    .on_hover_text(format!(
-                        "{} — parameters marked 'applies at Reset' need Reset",
-                        preset.help
-                    ))
+                    .on_hover_text(tr_with(app, "preset-hint", &[("help", arg(preset.help))]))
                     .clicked()
                 {
                     commands.push(Command::from(RunCommand::ApplyPreset(i)));
@@ -188,8 +201,8 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 
 fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
-        ui.strong("Parameters");
-        if ui.small_button("defaults").clicked() {
+        ui.strong(tr(app, "parameters"));
+        if ui.small_button(tr(app, "defaults")).clicked() {
             commands.push(Command::from(RunCommand::RestoreDefaults));
         }
     });
@@ -202,7 +215,7 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .requires
             .is_none_or(|k| app.sim().params().get(k) != 0.0);
         let changed = ui
-            .add_enabled_ui(active, |ui| param_widget(ui, spec, value))
+            .add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
             .inner;
         if let Some(v) = changed {
             commands.push(Command::from(RunCommand::SetParam(spec.key, v)));
@@ -224,10 +237,14 @@ fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         .filter_map(|k| specs.iter().find(|s| s.key == *k).map(|s| s.label))
         .collect();
     ui.horizontal_wrapped(|ui| {
-        ui.label(format!("Waiting for Reset: {}.", labels.join(", ")));
+        ui.label(tr_with(
+            app,
+            "waiting-for-reset",
+            &[("names", arg(labels.join(", ")))],
+        ));
         if ui
-            .small_button("Reset now")
-            .on_hover_text("Restart from t = 0 with these values")
+            .small_button(tr(app, "reset-now"))
+            .on_hover_text(tr(app, "reset-now-hint"))
             .clicked()
         {
             commands.push(Command::from(RunCommand::Reset));
@@ -236,10 +253,15 @@ fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 /// One widget for one parameter; returns the new value if the user changed it.
-pub(super) fn param_widget(ui: &mut Ui, spec: &ParamSpec, value: f64) -> Option<f64> {
+pub(super) fn param_widget(
+    ui: &mut Ui,
+    app: &AppState,
+    spec: &ParamSpec,
+    value: f64,
+) -> Option<f64> {
     let mut v = value;
     let hint = if spec.needs_reset {
-        format!("{} (applies at Reset)", spec.help)
+        tr_with(app, "applies-at-reset", &[("help", arg(spec.help))])
     } else {
         spec.help.to_string()
     };
@@ -298,7 +320,7 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .iter()
             .find(|(i, _)| *i == app.view().ghost_index)
             .map_or("—", |x| x.1);
-        egui::ComboBox::from_label("3D ghost")
+        egui::ComboBox::from_label(tr(app, "ghost"))
             .selected_text(current)
             .show_ui(ui, |ui| {
                 for (i, label) in &with_attitude {
@@ -313,25 +335,32 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     }
     ui.horizontal(|ui| {
         if ui
-            .button("Export CSV")
-            .on_hover_text("Every series at every step since t = 0 (the run is re-simulated exactly; empty cells are missing samples)")
+            .button(tr(app, "export-csv"))
+            .on_hover_text(tr(app, "export-csv-hint"))
             .clicked()
         {
             commands.push(Command::from(IoCommand::ExportCsv));
         }
-        if ui.button("Copy link").on_hover_text("A link that restores lab, seed, speed and parameters").clicked() {
+        if ui
+            .button(tr(app, "copy-link"))
+            .on_hover_text(tr(app, "copy-link-hint"))
+            .clicked()
+        {
             commands.push(Command::from(UrlCommand::CopyLink));
         }
         if ui
-            .button("Copy as Python")
-            .on_hover_text("A pandas + matplotlib snippet that loads the exported CSV and draws the plot tab on screen")
+            .button(tr(app, "copy-python"))
+            .on_hover_text(tr(app, "copy-python-hint"))
             .clicked()
         {
             commands.push(Command::from(IoCommand::CopyPython));
         }
         if ui
-            .add_enabled(!app.view().capturing, egui::Button::new("PNG of the plots"))
-            .on_hover_text("Every plot tab at this instant, one below the other, in one PNG (key p). A view shows its own PNG button when the pointer is over it.")
+            .add_enabled(
+                !app.view().capturing,
+                egui::Button::new(tr(app, "png-plots")),
+            )
+            .on_hover_text(tr(app, "png-plots-hint"))
             .clicked()
         {
             commands.push(Command::from(IoCommand::ExportPng(PngTarget::Plots)));
@@ -339,8 +368,8 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     });
     if app.sim().lab().output_file(app.sim().params()).is_some()
         && ui
-            .button("Export the paper's output file")
-            .on_hover_text("The paper's own rows (t, angle₁, angle₂, angle₃), re-run from t = 0 with the current parameters, ending at the first row within tolerance")
+            .button(tr(app, "export-output"))
+            .on_hover_text(tr(app, "export-output-hint"))
             .clicked()
     {
         commands.push(Command::from(IoCommand::ExportOutputFile));
@@ -365,18 +394,15 @@ fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 fn explanation(ui: &mut Ui, app: &AppState) {
-    egui::CollapsingHeader::new("What am I looking at?")
+    egui::CollapsingHeader::new(tr(app, "what-am-i-looking-at"))
         .default_open(false)
         .show(ui, |ui| {
-            ui.label(app.sim().lab().summary());
+            let lab = app.sim().lab();
+            let id = i18n::lab_summary_id(lab.id());
+            ui.label(i18n::lab_text(app.view().lang(), &id, lab.summary()));
             ui.add_space(4.0);
-            ui.label(RichText::new(super::keys::HELP).small().strong());
+            ui.label(RichText::new(tr(app, "keys-help")).small().strong());
             ui.add_space(4.0);
-            ui.label(RichText::new(
-            "Frames: reference ζ up; body ξ′ right, η′ forward, ζ′ up. The sphere shows the \
-             vertical k = (a′, b′, c′) in body axes; the ray from the pole S through k meets the \
-             body plane at w = u + jv = (a′ + jb′)/(1 + c′). |w| = 1 is pitch ±90°; w → ∞ is \
-             upside down, where the (u, v, z) integrator switches to s = 1/w.",
-        ).small());
+            ui.label(RichText::new(tr(app, "frames-help")).small());
         });
 }

@@ -8,9 +8,6 @@ use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, RunCommand, V
 use attlab::model::PlotTab;
 use egui::Key;
 
-/// The shortcuts, for the help.
-pub const HELP: &str = "Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next; the plots; all) · p save a PNG (the view shown alone, else every plot tab)";
-
 /// Turns this frame's key presses into commands.
 pub fn shortcuts(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command>) {
     if ctx.egui_wants_keyboard_input() {

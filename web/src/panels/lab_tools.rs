@@ -135,7 +135,9 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
             let units = app.io().units_for(format);
             ui.horizontal_wrapped(|ui| {
                 for spec in format.units {
-                    if let Some(v) = super::controls::param_widget(ui, spec, units.get(spec.key)) {
+                    if let Some(v) =
+                        super::controls::param_widget(ui, app, spec, units.get(spec.key))
+                    {
                         commands.push(Command::from(IoCommand::SetLogUnit(spec.key, v)));
                     }
                 }

@@ -16,7 +16,23 @@ pub use keys::{shortcuts, tabs};
 pub use narrow::{bar as narrow_bar, is_narrow, sheet as narrow_sheet, touch_style};
 
 use crate::state::{AppState, Command, RunCommand};
+use attlab::i18n::{self, FluentValue};
 use attlab::model::EstimatorStatus;
+
+/// The page's message `id` (crate/locales/*/page.ftl) in the reader's language.
+pub(crate) fn tr(app: &AppState, id: &str) -> String {
+    i18n::t(app.view().lang(), id)
+}
+
+/// The same with arguments (`$name` in the message).
+pub(crate) fn tr_with(app: &AppState, id: &str, args: &[(&str, FluentValue<'_>)]) -> String {
+    i18n::t_with(app.view().lang(), id, args)
+}
+
+/// An argument for [`tr_with`] from anything that prints.
+pub(crate) fn arg(value: impl std::fmt::Display) -> FluentValue<'static> {
+    FluentValue::from(value.to_string())
+}
 
 /// The status line at the bottom: a re-run or export under way (with its progress and a
 /// button that stops it), time, rates, frame time, recorder memory and estimator health.
@@ -30,52 +46,80 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
                         .desired_width(220.0)
                         .text(format!("{} · {:.0} %", job.title(), 100.0 * done)),
                 );
-                ui.label("the simulation holds meanwhile");
-                if ui.small_button("Stop").clicked() {
+                ui.label(tr(app, "job-holds"));
+                if ui.small_button(tr(app, "stop")).clicked() {
                     commands.push(Command::from(RunCommand::CancelJob));
                 }
             });
         }
         let colours = crate::render::palette::of(ui.visuals());
         ui.horizontal_wrapped(|ui| {
-            let s = &app.run().stats;
-            let rec = app.sim().recorder();
-            if app.view().presenter || is_narrow(ui.ctx()) {
-                // A room (or a phone) reads the time and the pace; the rest is for the engineer.
-                ui.monospace(format!(
-                    "t = {:7.2} s · ×{:.2} real time (×{} asked)",
-                    app.sim().t_s(),
-                    s.realtime,
-                    app.run().speed
-                ));
-            } else {
-                ui.monospace(format!(
-                "t = {:8.2} s · step {:.1} ms · {:7.0} steps/s · ×{:.2} real time (×{} asked) · frame every {:5.1} ms · sim {:4.1} ms/frame · recorder {:.1} MiB ({} series, whole run)",
-                app.sim().t_s(),
-                app.sim().dt_s() * 1e3,
-                s.steps_per_s,
-                s.realtime,
-                app.run().speed,
-                s.frame_ms,
-                s.step_ms,
-                rec.memory_bytes() as f64 / f64::from(1 << 20),
-                rec.specs().len(),
-            ));
-            }
-            if s.behind {
-                ui.colored_label(colours.warn, "· behind real time: lower the speed");
+            ui.monospace(stats_text(app, is_narrow(ui.ctx())));
+            if app.run().stats.behind {
+                ui.colored_label(colours.warn, tr(app, "behind"));
             }
             for (e, status) in app.sim().estimators().iter().zip(app.sim().statuses()) {
                 match status {
                     EstimatorStatus::Ok => {}
                     EstimatorStatus::Diverged(why) => {
-                        ui.colored_label(colours.error, format!("· {} diverged: {why} (press Reset)", e.id()));
+                        ui.colored_label(
+                            colours.error,
+                            tr_with(app, "diverged", &[("id", arg(e.id())), ("why", arg(why))]),
+                        );
                     }
                     EstimatorStatus::Unobservable(why) => {
-                        ui.colored_label(colours.warn, format!("· {} unobservable: {why}", e.id()));
+                        ui.colored_label(
+                            colours.warn,
+                            tr_with(
+                                app,
+                                "unobservable",
+                                &[("id", arg(e.id())), ("why", arg(why))],
+                            ),
+                        );
                     }
                 }
             }
         });
     });
+}
+
+/// The status line's numbers: for a room or a phone the time and the pace; for the
+/// engineer the step, the rates, the frame and the recorder too.
+fn stats_text(app: &AppState, narrow: bool) -> String {
+    let s = &app.run().stats;
+    let rec = app.sim().recorder();
+    if app.view().presenter || narrow {
+        // A room (or a phone) reads the time and the pace; the rest is for the engineer.
+        tr_with(
+            app,
+            "status-short",
+            &[
+                ("t", arg(format!("{:7.2}", app.sim().t_s()))),
+                ("realtime", arg(format!("{:.2}", s.realtime))),
+                ("asked", arg(app.run().speed)),
+            ],
+        )
+    } else {
+        tr_with(
+            app,
+            "status-long",
+            &[
+                ("t", arg(format!("{:8.2}", app.sim().t_s()))),
+                ("step", arg(format!("{:.1}", app.sim().dt_s() * 1e3))),
+                ("rate", arg(format!("{:7.0}", s.steps_per_s))),
+                ("realtime", arg(format!("{:.2}", s.realtime))),
+                ("asked", arg(app.run().speed)),
+                ("frame", arg(format!("{:5.1}", s.frame_ms))),
+                ("sim", arg(format!("{:4.1}", s.step_ms))),
+                (
+                    "mib",
+                    arg(format!(
+                        "{:.1}",
+                        rec.memory_bytes() as f64 / f64::from(1 << 20)
+                    )),
+                ),
+                ("series", arg(rec.specs().len())),
+            ],
+        )
+    }
 }

@@ -2,7 +2,7 @@
 //! a bar on top holds the lab, the run buttons and a switcher between the views, and the
 //! controls open as a sheet from the bottom.
 
-use super::controls;
+use super::{controls, tr};
 use crate::state::{AppState, Command, ViewCommand};
 use attlab::model::ViewKind;
 use egui::Ui;
@@ -27,15 +27,15 @@ pub fn bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             controls::run_buttons(ui, app, commands);
             let open = app.view().sheet_open;
             if ui
-                .selectable_label(open, "Controls")
-                .on_hover_text("The parameters, presets and exports, in a sheet below")
+                .selectable_label(open, tr(app, "controls"))
+                .on_hover_text(tr(app, "controls-hint"))
                 .clicked()
             {
                 commands.push(Command::from(ViewCommand::SetSheet(!open)));
             }
         });
         ui.horizontal_wrapped(|ui| {
-            ui.label("View:");
+            ui.label(tr(app, "view"));
             for (k, kind) in app.sim().lab().page().views.iter().enumerate() {
                 let chosen = app.view().narrow_view == k;
                 if ui
@@ -57,7 +57,7 @@ fn view_title(app: &AppState, kind: ViewKind) -> String {
     {
         return d.title.clone();
     }
-    kind.title().to_string()
+    tr(app, kind.message())
 }
 
 /// The controls' sheet over the lower half of the page, when open: seed and speed, then
@@ -73,8 +73,8 @@ pub fn sheet(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         .size_range(0.2 * h..=0.85 * h)
         .show(ui, |ui| {
             ui.horizontal(|ui| {
-                ui.strong("Controls");
-                if ui.button("Close").clicked() {
+                ui.strong(tr(app, "controls"));
+                if ui.button(tr(app, "close")).clicked() {
                     commands.push(Command::from(ViewCommand::SetSheet(false)));
                 }
             });

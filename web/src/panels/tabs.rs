@@ -1,6 +1,7 @@
 //! Above the plot: one chip per estimator (hide or show it everywhere) and the plot tabs,
 //! the paper's figures first and the rest behind a "More…" menu, with the tab's options.
 
+use super::{arg, tr, tr_with};
 use crate::render::plots;
 use crate::state::{AppState, Command, ViewCommand};
 use attlab::model::SeriesGroup;
@@ -19,12 +20,16 @@ pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<C
         })
         .count();
     ui.horizontal(|ui| {
-        ui.label(egui::RichText::new("Estimators:").small());
+        ui.label(egui::RichText::new(tr(app, "estimators")).small());
         for i in 0..fits {
             estimator_chip(ui, app, i, commands);
         }
         if fits < estimators.len() {
-            let label = format!("+{} more…", estimators.len() - fits);
+            let label = tr_with(
+                app,
+                "more-estimators",
+                &[("n", (estimators.len() - fits).into())],
+            );
             ui.menu_button(egui::RichText::new(label).small(), |ui| {
                 for i in fits..estimators.len() {
                     estimator_chip(ui, app, i, commands);
@@ -52,10 +57,14 @@ fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Comm
         .color(color);
     if ui
         .selectable_label(shown, text)
-        .on_hover_text(format!(
-            "{} — click to {} it everywhere",
-            e.label(),
-            if shown { "hide" } else { "show" }
+        .on_hover_text(tr_with(
+            app,
+            if shown {
+                "chip-hide-hint"
+            } else {
+                "chip-show-hint"
+            },
+            &[("name", arg(e.label()))],
         ))
         .clicked()
     {
@@ -104,8 +113,8 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
         let more = &tabs[shown..];
         if !more.is_empty() {
             let label = match more.iter().find(|(tab, _)| *tab == current) {
-                Some((_, title)) => format!("More: {title}"),
-                None => "More…".to_string(),
+                Some((_, title)) => tr_with(app, "more-with", &[("title", arg(title))]),
+                None => tr(app, "more"),
             };
             ui.menu_button(label, |ui| {
                 for (tab, title) in more {
@@ -141,13 +150,13 @@ fn tab_options(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     match app.view().plots.tab {
         plots::Tab::Group(SeriesGroup::Covariance) => {
             let mut on = app.view().plots.log_covariance;
-            if ui.checkbox(&mut on, "log10").changed() {
+            if ui.checkbox(&mut on, tr(app, "log10")).changed() {
                 commands.push(Command::from(ViewCommand::SetLogCovariance(on)));
             }
         }
         _ => {
             let mut on = app.view().plots.show_bands;
-            if ui.checkbox(&mut on, "±3σ bands").changed() {
+            if ui.checkbox(&mut on, tr(app, "bands")).changed() {
                 commands.push(Command::from(ViewCommand::SetShowBands(on)));
             }
         }
@@ -155,8 +164,8 @@ fn tab_options(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if !app.sim().lab().page().outages.is_empty() {
         let mut on = app.view().plots.show_outages;
         if ui
-            .checkbox(&mut on, "shade outages")
-            .on_hover_text("Shade the intervals where a sensor gives nothing (every plot)")
+            .checkbox(&mut on, tr(app, "outages"))
+            .on_hover_text(tr(app, "outages-hint"))
             .changed()
         {
             commands.push(Command::from(ViewCommand::SetShowOutages(on)));

@@ -271,6 +271,9 @@ pub struct Scene<'a> {
     pub ghost_axis: Option<Vector3<f64>>,
     /// The orbit, drawn small in a corner.
     pub orbit: Option<OrbitPicture>,
+    /// The captions in the reader's language: the lines on top (what is solid, what is the
+    /// ghost), and how to move the camera at the bottom.
+    pub captions: (Vec<String>, String),
 }
 
 /// Shows the 3D view filling `rect`.
@@ -402,21 +405,15 @@ fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
 fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) {
     let font = egui::FontId::proportional(13.0);
     let colours = super::palette::of_ctx(painter.ctx());
-    let mut top = vec!["truth (solid)".to_string()];
-    // On its own line: a long estimator label would run into the truth's.
-    top.extend(
-        scene
-            .ghost
-            .map(|(_, label)| format!("estimate (ghost): {label}")),
-    );
-    for (k, text) in top.into_iter().enumerate() {
+    // Each on its own line: a long estimator label would run into the truth's.
+    for (k, text) in scene.captions.0.iter().enumerate() {
         let at = rect.left_top() + egui::vec2(8.0, 6.0 + 18.0 * k as f32);
         painter.text(at, egui::Align2::LEFT_TOP, text, font.clone(), colours.ink);
     }
     painter.text(
         rect.left_bottom() + egui::vec2(8.0, -6.0),
         egui::Align2::LEFT_BOTTOM,
-        "drag: orbit · wheel or pinch: zoom · double-click: reset · x red, y green, z blue",
+        &scene.captions.1,
         font,
         colours.ink_dim,
     );

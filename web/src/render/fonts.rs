@@ -1,7 +1,7 @@
 //! Fonts: the app ships its own subsets instead of egui's bundled fonts (eframe's
 //! `default_fonts` feature is off; the whole Ubuntu-Light and Hack files were 0.67 MB of the
 //! wasm). `assets/fonts/subset.py` cuts them:
-//! - `AttLabSans` (Ubuntu-Light: Latin, Greek, punctuation, super/subscripts),
+//! - `AttLabSans` (Ubuntu-Light: Latin, Greek, Cyrillic, punctuation, super/subscripts),
 //! - `AttLabMono` (Hack, the same ranges),
 //! - `DejaVuSans-symbols`: what the labs' labels use beyond those — combining accents as in φ̇,
 //!   ϑ, ᵀ, primes, arrows, maths, ▶ ✕ ⟲ — as the fallback of both families.
@@ -93,6 +93,18 @@ mod tests {
             } else if path.extension().is_some_and(|e| e == "rs") {
                 let text = std::fs::read_to_string(&path).expect("source file");
                 literal_chars(&text, &path.display().to_string(), out);
+            } else if path.extension().is_some_and(|e| e == "ftl") {
+                // A message catalogue: every character of its messages (comments aside).
+                let text = std::fs::read_to_string(&path).expect("catalogue");
+                for (n, line) in text.lines().enumerate() {
+                    if line.trim_start().starts_with('#') {
+                        continue;
+                    }
+                    for c in line.chars().filter(|c| !c.is_ascii()) {
+                        let at = format!("{}:{}", path.display(), n + 1);
+                        out.entry(c).or_insert(at);
+                    }
+                }
             }
         }
     }
@@ -104,12 +116,12 @@ mod tests {
     fn every_label_has_a_glyph() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
         let mut chars = BTreeMap::new();
-        for dir in ["web/src", "crate/src"] {
+        for dir in ["web/src", "crate/src", "crate/locales"] {
             scan(&root.join(dir), &mut chars);
         }
         assert!(
-            chars.contains_key(&'ϑ') && chars.contains_key(&'▶'),
-            "the scan found neither ϑ (p3's labels) nor ▶ (the run button): {} characters",
+            chars.contains_key(&'ϑ') && chars.contains_key(&'▶') && chars.contains_key(&'ж'),
+            "the scan found neither ϑ (p3's labels), ▶ (the run button) nor ж (Russian): {} characters",
             chars.len()
         );
         let ctx = egui::Context::default();
@@ -143,8 +155,8 @@ mod tests {
         ctx.run_ui(egui::RawInput::default(), |_| {})
             .textures_delta
             .clear();
-        let sample =
-            "0123456789 ABCxyz °±×÷µ·² αβγδθσφψωΔΣΦΩ –—‘’“”…′″ ⁻¹ ₀₁ →←↑↓ ≈≤≥∞√∑∫ φ̇ ϑ ᵀ ▶✕⟲";
+        let sample = "0123456789 ABCxyz °±×÷µ·² αβγδθσφψωΔΣΦΩ –—‘’“”…′″ ⁻¹ ₀₁ →←↑↓ ≈≤≥∞√∑∫ φ̇ ϑ ᵀ ▶✕⟲ \
+             АБВГДЕЁЖЗИЙКЛМНОПРСТУФХЦЧШЩЪЫЬЭЮЯ абвгдеёжзийклмнопрстуфхцчшщъыьэюя «»№";
         for family in [
             egui::FontId::proportional(14.0),
             egui::FontId::monospace(14.0),

@@ -183,7 +183,7 @@ pub fn show_sphere(
     rect: Rect,
     view: &mut SphereView,
     tracks: &[SphereTrack],
-    caption: &str,
+    (title, caption): (&str, &str),
 ) {
     let response = ui.allocate_rect(rect, Sense::click_and_drag());
     if response.double_clicked() {
@@ -218,7 +218,7 @@ pub fn show_sphere(
     // Title and caption wrap inside the view, so neither runs off it or into the other.
     let wrap = (rect.width() - 16.0).max(40.0);
     let title = painter.layout(
-        "Riemann sphere: vertical k in body axes".into(),
+        title.to_string(),
         FontId::proportional(13.0),
         colours.ink,
         wrap,

@@ -59,14 +59,14 @@ impl PhaseTrails {
 
 /// The angle on a dial: a needle per source, truth drawn widest; 0° up, positive clockwise
 /// as on an instrument.
-pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource]) {
+pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
     let painter = ui.painter_at(rect);
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
     painter.text(
         rect.left_top() + Vec2::new(8.0, 6.0),
         egui::Align2::LEFT_TOP,
-        "Angle on a dial (0° up)",
+        title,
         egui::FontId::proportional(13.0),
         colours.ink,
     );

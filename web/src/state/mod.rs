@@ -158,6 +158,8 @@ impl AppState {
         let mut state = Self::new(lab, url.params, url.seed, url.speed);
         state.view.presenter = url.presenter;
         state.view.theme = url.theme;
+        state.view.lang = url.lang;
+        state.view.browser_lang = crate::platform::browser_lang();
         state.messages.extend(
             errors
                 .into_iter()

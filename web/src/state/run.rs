@@ -167,6 +167,8 @@ impl AppState {
         self.view = ViewState {
             presenter: self.view.presenter,
             theme: self.view.theme,
+            lang: self.view.lang,
+            browser_lang: self.view.browser_lang,
             capturing: self.view.capturing,
             ..ViewState::for_lab(lab)
         };

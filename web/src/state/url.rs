@@ -47,6 +47,7 @@ impl AppState {
             params: self.sim.params().clone(),
             presenter: self.view.presenter,
             theme: self.view.theme,
+            lang: self.view.lang,
         }
         .encode()
     }

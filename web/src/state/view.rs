@@ -4,6 +4,7 @@
 
 use super::AppState;
 use crate::render::plots::PlotState;
+use attlab::i18n::Lang;
 use attlab::model::{Lab, PlotTab};
 use attlab::sim::{Selection, Simulation};
 use attlab::state::Theme;
@@ -45,6 +46,10 @@ pub struct ViewState {
     pub presenter: bool,
     /// The theme chosen; `None` follows the mode (light in presenter mode).
     pub theme: Option<Theme>,
+    /// The language chosen (the switch or `lang=` in the link); `None` follows the browser.
+    pub lang: Option<Lang>,
+    /// The first of the browser's languages the page speaks.
+    pub browser_lang: Lang,
     /// Which estimator the 3D ghost shows.
     pub ghost_index: usize,
     /// A PNG capture is running: the views hide their buttons and the simulation holds.
@@ -56,6 +61,11 @@ pub struct ViewState {
 }
 
 impl ViewState {
+    /// The language shown: the one chosen, else the browser's.
+    pub fn lang(&self) -> Lang {
+        self.lang.unwrap_or(self.browser_lang)
+    }
+
     /// The theme shown: the one chosen, else light in presenter mode and dark otherwise.
     pub fn theme(&self) -> Theme {
         self.theme.unwrap_or(Theme::for_mode(self.presenter))
@@ -69,6 +79,8 @@ impl ViewState {
             hidden: Vec::new(),
             presenter: false,
             theme: None,
+            lang: None,
+            browser_lang: Lang::En,
             ghost_index: 0,
             capturing: false,
             sheet_open: false,
@@ -100,6 +112,8 @@ pub enum ViewCommand {
     SetCapturing(bool),
     /// Choose the theme (`None`: follow the mode).
     SetTheme(Option<Theme>),
+    /// Choose the language.
+    SetLang(Lang),
     /// On a narrow screen: open or close the controls' sheet.
     SetSheet(bool),
     /// On a narrow screen: show the lab's view with this index above the plots.
@@ -127,6 +141,7 @@ impl AppState {
             ViewCommand::SetPresenter(on) => view.presenter = on,
             ViewCommand::SetCapturing(on) => view.capturing = on,
             ViewCommand::SetTheme(theme) => view.theme = theme,
+            ViewCommand::SetLang(lang) => view.lang = Some(lang),
             ViewCommand::SetSheet(open) => view.sheet_open = open,
             ViewCommand::ShowNarrowView(k) => {
                 if k < self.sim.lab().page().views.len() {
