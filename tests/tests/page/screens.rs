@@ -1,5 +1,6 @@
 //! The page on the screens it is used on: every lab in presenter mode (light theme) on a
-//! projector's 1280×720, on a laptop's 1366×768, and on a 390×844 phone (touch, stacked);
+//! projector's 1280×720, on a laptop's 1366×768 (in English and in Russian), and on a 390×844
+//! phone (touch, stacked);
 //! its plot a fair share of the window's height on each, a screenshot of each in
 //! `target/page-test/screens/` (the README shows them).
 
@@ -19,8 +20,8 @@ pub(crate) struct Screen {
     pub min_plot_share: f64,
 }
 
-/// The screens, as the issue that asked for them names them.
-pub(crate) const SCREENS: [Screen; 3] = [
+/// The screens, as the issue that asked for them names them, and the laptop in Russian.
+pub(crate) const SCREENS: [Screen; 4] = [
     Screen {
         name: "projector",
         size: (1280, 720),
@@ -37,6 +38,13 @@ pub(crate) const SCREENS: [Screen; 3] = [
     },
     // A phone stacks the view above the plot and the plot's legend below it: the plot
     // shares the height with both.
+    Screen {
+        name: "russian",
+        size: (1366, 768),
+        link: "&lang=ru",
+        mobile: false,
+        min_plot_share: 0.40,
+    },
     Screen {
         name: "phone",
         size: (390, 844),
