@@ -94,6 +94,51 @@ pub fn lab_summary_id(lab_id: &str) -> String {
     format!("lab-{lab_id}-summary")
 }
 
+/// The id of the label of a lab's parameter `key` in the catalogue.
+pub fn param_label_id(lab_id: &str, key: &str) -> String {
+    format!("lab-{lab_id}-param-{key}")
+}
+
+/// The id of option `index` of a lab's choice parameter `key` in the catalogue.
+pub fn param_option_id(lab_id: &str, key: &str, index: usize) -> String {
+    format!("lab-{lab_id}-param-{key}-option-{index}")
+}
+
+/// The id of the title of a lab's figure (plot tab) `index` in the catalogue.
+pub fn figure_id(lab_id: &str, index: usize) -> String {
+    format!("lab-{lab_id}-figure-{index}")
+}
+
+/// The id of the name of a lab's preset `index` in the catalogue.
+pub fn preset_id(lab_id: &str, index: usize) -> String {
+    format!("lab-{lab_id}-preset-{index}")
+}
+
+/// Every word a lab gives in English that a translation can take: `(id, English)` — its
+/// title, its summary, each parameter's label, each choice's options, each preset's name.
+pub fn lab_words(lab: &dyn crate::model::Lab) -> Vec<(String, &'static str)> {
+    let id = lab.id();
+    let mut out = vec![
+        (lab_title_id(id), lab.title()),
+        (lab_summary_id(id), lab.summary()),
+    ];
+    for spec in lab.params() {
+        out.push((param_label_id(id, spec.key), spec.label));
+        if let crate::model::ParamKind::Choice(options) = spec.kind {
+            for (i, option) in options.iter().enumerate() {
+                out.push((param_option_id(id, spec.key, i), *option));
+            }
+        }
+    }
+    for (i, preset) in lab.presets().iter().enumerate() {
+        out.push((preset_id(id, i), preset.name));
+    }
+    for (i, figure) in lab.page().figures.iter().enumerate() {
+        out.push((figure_id(id, i), figure.title));
+    }
+    out
+}
+
 type Bundle = FluentBundle<FluentResource>;
 
 /// The bundle of `lang`, parsed once. A message with a syntax error is left out (the tests
@@ -222,19 +267,20 @@ mod tests {
     }
 
     #[test]
-    fn every_lab_title_and_summary_is_translated_and_nothing_else_is_there() {
+    fn every_word_of_every_lab_is_translated_and_nothing_else_is_there() {
         let mut derived = BTreeSet::new();
+        let mut missing = Vec::new();
         for lab in crate::labs::all() {
-            for (id, english) in [
-                (lab_title_id(lab.id()), lab.title()),
-                (lab_summary_id(lab.id()), lab.summary()),
-            ] {
-                assert!(has(Lang::Ru, &id), "no Russian `{id}`");
-                assert_ne!(lab_text(Lang::Ru, &id, english), english);
+            for (id, english) in lab_words(*lab) {
+                if !has(Lang::Ru, &id) {
+                    missing.push(format!("{id} ({english})"));
+                }
                 assert_eq!(lab_text(Lang::En, &id, english), english);
                 derived.insert(id);
             }
         }
+        assert!(missing.is_empty(), "no Russian for {missing:#?}");
+        assert_ne!(lab_text(Lang::Ru, &lab_title_id("p1"), "x"), "x");
         for source in Lang::Ru.lab_sources() {
             let resource = FluentResource::try_new((*source).to_string()).expect("parses");
             for entry in resource.entries() {

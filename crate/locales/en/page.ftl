@@ -96,3 +96,13 @@ status-long = t = { $t } s · step { $step } ms · { $rate } steps/s · ×{ $rea
 behind = · behind real time: lower the speed
 diverged = · { $id } diverged: { $why } (press Reset)
 unobservable = · { $id } unobservable: { $why }
+
+## The plot tabs of series groups
+group-time = Time
+group-attitude = Attitude
+group-rate = Rates
+group-error = Errors
+group-covariance = Covariance
+group-innovation = Innovation
+group-sphere = (u, v) and vertical
+group-lab = Lab

@@ -95,3 +95,13 @@ status-long = t = { $t } с · шаг { $step } мс · { $rate } шагов/с 
 behind = · не успевает за реальным временем: уменьшите скорость
 diverged = · { $id } разошёлся: { $why } (нажмите «Сброс»)
 unobservable = · { $id } ненаблюдаем: { $why }
+
+## Вкладки групп рядов
+group-time = Время
+group-attitude = Ориентация
+group-rate = Угловые скорости
+group-error = Ошибки
+group-covariance = Ковариации
+group-innovation = Невязки
+group-sphere = (u, v) и вертикаль
+group-lab = Работа

@@ -24,6 +24,20 @@ pub enum SeriesGroup {
 }
 
 impl SeriesGroup {
+    /// The id of the plot tab's title in the page's message catalogue (`group-attitude`…).
+    pub fn message(self) -> &'static str {
+        match self {
+            Self::Time => "group-time",
+            Self::Attitude => "group-attitude",
+            Self::Rate => "group-rate",
+            Self::Error => "group-error",
+            Self::Covariance => "group-covariance",
+            Self::Innovation => "group-innovation",
+            Self::Sphere => "group-sphere",
+            Self::Lab => "group-lab",
+        }
+    }
+
     /// Plot tab title.
     pub fn title(self) -> &'static str {
         match self {

@@ -187,8 +187,9 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         ui.horizontal_wrapped(|ui| {
             ui.label(tr(app, "presets"));
             for (i, preset) in presets.iter().enumerate() {
+                let id = i18n::preset_id(app.sim().lab().id(), i);
                 if ui
-                    .button(preset.name)
+                    .button(i18n::lab_text(app.view().lang(), &id, preset.name))
                     .on_hover_text(tr_with(app, "preset-hint", &[("help", arg(preset.help))]))
                     .clicked()
                 {
@@ -232,9 +233,13 @@ fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         return;
     }
     let specs = app.sim().lab().params();
-    let labels: Vec<&str> = pending
+    let labels: Vec<String> = pending
         .iter()
-        .filter_map(|k| specs.iter().find(|s| s.key == *k).map(|s| s.label))
+        .filter_map(|k| specs.iter().find(|s| s.key == *k))
+        .map(|s| {
+            let id = i18n::param_label_id(app.sim().lab().id(), s.key);
+            i18n::lab_text(app.view().lang(), &id, s.label)
+        })
         .collect();
     ui.horizontal_wrapped(|ui| {
         ui.label(tr_with(
@@ -260,6 +265,12 @@ pub(super) fn param_widget(
     value: f64,
 ) -> Option<f64> {
     let mut v = value;
+    let (lang, lab) = (app.view().lang(), app.sim().lab().id());
+    let label = i18n::lab_text(lang, &i18n::param_label_id(lab, spec.key), spec.label);
+    let option = |i: usize| {
+        let english = spec_option(spec, i);
+        i18n::lab_text(lang, &i18n::param_option_id(lab, spec.key, i), english)
+    };
     let hint = if spec.needs_reset {
         tr_with(app, "applies-at-reset", &[("help", arg(spec.help))])
     } else {
@@ -268,22 +279,26 @@ pub(super) fn param_widget(
     let response = match spec.kind {
         ParamKind::Toggle => {
             let mut on = v >= 0.5;
-            let r = ui.checkbox(&mut on, spec.label);
+            let r = ui.checkbox(&mut on, label);
             v = if on { 1.0 } else { 0.0 };
             r
         }
         ParamKind::Choice(options) => {
             let mut index = v.max(0.0) as usize;
-            let selected = options.get(index).copied().unwrap_or("?");
-            let r = egui::ComboBox::from_label(spec.label)
+            let selected = if index < options.len() {
+                option(index)
+            } else {
+                "?".into()
+            };
+            let r = egui::ComboBox::from_label(label)
                 .selected_text(selected)
-                .show_index(ui, &mut index, options.len(), |i| options[i]);
+                .show_index(ui, &mut index, options.len(), option);
             v = index as f64;
             r
         }
         ParamKind::Real | ParamKind::Integer => {
             let mut slider = egui::Slider::new(&mut v, spec.min..=spec.max)
-                .text(spec.label)
+                .text(label)
                 .logarithmic(spec.scale == Scale::Log && spec.min > 0.0);
             if spec.scale == Scale::Log && spec.min == 0.0 {
                 slider = slider.logarithmic(true).smallest_positive(1e-4);
@@ -303,6 +318,14 @@ pub(super) fn param_widget(
         response.on_hover_text(hint)
     };
     (response.changed() && v != value).then_some(v)
+}
+
+/// Option `i` of a choice parameter in English ("" for any other kind).
+fn spec_option(spec: &ParamSpec, i: usize) -> &'static str {
+    match spec.kind {
+        ParamKind::Choice(options) => options.get(i).copied().unwrap_or(""),
+        _ => "",
+    }
 }
 
 fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {

@@ -4,6 +4,7 @@
 use super::{arg, tr, tr_with};
 use crate::render::plots;
 use crate::state::{AppState, Command, ViewCommand};
+use attlab::i18n;
 use attlab::model::SeriesGroup;
 use egui::Ui;
 
@@ -79,12 +80,20 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
     let figures = app.sim().lab().page().figures;
     let groups = plots::groups(app.sim().available_specs());
     let current = app.view().plots.tab;
-    let mut tabs: Vec<(plots::Tab, &str)> = figures
+    let (lang, lab) = (app.view().lang(), app.sim().lab().id());
+    let mut tabs: Vec<(plots::Tab, String)> = figures
         .iter()
         .enumerate()
-        .map(|(i, f)| (plots::Tab::Figure(i), f.title))
+        .map(|(i, f)| {
+            let title = i18n::lab_text(lang, &i18n::figure_id(lab, i), f.title);
+            (plots::Tab::Figure(i), title)
+        })
         .collect();
-    tabs.extend(groups.iter().map(|g| (plots::Tab::Group(*g), g.title())));
+    tabs.extend(
+        groups
+            .iter()
+            .map(|g| (plots::Tab::Group(*g), tr(app, g.message()))),
+    );
     // The figures (or, for a lab without figures, the groups) that fit in two rows beside
     // the More menu and the options.
     let first = if figures.is_empty() {
@@ -106,7 +115,10 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
     };
     ui.horizontal_wrapped(|ui| {
         for (tab, title) in &tabs[..shown] {
-            if ui.selectable_label(current == *tab, *title).clicked() {
+            if ui
+                .selectable_label(current == *tab, title.as_str())
+                .clicked()
+            {
                 select(commands, *tab);
             }
         }
@@ -118,7 +130,10 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
             };
             ui.menu_button(label, |ui| {
                 for (tab, title) in more {
-                    if ui.selectable_label(current == *tab, *title).clicked() {
+                    if ui
+                        .selectable_label(current == *tab, title.as_str())
+                        .clicked()
+                    {
                         select(commands, *tab);
                         ui.close();
                     }
