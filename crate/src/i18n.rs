@@ -240,7 +240,9 @@ mod tests {
                 let pattern = b.get_message(&id).and_then(|m| m.value());
                 let pattern = pattern.unwrap_or_else(|| panic!("{id} has no value"));
                 let mut args = FluentArgs::new();
-                for name in ["help", "names", "n", "name", "title", "label", "ids", "t"] {
+                let words = ["help", "names", "n", "name", "title", "label", "ids", "t"];
+                let more = ["lab", "state", "speed", "error", "band"];
+                for name in words.into_iter().chain(more) {
                     args.set(name, "x");
                 }
                 for name in ["realtime", "asked", "step", "rate", "frame", "sim", "mib"] {

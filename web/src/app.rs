@@ -34,12 +34,22 @@ pub struct AttLabApp {
     clipboard: Option<String>,
     /// A PNG export asked for, started after the frame.
     png_request: Option<PngTarget>,
+    /// The keyboard was used after the last click or touch: the focus ring shows.
+    keyboard_nav: bool,
+    /// The live description of the run for a screen reader.
+    narration: panels::Narration,
+    /// The language the page's `<html lang>` says.
+    lang_set: Option<attlab::i18n::Lang>,
 }
 
 impl AttLabApp {
     /// Creates the app, restoring lab, seed, speed and parameters from the URL fragment.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
         crate::render::fonts::install(&cc.egui_ctx);
+        // In the page, the controls are mirrored into the DOM for screen readers (the
+        // desktop window has no mirror: eframe there would need its own AccessKit adapter).
+        #[cfg(target_arch = "wasm32")]
+        crate::a11y::Mirror::install(&cc.egui_ctx);
         let gpu_ready = cc.wgpu_render_state.as_ref().map(body3d::init).is_some();
         let mut app = Self::headless(AppState::from_fragment(&platform::initial_fragment()));
         app.gpu_ready = gpu_ready;
@@ -65,6 +75,9 @@ impl AttLabApp {
             last_png: None,
             clipboard: None,
             png_request: None,
+            keyboard_nav: false,
+            narration: panels::Narration::default(),
+            lang_set: None,
         }
     }
 
@@ -152,6 +165,7 @@ impl AttLabApp {
             panels::touch_style(ui);
         }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
+        panels::help_dialog(ui.ctx(), &self.state, &mut commands);
         panels::status_line(ui, &self.state, &mut commands);
         if narrow {
             panels::narrow_sheet(ui, &self.state, &mut commands);
@@ -171,11 +185,15 @@ impl AttLabApp {
         for c in commands {
             self.apply(c);
         }
+        panels::focus_ring(ui.ctx(), &mut self.keyboard_nav);
         self.run_capture(ui.ctx());
         if let Some(text) = self.clipboard.take() {
             ui.ctx().copy_text(text);
         }
         self.apply(UrlCommand::Sync.into());
+        if let Some(text) = self.narration.due(&self.state, now) {
+            crate::a11y::describe(&text);
+        }
         self.frames += 1;
         self.publish(ui.ctx());
     }
@@ -190,6 +208,12 @@ impl AttLabApp {
                 1.0
             });
             self.zoomed_for = Some(self.state.view().presenter);
+        }
+        let lang = self.state.view().lang();
+        if self.lang_set != Some(lang) {
+            // A screen reader picks its voice by the page's language.
+            platform::set_document_lang(lang.code());
+            self.lang_set = Some(lang);
         }
         let theme = self.state.view().theme();
         if self.themed != Some(theme) {
@@ -210,6 +234,12 @@ impl AttLabApp {
             recorder_bytes: self.state.sim().recorder().memory_bytes(),
             errors: &self.app_errors,
             last_png: self.last_png.as_ref(),
+            views: self
+                .regions
+                .views
+                .iter()
+                .map(|(k, r)| [*k as f32, r.min.x, r.min.y, r.width(), r.height()])
+                .collect(),
             layout: self.regions.plot_area.map(|plot| {
                 let xywh = |r: egui::Rect| [r.min.x, r.min.y, r.width(), r.height()];
                 (xywh(ctx.content_rect()), xywh(plot), ctx.zoom_factor())

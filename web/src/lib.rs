@@ -5,8 +5,10 @@
 //!
 //! Dependencies point one way: `app` (the frame loop) → `panels` (read the state, emit
 //! commands) → `export` (PNG capture over frames) → `state` (the state and the one place
-//! that applies commands) → `render` (drawing) and `platform` (browser/desktop differences).
+//! that applies commands) → `render` (drawing) and `platform` (browser/desktop differences);
+//! `a11y` (the accessibility mirror, an egui plugin) depends on egui alone.
 
+pub mod a11y;
 pub mod app;
 pub mod export;
 pub mod panels;

@@ -65,6 +65,20 @@ pub fn browser_lang() -> attlab::i18n::Lang {
     }
 }
 
+/// Sets `<html lang>` (a screen reader reads the page in that language's voice); a no-op on
+/// the desktop.
+pub fn set_document_lang(code: &str) {
+    #[cfg(target_arch = "wasm32")]
+    if let Some(html) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.document_element())
+    {
+        let _ = html.set_attribute("lang", code);
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    let _ = code;
+}
+
 /// The page's address without its fragment (`https://host/path/`), in the browser.
 pub fn page_address() -> Option<String> {
     #[cfg(target_arch = "wasm32")]
@@ -95,6 +109,8 @@ pub struct Status<'a> {
     /// The window and the plot area, `[x, y, width, height]` in points, and the pixels
     /// per point (CSS pixels per point: the zoom, larger in presenter mode).
     pub layout: Option<([f32; 4], [f32; 4], f32)>,
+    /// The lab's views drawn: `[index in the lab's views, x, y, width, height]`, in points.
+    pub views: Vec<[f32; 5]>,
 }
 
 /// Publishes the status (browser only).
@@ -134,6 +150,17 @@ pub fn publish_status(status: &Status<'_>) {
             let _ = Reflect::set(&o, &"window".into(), &rect(window));
             let _ = Reflect::set(&o, &"plotArea".into(), &rect(plot));
         }
+        let views: Array = status
+            .views
+            .iter()
+            .map(|r| -> JsValue {
+                r.iter()
+                    .map(|v| JsValue::from_f64(f64::from(*v)))
+                    .collect::<Array>()
+                    .into()
+            })
+            .collect();
+        let _ = Reflect::set(&o, &"views".into(), &views);
         let _ = Reflect::set(
             &o,
             &"recorderBytes".into(),

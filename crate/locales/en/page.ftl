@@ -49,7 +49,7 @@ png-view-hint = Save this view as a PNG (key p while it is shown alone)
 
 ## Help
 what-am-i-looking-at = What am I looking at?
-keys-help = Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next view, then the plots alone, then all) · p PNG of the view shown alone, else of every plot tab
+keys-help = Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next view, then the plots alone, then all) · p PNG of the view shown alone, else of every plot tab · ? or F1 every key (Tab moves between the controls)
 frames-help = Frames: reference ζ up; body ξ′ right, η′ forward, ζ′ up. The sphere shows the vertical k = (a′, b′, c′) in body axes; the ray from the pole S through k meets the body plane at w = u + jv = (a′ + jb′)/(1 + c′). |w| = 1 is pitch ±90°; w → ∞ is upside down, where the (u, v, z) integrator switches to s = 1/w.
 
 ## A narrow screen
@@ -106,3 +106,42 @@ group-covariance = Covariance
 group-innovation = Innovation
 group-sphere = (u, v) and vertical
 group-lab = Lab
+
+## The keyboard dialog (key ? or F1)
+keys-button = Keys (?)
+keys-button-hint = Every key of the page: moving between controls, sliders, the run (also ? or F1)
+keys-title = Keyboard
+keys-intro = Every control is reached with Tab. A yellow or blue ring shows which one has the keyboard.
+keys-tab = Tab, Shift+Tab
+keys-tab-does = the next, the previous control
+keys-activate = Enter, Space
+keys-activate-does = press the button, tick the box, open the list
+keys-slider-arrows = ← → (↓ ↑) on a slider
+keys-slider-arrows-does = a twentieth of its range; with Shift a hundredth
+keys-slider-pages = PageUp, PageDown
+keys-slider-pages-does = a tenth of the slider's range
+keys-slider-ends = Home, End
+keys-slider-ends-does = the slider's least, greatest value
+keys-escape = Esc
+keys-escape-does = leave the control (the keys below work again); close this dialog
+keys-space = Space
+keys-space-does = pause, resume (when no control has the keyboard)
+keys-reset = r
+keys-reset-does = reset: t = 0 with the same seed
+keys-step = s
+keys-step-does = one step, paused
+keys-tabs = ← →
+keys-tabs-does = the previous, the next plot tab (when no control has the keyboard)
+keys-full = f
+keys-full-does = one view at full size (again: the next view, the plots alone, everything)
+keys-png = p
+keys-png-does = a PNG of the view shown alone, else of every plot tab
+
+## The live description a screen reader reads (every 10 s while running, at once on a pause)
+live-run = { $lab } — t = { $t } s, { $state }.
+live-running = running at ×{ $speed }
+live-paused = paused
+live-within = { $name }: attitude error { $error }°, within its 3σ band of { $band }°.
+live-outside = { $name }: attitude error { $error }°, outside its 3σ band of { $band }°.
+live-error = { $name }: attitude error { $error }°.
+live-no-truth = { $name }: no true attitude to compare with (a replayed log).

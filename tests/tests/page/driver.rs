@@ -169,12 +169,16 @@ impl<'a> Session<'a> {
 
     /// One command of Chromium's DevTools protocol, through chromedriver.
     pub(crate) fn cdp(&self, cmd: &str, params: Value) -> Result<(), String> {
+        self.cdp_value(cmd, params).map(|_| ())
+    }
+
+    /// The same, returning the command's result.
+    pub(crate) fn cdp_value(&self, cmd: &str, params: Value) -> Result<Value, String> {
         self.call(
             "POST",
             "/goog/cdp/execute",
             Some(&json!({ "cmd": cmd, "params": params })),
         )
-        .map(|_| ())
     }
 
     /// A PNG screenshot of the viewport.

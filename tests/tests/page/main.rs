@@ -17,6 +17,7 @@ use std::process::{Child, Command, Stdio};
 use std::thread::sleep;
 use std::time::{Duration, Instant};
 
+mod a11y;
 mod checks;
 mod driver;
 mod fuzz;
@@ -122,7 +123,9 @@ fn page_renders_without_errors() {
             &format!("#lab={id}"),
             &format!("screenshot-{id}.png"),
         ));
+        problems.extend(a11y::tree_problems(&session, *lab));
     }
+    problems.extend(a11y::keyboard_walk_problems(&session, &base));
     problems.extend(screens::screen_problems(&session, &base));
     problems.extend(png_export_problems(&session, &base));
     drop(session);

@@ -1,6 +1,7 @@
 //! The left panel: lab picker, run controls, parameter sliders generated from the lab's
 //! parameter specs, export and the explanation.
 
+use super::slider_keys::{self, Rail};
 use super::{arg, tr, tr_with};
 use crate::state::{AppState, Command, IoCommand, PngTarget, RunCommand, UrlCommand, ViewCommand};
 use attlab::i18n::{self, Lang};
@@ -143,6 +144,13 @@ pub(super) fn mode_buttons(ui: &mut Ui, app: &AppState, commands: &mut Vec<Comma
             })
             .response
             .on_hover_text(format!("{} (lang=en, lang=ru)", tr(app, "language")));
+        if ui
+            .button(tr(app, "keys-button"))
+            .on_hover_text(tr(app, "keys-button-hint"))
+            .clicked()
+        {
+            commands.push(Command::from(ViewCommand::SetKeysHelp(true)));
+        }
     }
 }
 
@@ -167,16 +175,24 @@ pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Com
         }
     });
     let (lo, hi) = attlab::state::SPEED_RANGE;
-    let mut speed = app.run().speed;
-    if ui
-        .add(
-            egui::Slider::new(&mut speed, lo..=hi)
-                .logarithmic(true)
-                .text(tr(app, "speed"))
-                .max_decimals(1),
-        )
-        .changed()
-    {
+    let before = app.run().speed;
+    let mut speed = before;
+    let r = ui.add(
+        egui::Slider::new(&mut speed, lo..=hi)
+            .logarithmic(true)
+            .text(tr(app, "speed"))
+            .max_decimals(1),
+    );
+    let rail = Rail {
+        min: lo,
+        max: hi,
+        log: true,
+        integer: false,
+    };
+    if let Some(keyed) = slider_keys::handle(ui, &r, rail, before) {
+        speed = keyed;
+    }
+    if speed != before {
         commands.push(Command::from(RunCommand::SetSpeed(speed)));
     }
 }
@@ -309,7 +325,16 @@ pub(super) fn param_widget(
             if spec.kind == ParamKind::Integer {
                 slider = slider.integer();
             }
-            ui.add(slider)
+            let r = ui.add(slider);
+            // A screen reader reads the value with its unit ("0.02 °/s").
+            let text = format!("{} {}", crate::a11y::tidy(v), spec.unit);
+            ui.ctx()
+                .accesskit_node_builder(r.id, |node| node.set_value(text.trim_end()));
+            if let Some(keyed) = slider_keys::handle(ui, &r, Rail::of(spec), value) {
+                v = keyed;
+                return Some(v);
+            }
+            r
         }
     };
     let response = if hint.is_empty() {

@@ -6,14 +6,18 @@ mod central;
 mod controls;
 mod keys;
 mod lab_tools;
+mod narration;
 mod narrow;
+mod slider_keys;
 mod sweeps;
 mod tabs;
 
 pub use central::central;
 pub use controls::controls;
-pub use keys::{shortcuts, tabs};
+pub use keys::{focus_ring, help_dialog, shortcuts, tabs};
+pub use narration::{Narration, describe as describe_run};
 pub use narrow::{bar as narrow_bar, is_narrow, sheet as narrow_sheet, touch_style};
+pub use slider_keys::rail_position;
 
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n::{self, FluentValue};
@@ -32,6 +36,15 @@ pub(crate) fn tr_with(app: &AppState, id: &str, args: &[(&str, FluentValue<'_>)]
 /// An argument for [`tr_with`] from anything that prints.
 pub(crate) fn arg(value: impl std::fmt::Display) -> FluentValue<'static> {
     FluentValue::from(value.to_string())
+}
+
+/// The name of estimator `i` a student reads (its label, in the reader's language).
+pub(crate) fn estimator_name(app: &AppState, i: usize) -> String {
+    app.sim()
+        .estimators()
+        .get(i)
+        .map(|e| e.label().to_string())
+        .unwrap_or_default()
 }
 
 /// The status line at the bottom: a re-run or export under way (with its progress and a

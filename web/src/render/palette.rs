@@ -37,6 +37,8 @@ pub struct Palette {
     pub good: Color32,
     /// The shading of outages, by position.
     pub outages: [Color32; 3],
+    /// The ring around the control that has the keyboard.
+    pub focus: Color32,
 }
 
 /// The dark theme: Okabe and Ito's colour-blind-safe palette (their blue lightened so it
@@ -78,6 +80,7 @@ pub const DARK: Palette = Palette {
         Color32::from_rgba_premultiplied(60, 0, 30, 40),
         Color32::from_rgba_premultiplied(0, 40, 60, 40),
     ],
+    focus: Color32::from_rgb(0xFF, 0xD3, 0x3D),
 };
 
 /// The light theme for projectors: truth black; vermillion, blue and bluish green from
@@ -120,6 +123,7 @@ pub const LIGHT: Palette = Palette {
         Color32::from_rgba_premultiplied(60, 0, 30, 40),
         Color32::from_rgba_premultiplied(0, 40, 60, 40),
     ],
+    focus: Color32::from_rgb(0x00, 0x50, 0xB3),
 };
 
 /// The palette of the theme `visuals` belong to.

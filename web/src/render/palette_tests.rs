@@ -135,6 +135,29 @@ fn every_colour_stands_out_from_the_views_and_the_plots() {
     }
 }
 
+/// The focus ring is drawn outside the control, on the panel or on a view: WCAG 2.4.11 asks
+/// 3:1 against what is beside it. The panels are egui's own fill of the theme.
+#[test]
+fn the_focus_ring_stands_out_from_panels_controls_and_views() {
+    for (name, palette, visuals) in [
+        ("dark", &DARK, egui::Visuals::dark()),
+        ("light", &LIGHT, egui::Visuals::light()),
+    ] {
+        let beside = [
+            palette.view_bg,
+            palette.plot_bg,
+            visuals.panel_fill,
+            visuals.window_fill,
+            visuals.widgets.active.bg_fill,
+            visuals.widgets.inactive.weak_bg_fill,
+        ];
+        for bg in beside {
+            let r = contrast(palette.focus, bg);
+            assert!(r >= MIN_CONTRAST, "{name}: the ring is {r:.2}:1 on {bg:?}");
+        }
+    }
+}
+
 #[test]
 fn sixteen_filters_get_sixteen_looks() {
     let looks: Vec<(Color32, LineStyle)> =

@@ -58,6 +58,8 @@ pub struct ViewState {
     pub sheet_open: bool,
     /// On a narrow screen: the index of the one view shown above the plots.
     pub narrow_view: usize,
+    /// The keyboard dialog is open (key ? or F1, or its button).
+    pub keys_help: bool,
 }
 
 impl ViewState {
@@ -85,6 +87,7 @@ impl ViewState {
             capturing: false,
             sheet_open: false,
             narrow_view: 0,
+            keys_help: false,
         }
     }
 }
@@ -118,6 +121,8 @@ pub enum ViewCommand {
     SetSheet(bool),
     /// On a narrow screen: show the lab's view with this index above the plots.
     ShowNarrowView(usize),
+    /// Open or close the keyboard dialog.
+    SetKeysHelp(bool),
 }
 
 impl AppState {
@@ -143,6 +148,7 @@ impl AppState {
             ViewCommand::SetTheme(theme) => view.theme = theme,
             ViewCommand::SetLang(lang) => view.lang = Some(lang),
             ViewCommand::SetSheet(open) => view.sheet_open = open,
+            ViewCommand::SetKeysHelp(open) => view.keys_help = open,
             ViewCommand::ShowNarrowView(k) => {
                 if k < self.sim.lab().page().views.len() {
                     view.narrow_view = k;

@@ -11,6 +11,8 @@ use egui::accesskit::{Action, ActionData, ActionRequest, Role};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
+mod a11y;
+mod keyboard;
 mod narrow;
 mod png;
 

@@ -1,0 +1,240 @@
+//! The page as a screen reader and a keyboard user meet it, in headless Chromium:
+//! - the accessibility tree (DevTools' `Accessibility.getFullAXTree`) holds every slider of
+//!   the lab, named by its label, with its value;
+//! - a keyboard-only walk: real key events (DevTools' `Input.dispatchKeyEvent`) Tab into the
+//!   canvas and on to paper 5's ε slider, End moves it to its greatest value, and the diagram
+//!   of the update's eigenvalues, drawn for the current ε, changes on screen.
+
+use super::*;
+use attlab::model::{Lab, ParamKind};
+
+/// The slider the walk moves, and what it expects of it.
+const WALK_LAB: &str = "p5";
+const WALK_SLIDER: &str = "Regularisation ε";
+const WALK_KEY: &str = "eps";
+/// Tab presses the walk allows before it gives up.
+const WALK_TABS: usize = 150;
+/// Pixels of the diagram that must differ after the key (of about 300×300).
+const MIN_CHANGED_PIXELS: usize = 200;
+
+/// The page's accessibility tree: (role, name, value) of every node not ignored.
+fn ax_tree(session: &Session<'_>) -> Result<Vec<(String, String, String)>, String> {
+    let tree = session.cdp_value("Accessibility.getFullAXTree", json!({}))?;
+    let nodes = tree["nodes"].as_array().ok_or("no nodes in the tree")?;
+    let text = |v: &Value| match v {
+        Value::String(s) => s.clone(),
+        Value::Null => String::new(),
+        other => other.to_string(),
+    };
+    Ok(nodes
+        .iter()
+        .filter(|n| n["ignored"] != true)
+        .map(|n| {
+            (
+                text(&n["role"]["value"]),
+                text(&n["name"]["value"]),
+                text(&n["value"]["value"]),
+            )
+        })
+        .collect())
+}
+
+/// The number a slider's value text starts with ("0.02 °/s" → 0.02).
+fn leading_number(text: &str) -> Option<f64> {
+    text.split_whitespace().next()?.parse().ok()
+}
+
+/// Problems with the open lab's sliders in the accessibility tree (defaults expected), and
+/// with the live description.
+pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String> {
+    let id = lab.id();
+    let nodes = match ax_tree(session) {
+        Ok(nodes) => nodes,
+        Err(e) => return vec![format!("#lab={id}: no accessibility tree: {e}")],
+    };
+    let sliders: Vec<&(String, String, String)> =
+        nodes.iter().filter(|n| n.0 == "slider").collect();
+    let mut problems = Vec::new();
+    let real = |k: &ParamKind| matches!(k, ParamKind::Real | ParamKind::Integer);
+    for spec in lab.params().iter().filter(|s| real(&s.kind)) {
+        let Some((_, _, value)) = sliders.iter().find(|n| n.1 == spec.label) else {
+            problems.push(format!(
+                "#lab={id}: no slider named `{}` in the tree",
+                spec.label
+            ));
+            continue;
+        };
+        let read = leading_number(value);
+        let close =
+            read.is_some_and(|v| (v - spec.default).abs() <= 1e-6 * spec.default.abs().max(1e-9));
+        if !close {
+            problems.push(format!(
+                "#lab={id}: slider `{}` reads `{value}`, its value is {}",
+                spec.label, spec.default
+            ));
+        }
+    }
+    let live = session
+        .execute("return document.getElementById('attlab_live').textContent;")
+        .unwrap_or(Value::Null);
+    let live = live.as_str().unwrap_or_default();
+    if !live.contains(" t = ") {
+        problems.push(format!("#lab={id}: the live description is `{live}`"));
+    }
+    println!(
+        "page test: #lab={id}: {} sliders in the accessibility tree of {} nodes; live: {live}",
+        sliders.len(),
+        nodes.len()
+    );
+    problems
+}
+
+/// One real key press (down and up) through DevTools: trusted, as a keyboard sends it.
+fn key(session: &Session<'_>, key: &str, code: u32) -> Result<(), String> {
+    for kind in ["rawKeyDown", "keyUp"] {
+        let event = json!({ "type": kind, "key": key, "code": key,
+                            "windowsVirtualKeyCode": code, "nativeVirtualKeyCode": code });
+        session.cdp_value("Input.dispatchKeyEvent", event)?;
+    }
+    Ok(())
+}
+
+/// Waits until the app has drawn `n` more frames.
+fn frames_later(session: &Session<'_>, n: f64) {
+    let frames = || {
+        session
+            .execute("return window.attlabStatus ? window.attlabStatus.frames : 0;")
+            .ok()
+            .and_then(|v| v.as_f64())
+            .unwrap_or(0.0)
+    };
+    let (start, clock) = (frames(), Instant::now());
+    while frames() < start + n && clock.elapsed() < Duration::from_secs(20) {
+        sleep(Duration::from_millis(30));
+    }
+}
+
+/// The element the canvas names as the control with the keyboard: (role, label).
+fn active_control(session: &Session<'_>) -> (String, String) {
+    let script = "const c = document.getElementById('attlab_canvas'); \
+        const id = c.getAttribute('aria-activedescendant'); \
+        const e = id && document.getElementById(id); \
+        return [document.activeElement === c, e ? e.getAttribute('role') : '', \
+                e ? e.getAttribute('aria-label') : ''];";
+    let v = session.execute(script).unwrap_or(Value::Null);
+    let s = |i: usize| v[i].as_str().unwrap_or_default().to_string();
+    (s(1), s(2))
+}
+
+/// The keyboard-only walk on paper 5 (see the module's doc).
+pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<String> {
+    let url = format!("{base}#lab={WALK_LAB}&lang=en");
+    if let Err(e) = session.open(&url) {
+        return vec![format!("keyboard walk: navigate failed: {e}")];
+    }
+    let status = wait_for_frames(session);
+    let mut problems = status_problems(&status);
+    let _ = session.execute("document.activeElement && document.activeElement.blur();");
+    let mut reached = None;
+    for presses in 1..=WALK_TABS {
+        if let Err(e) = key(session, "Tab", 9) {
+            return vec![format!("keyboard walk: Tab failed: {e}")];
+        }
+        frames_later(session, 2.0);
+        let (role, label) = active_control(session);
+        if role == "slider" && label == WALK_SLIDER {
+            reached = Some(presses);
+            break;
+        }
+    }
+    let Some(presses) = reached else {
+        problems.push(format!(
+            "keyboard walk: {WALK_TABS} Tabs never reached `{WALK_SLIDER}`"
+        ));
+        return problems;
+    };
+    println!("page test: keyboard walk: {presses} Tabs to `{WALK_SLIDER}`");
+    let diagram = |session: &Session<'_>| -> Result<Vec<[u8; 3]>, String> {
+        frames_later(session, 3.0);
+        let status = wait_for_frames(session);
+        let views = status["views"].as_array().cloned().unwrap_or_default();
+        let index = diagram_index() as f64;
+        let rect = views.iter().find(|v| v[0].as_f64() == Some(index));
+        let rect = rect.ok_or_else(|| format!("no view {index} in {views:?}"))?;
+        let zoom = status["zoom"].as_f64().unwrap_or(1.0);
+        let r: Vec<f64> = (1..5)
+            .map(|i| rect[i].as_f64().unwrap_or(0.0) * zoom)
+            .collect();
+        crop(&session.screenshot()?, [r[0], r[1], r[2], r[3]])
+    };
+    let before = diagram(session);
+    if let Err(e) = key(session, "End", 35) {
+        problems.push(format!("keyboard walk: End failed: {e}"));
+    }
+    let after = diagram(session);
+    let fragment = session
+        .execute("return location.hash;")
+        .unwrap_or(Value::Null);
+    let eps = attlab::labs::find(WALK_LAB).and_then(|lab| {
+        lab.params()
+            .iter()
+            .find(|s| s.key == WALK_KEY)
+            .map(|s| s.max)
+    });
+    let wanted = format!("{WALK_KEY}={}", eps.unwrap_or(f64::NAN));
+    if !fragment.as_str().is_some_and(|f| f.contains(&wanted)) {
+        problems.push(format!(
+            "keyboard walk: after End the link is {fragment}, want {wanted}"
+        ));
+    }
+    match (before, after) {
+        (Ok(a), Ok(b)) if a.len() == b.len() => {
+            let changed = a.iter().zip(&b).filter(|(p, q)| p != q).count();
+            println!("page test: keyboard walk: End changed {changed} pixels of the diagram");
+            if changed < MIN_CHANGED_PIXELS {
+                problems.push(format!(
+                    "keyboard walk: the diagram changed in {changed} pixels after End (want {MIN_CHANGED_PIXELS})"
+                ));
+            }
+        }
+        (a, b) => problems.push(format!(
+            "keyboard walk: no diagram to compare: {:?} {:?}",
+            a.err(),
+            b.err()
+        )),
+    }
+    problems
+}
+
+/// Where paper 5 draws its diagram: in the place of the w plane among its views.
+fn diagram_index() -> usize {
+    attlab::labs::find(WALK_LAB)
+        .and_then(|lab| {
+            let views = &lab.page().views;
+            views
+                .iter()
+                .position(|v| *v == attlab::model::ViewKind::WPlane)
+        })
+        .unwrap_or(usize::MAX)
+}
+
+/// The pixels of `png` inside `[x, y, w, h]` (CSS pixels of a 1:1 screenshot).
+fn crop(png: &[u8], [x, y, w, h]: [f64; 4]) -> Result<Vec<[u8; 3]>, String> {
+    let width = png::Decoder::new(png)
+        .read_info()
+        .map_err(|e| e.to_string())?
+        .info()
+        .width as usize;
+    let pixels = rgb_pixels(png)?;
+    let (x0, y0) = (x.max(0.0) as usize, y.max(0.0) as usize);
+    let (x1, y1) = ((x + w) as usize, (y + h) as usize);
+    if w < 20.0 || h < 20.0 || x1 > width {
+        return Err(format!(
+            "the diagram's place {x} {y} {w} {h} is not on the page"
+        ));
+    }
+    Ok((y0..y1)
+        .flat_map(|row| (x0..x1).map(move |col| (row, col)))
+        .filter_map(|(row, col)| pixels.get(row * width + col).copied())
+        .collect())
+}
