@@ -7,7 +7,7 @@
 
 use crate::i18n::Lang;
 use crate::labs;
-use crate::model::{Lab, ParamValues};
+use crate::model::{Lab, ParamError, ParamValues};
 use thiserror::Error;
 
 /// What a URL fragment asks for.
@@ -66,6 +66,9 @@ pub struct UrlStateError {
     pub text: String,
     /// What was wrong.
     pub reason: String,
+    /// The parameter's own error, when the item set a lab parameter (the page words it with
+    /// the slider's label).
+    pub param: Option<ParamError>,
 }
 
 impl UrlState {
@@ -133,6 +136,7 @@ impl UrlState {
             position,
             text: text.to_string(),
             reason,
+            param: None,
         };
         let mut lab = labs::all()[0];
         for (pos, key, value, item) in &items {
@@ -153,15 +157,39 @@ impl UrlState {
                 errors.push(err(*pos, item, "expected key=value".into()));
                 continue;
             };
-            if let Err(reason) = state.apply_item(lab, key, value) {
-                errors.push(err(*pos, item, reason));
+            if let Err((reason, param)) = state.apply_item(lab, key, value) {
+                errors.push(UrlStateError {
+                    param,
+                    ..err(*pos, item, reason)
+                });
             }
         }
         (state, errors)
     }
 
-    /// Applies one `key=value` item of a link to the state, or says what is wrong with it.
-    fn apply_item(&mut self, lab: &'static dyn Lab, key: &str, value: &str) -> Result<(), String> {
+    /// Applies one `key=value` item of a link to the state, or says what is wrong with it
+    /// (and, for a lab parameter, its error).
+    fn apply_item(
+        &mut self,
+        lab: &'static dyn Lab,
+        key: &str,
+        value: &str,
+    ) -> Result<(), (String, Option<ParamError>)> {
+        if !matches!(
+            key,
+            "lab" | "seed" | "speed" | "presenter" | "theme" | "lang"
+        ) {
+            return self
+                .params
+                .set_text(lab.params(), key, value)
+                .map_err(|e| (e.to_string(), Some(e)));
+        }
+        self.apply_setting(key, value)
+            .map_err(|reason| (reason, None))
+    }
+
+    /// Applies one of the page's own settings (not a lab parameter).
+    fn apply_setting(&mut self, key: &str, value: &str) -> Result<(), String> {
         match key {
             "lab" => {}
             "seed" => {
@@ -190,11 +218,7 @@ impl UrlState {
                 let lang = Lang::from_tag(value).ok_or("lang must be en or ru")?;
                 self.lang = Some(lang);
             }
-            _ => {
-                self.params
-                    .set_text(lab.params(), key, value)
-                    .map_err(|e| e.to_string())?;
-            }
+            _ => {}
         }
         Ok(())
     }

@@ -132,7 +132,7 @@ impl AttLabApp {
             .is_some_and(|c| panels::tabs(&self.state) != c.lab_tabs())
         {
             self.capture = None;
-            let stopped = Message::error("PNG export stopped: the lab changed");
+            let stopped = Message::error(panels::tr_page(&self.state, "msg-png-lab-changed"));
             self.apply(Command::Notify(stopped));
         }
         let now = Instant::now();
@@ -166,6 +166,7 @@ impl AttLabApp {
         }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::help_dialog(ui.ctx(), &self.state, &mut commands);
+        panels::link_problems(ui, &self.state, &mut commands);
         panels::status_line(ui, &self.state, &mut commands);
         if narrow {
             panels::narrow_sheet(ui, &self.state, &mut commands);
@@ -252,7 +253,7 @@ impl AttLabApp {
     fn run_capture(&mut self, ctx: &egui::Context) {
         if let Some(target) = self.png_request.take() {
             if self.capture.is_some() {
-                let busy = Message::info("a PNG is being made already: one at a time");
+                let busy = Message::info(panels::tr_page(&self.state, "msg-png-busy"));
                 self.apply(Command::Notify(busy));
             } else {
                 let tabs = panels::tabs(&self.state);
@@ -291,7 +292,11 @@ impl AttLabApp {
         });
         let message = match message {
             Ok(m) => Message::info(m),
-            Err(e) => Message::error(format!("PNG export failed: {e}")),
+            Err(e) => Message::error(attlab::i18n::t_with(
+                self.state.view().lang(),
+                "msg-png-failed",
+                &[("why", e.into())],
+            )),
         };
         self.apply(Command::Notify(message));
     }

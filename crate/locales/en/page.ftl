@@ -145,3 +145,97 @@ live-within = { $name }: attitude error { $error }°, within its 3σ band of { $
 live-outside = { $name }: attitude error { $error }°, outside its 3σ band of { $band }°.
 live-error = { $name }: attitude error { $error }°.
 live-no-truth = { $name }: no true attitude to compare with (a replayed log).
+
+## The live accuracy table (paper 2)
+accuracy-help = σ: largest per-axis RMS error against the truth over the last { $covered } s of { $window } s (mean included); √P: the filter's own √max diag P now (the paper's metric). Click a row to show that filter as the ghost.
+accuracy-filter = filter
+accuracy-att = σ att °
+accuracy-att-p = √P att °
+accuracy-paper-att = paper °
+accuracy-rate = σ rate °/s
+accuracy-rate-p = √P rate °/s
+accuracy-paper-rate = paper °/s
+
+## The laboratory mode
+replay-example = Replay the example log
+replaying = replaying { $name } ({ $n } samples)
+back-to-simulation = Back to simulation
+
+## The sweeps
+sweep-title = Sweep: { $title }
+cancel = Cancel
+sweep-run = Run sweep
+sweep-run-hint = One run per value and seed with the current parameters; the page stays live
+sweep-run-log = Run sweep on the log
+sweep-run-log-hint = One run per value over the replayed log (no truth: the log's own scores)
+sweep-size = { $cells } values × { $seeds ->
+    [one] { $seeds } seed
+   *[other] { $seeds } seeds
+}
+sweep-size-grid = { $cells } cells × { $seeds ->
+    [one] { $seeds } seed
+   *[other] { $seeds } seeds
+}
+sweep-each = { $s } s each
+sweep-on-log = on the replayed log
+sweep-diverged = { $at }: a filter diverged (missing samples)
+sweep-unscored = { $at }: not scored: { $why }
+sweep-skipped = skipped { $why }
+sweep-best = best for { $series }: { $param } = { $value } ({ $rms } rms)
+sweep-max-axis = log10 max |value|
+sweep-objective-axis = objective
+sweep-argmin = argmin of { $name } over this sweep's { $n } values: { $at }
+sweep-heat-needs = A heat map needs at least two positive values on each axis.
+sweep-heat-colour = colour: log10 { $name }, from { $lo } (dark) to { $hi } (bright). Optimum: { $at } ({ $name } = { $best }).
+sweep-heat-filling = colour: log10 { $name }; cells fill in as the sweep runs.
+sweep-optimum = optimum
+
+## Messages about what the page did
+msg-no-example-log = this lab ships no example log
+msg-python-copied = copied: a Python snippet that loads the exported CSV and draws this plot
+msg-no-logs = this lab replays no logs
+msg-no-logs-named = { $name }: this lab replays no logs
+msg-log-skipped = { $name }: skipped { $why }
+msg-log-more-bad = { $name }: … and { $n } more bad lines
+msg-log-replaying = { $name }: replaying { $n } samples
+msg-log-failed = { $name }: { $why }
+msg-export-failed = export failed: { $why }
+msg-export-busy = an export is under way: one at a time
+msg-no-output-file = this lab has no output file of its paper
+msg-output-rows = { $n } rows
+msg-output-rows-stopped = { $n } rows, to the first row within tolerance
+msg-csv-rows = { $n } rows, every sample, re-run from t = 0
+msg-plot-failed = cannot show this plot: { $why }
+msg-plots-lost = the plots lost their history: { $why }
+msg-rerun-took = re-ran { $t } s of simulation for this plot in { $ms } ms
+msg-preset-applied = preset { $name } applied
+msg-preset-waits = preset { $name }: some values apply at Reset
+msg-png-lab-changed = PNG export stopped: the lab changed
+msg-png-busy = a PNG is being made already: one at a time
+msg-png-failed = PNG export failed: { $why }
+
+## A link's bad items, shown at the top of the page
+link-problems = This link had items the page could not use; the rest of it is applied:
+link-dismiss = Dismiss
+link-bad = Link item { $item }: { $why } — ignored.
+link-unknown = Link item { $item }: this lab has no such setting — ignored.
+link-unknown-near = Link item { $item }: this lab has no such setting; did you mean “{ $label }”? — ignored.
+link-not-a-number = Link item { $item }: “{ $label }” needs a number — kept at { $kept }.
+link-out-of-range = Link item { $item }: “{ $label }” goes from { $range } — kept at { $kept }.
+link-not-whole = Link item { $item }: “{ $label }” takes a whole number — kept at { $kept }.
+link-no-option = Link item { $item }: “{ $label }” is one of: { $range } — kept at { $kept }.
+link-malformed = Link item { $item }: not of the form name=value — ignored.
+
+## The command line's `attlab labs --lang`
+cli-paper = paper
+cli-default = default
+
+## Words drawn in the views
+sphere-pole = S (pole of w)
+phase-title = Phase portrait: rate against angle (the recent trail)
+phase-angle = angle [°]
+phase-rate = rate [°/s]
+body-unobservable = unobservable axis
+body-orbit = orbit
+body-shadow = shadow
+body-no-gpu = 3D view needs the wgpu renderer

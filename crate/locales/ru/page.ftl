@@ -144,3 +144,99 @@ live-within = { $name }: ошибка ориентации { $error }°, вну�
 live-outside = { $name }: ошибка ориентации { $error }°, вне своей полосы 3σ = { $band }°.
 live-error = { $name }: ошибка ориентации { $error }°.
 live-no-truth = { $name }: истинной ориентации для сравнения нет (воспроизводится запись).
+
+## Таблица точности (статья 2)
+accuracy-help = σ: наибольшая по осям СКО ошибки относительно истины за последние { $covered } с из { $window } с (вместе со средним); √P: собственное √max diag P фильтра сейчас (мера статьи). Щелчок по строке делает фильтр призраком.
+accuracy-filter = фильтр
+accuracy-att = σ ориент. °
+accuracy-att-p = √P ориент. °
+accuracy-paper-att = статья °
+accuracy-rate = σ скор. °/с
+accuracy-rate-p = √P скор. °/с
+accuracy-paper-rate = статья °/с
+
+## Лабораторный режим
+replay-example = Воспроизвести пример записи
+replaying = воспроизводится { $name } ({ $n } отсчётов)
+back-to-simulation = Назад к моделированию
+
+## Переборы
+sweep-title = Перебор: { $title }
+cancel = Отмена
+sweep-run = Запустить перебор
+sweep-run-hint = По одному прогону на значение и зерно с текущими параметрами; страница продолжает работать
+sweep-run-log = Перебор по записи
+sweep-run-log-hint = По одному прогону на значение по воспроизводимой записи (истины нет: собственные оценки записи)
+sweep-size = { $cells } знач. × { $seeds ->
+    [one] { $seeds } зерно
+    [few] { $seeds } зерна
+   *[many] { $seeds } зёрен
+}
+sweep-size-grid = { $cells } клеток × { $seeds ->
+    [one] { $seeds } зерно
+    [few] { $seeds } зерна
+   *[many] { $seeds } зёрен
+}
+sweep-each = по { $s } с
+sweep-on-log = по воспроизводимой записи
+sweep-diverged = { $at }: фильтр разошёлся (пропущенные отсчёты)
+sweep-unscored = { $at }: не оценено: { $why }
+sweep-skipped = пропущено: { $why }
+sweep-best = лучшее для «{ $series }»: { $param } = { $value } (СКЗ { $rms })
+sweep-max-axis = log10 max |значение|
+sweep-objective-axis = критерий
+sweep-argmin = минимум { $name } по { $n } значениям этого перебора: { $at }
+sweep-heat-needs = Для тепловой карты нужно хотя бы по два положительных значения по каждой оси.
+sweep-heat-colour = цвет: log10 { $name }, от { $lo } (тёмный) до { $hi } (яркий). Оптимум: { $at } ({ $name } = { $best }).
+sweep-heat-filling = цвет: log10 { $name }; клетки заполняются по ходу перебора.
+sweep-optimum = оптимум
+
+## Сообщения о том, что сделала страница
+msg-no-example-log = у этой работы нет примера записи
+msg-python-copied = скопировано: фрагмент на Python, который загружает выгруженный CSV и рисует этот график
+msg-no-logs = эта работа не воспроизводит записи
+msg-no-logs-named = { $name }: эта работа не воспроизводит записи
+msg-log-skipped = { $name }: пропущено — { $why }
+msg-log-more-bad = { $name }: … и ещё плохих строк: { $n }
+msg-log-replaying = { $name }: воспроизводится { $n } отсчётов
+msg-log-failed = { $name }: { $why }
+msg-export-failed = выгрузка не удалась: { $why }
+msg-export-busy = уже идёт выгрузка: по одной за раз
+msg-no-output-file = у этой работы нет выходного файла статьи
+msg-output-rows = строк: { $n }
+msg-output-rows-stopped = строк: { $n }, до первой строки в пределах допуска
+msg-csv-rows = строк: { $n }, каждый отсчёт, пересчитано от t = 0
+msg-plot-failed = не удаётся показать этот график: { $why }
+msg-plots-lost = графики потеряли историю: { $why }
+msg-rerun-took = для этого графика пересчитано { $t } с моделирования за { $ms } мс
+msg-preset-applied = набор «{ $name }» применён
+msg-preset-waits = набор «{ $name }»: часть значений вступит в силу при сбросе
+msg-png-lab-changed = выгрузка PNG остановлена: сменилась работа
+msg-png-busy = PNG уже делается: по одному за раз
+msg-png-failed = выгрузка PNG не удалась: { $why }
+
+## Плохие элементы ссылки, вверху страницы
+link-problems = В ссылке есть элементы, которые страница не смогла применить; остальное применено:
+link-dismiss = Скрыть
+link-bad = Элемент ссылки { $item }: { $why } — пропущен.
+link-unknown = Элемент ссылки { $item }: у этой работы нет такой настройки — пропущен.
+link-unknown-near = Элемент ссылки { $item }: у этой работы нет такой настройки; может быть, «{ $label }»? — пропущен.
+link-not-a-number = Элемент ссылки { $item }: для «{ $label }» нужно число — оставлено { $kept }.
+link-out-of-range = Элемент ссылки { $item }: «{ $label }» — от { $range } — оставлено { $kept }.
+link-not-whole = Элемент ссылки { $item }: «{ $label }» принимает целое число — оставлено { $kept }.
+link-no-option = Элемент ссылки { $item }: «{ $label }» — одно из: { $range } — оставлено { $kept }.
+link-malformed = Элемент ссылки { $item }: не в виде имя=значение — пропущен.
+
+## Командная строка: `attlab labs --lang`
+cli-paper = статья
+cli-default = по умолчанию
+
+## Слова на видах
+sphere-pole = S (полюс w)
+phase-title = Фазовый портрет: скорость от угла (недавний след)
+phase-angle = угол [°]
+phase-rate = скорость [°/с]
+body-unobservable = ненаблюдаемая ось
+body-orbit = орбита
+body-shadow = тень
+body-no-gpu = 3D-виду нужен отрисовщик wgpu

@@ -143,12 +143,25 @@ pub const SINGLE_AXIS_VIEWS: &[ViewKind] =
 /// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
-    /// Title.
-    pub title: String,
+    /// Title in words (a catalogue translates it: `lab-<id>-diagram-<index>`).
+    pub title: &'static str,
+    /// What the title adds in the paper's notation, e.g. "Δt = 1 s, ε = 0.1".
+    pub detail: String,
     /// Draw the unit circle.
     pub unit_circle: bool,
     /// Labelled points.
     pub points: Vec<DiagramPoint>,
+}
+
+impl Diagram {
+    /// The title with its detail, in English.
+    pub fn heading(&self) -> String {
+        if self.detail.is_empty() {
+            self.title.to_string()
+        } else {
+            format!("{} ({})", self.title, self.detail)
+        }
+    }
 }
 
 /// One labelled point of a [`Diagram`].

@@ -165,6 +165,11 @@ pub struct SeriesSpec {
     /// the factor from the SI standard deviation to this series' unit (e.g. rad → deg).
     #[serde(skip)]
     pub band: Option<(String, f64)>,
+    /// The typed key it was named from (source and measure), from which a label in another
+    /// language is derived (`i18n::series_label`); `None` for a series named by hand (a
+    /// test's, the time column).
+    #[serde(skip)]
+    pub key: Option<SeriesKey>,
 }
 
 impl SeriesSpec {
@@ -178,6 +183,7 @@ impl SeriesSpec {
             group,
             source: 0,
             band: None,
+            key: None,
         }
     }
 
@@ -191,7 +197,17 @@ impl SeriesSpec {
         };
         Self {
             label,
+            key: Some(key),
             ..Self::new(key.name(), unit, group)
+        }
+    }
+
+    /// The same, named from `key` (a derived measure: a variance, the NEES, the health).
+    pub fn keyed(self, key: SeriesKey) -> Self {
+        Self {
+            name: key.name(),
+            key: Some(key),
+            ..self
         }
     }
 

@@ -249,15 +249,16 @@ fn internal_candidates(
     single_axis: bool,
 ) {
     let (id, states) = (o.prefix, e.covariance_states());
-    let mut push = |source: Source, name: String, label: String, unit, group| {
-        let spec = SeriesSpec::new(name, unit, group)
+    let mut push = |source: Source, key: SeriesKey, label: String, unit, group| {
+        let spec = SeriesSpec::new(String::new(), unit, group)
+            .keyed(key)
             .labelled(format!("{}: {label}", o.label))
             .from_source(o.src);
         out.push(Candidate { source, spec });
     };
     for (k, s) in states.iter().enumerate() {
         let label = format!("variance of the {}", state_label(s));
-        let name = SeriesKey::variance(id, s).name();
+        let name = SeriesKey::variance(id, s);
         push(
             Source::Variance(i, k),
             name,
@@ -271,7 +272,7 @@ fn internal_candidates(
         let label = "attitude NEES eᵀP⁻¹e".to_string();
         push(
             Source::NeesAtt(i),
-            SeriesKey::nees_att(id).name(),
+            SeriesKey::nees_att(id),
             label,
             "",
             G::Error,
@@ -283,7 +284,7 @@ fn internal_candidates(
             state_label(a),
             state_label(b)
         );
-        let name = SeriesKey::covariance(id, a, b).name();
+        let name = SeriesKey::covariance(id, a, b);
         push(
             Source::Cross(i, 0, 1),
             name,
@@ -293,7 +294,7 @@ fn internal_candidates(
         );
     }
     for (k, q) in e.innovation_quantities().iter().enumerate() {
-        let name = SeriesKey::new(id, q).name();
+        let name = SeriesKey::new(id, q);
         push(
             Source::Innovation(i, k),
             name,
@@ -303,7 +304,7 @@ fn internal_candidates(
         );
     }
     for (k, q) in e.extra_quantities().iter().enumerate() {
-        let name = SeriesKey::new(id, q).name();
+        let name = SeriesKey::new(id, q);
         push(
             Source::Extra(i, k),
             name,
@@ -313,6 +314,6 @@ fn internal_candidates(
         );
     }
     let label = "health (0 = ok)".to_string();
-    let name = SeriesKey::status(id).name();
+    let name = SeriesKey::status(id);
     push(Source::Status(i), name, label, "", G::Lab);
 }

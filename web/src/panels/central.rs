@@ -126,6 +126,7 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
         &app.view().plots,
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,
+        &super::plot_words(app),
     ));
     // Everything of this area that is not the plot itself: chips, tabs, axes.
     if let Some(plot) = regions.plot_area {
@@ -161,7 +162,8 @@ fn draw_view(
             attach_ellipses(app, &mut tracks);
             let caption = chart_caption(app);
             let title = tr(app, "sphere-title");
-            let words = (title.as_str(), caption.as_str());
+            let pole = tr(app, "sphere-pole");
+            let words = (title.as_str(), caption.as_str(), pole.as_str());
             riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, words);
         }
         ViewKind::WPlane => {
@@ -192,7 +194,13 @@ fn draw_view(
             // Trails are kept for hidden sources too, so showing one again loses nothing.
             let (sources, shown) = axis_sources(app, palette::of(ui.visuals()));
             view.trails.push(app.sim().t_s(), &sources);
-            single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown);
+            let words = [
+                tr(app, "phase-title"),
+                tr(app, "phase-angle"),
+                tr(app, "phase-rate"),
+            ];
+            let words = (words[0].as_str(), words[1].as_str(), words[2].as_str());
+            single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown, words);
         }
     }
 }
@@ -209,17 +217,11 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
         angle_rad: truth.angle_rad.unwrap_or(f64::NAN),
         rate_rad_s: truth.rate_body_rad_s.z,
     }];
-    for (i, (e, est)) in app
-        .sim()
-        .estimators()
-        .iter()
-        .zip(app.sim().estimates())
-        .enumerate()
-    {
+    for (i, est) in app.sim().estimates().iter().enumerate() {
         if let Some(angle) = est.angle_rad {
             shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
-                name: e.id().to_string(),
+                name: super::estimator_short(app, i),
                 color: colours.source(i + 1),
                 pattern: palette::pattern(i + 1),
                 angle_rad: angle,
@@ -238,17 +240,13 @@ fn draw_body(
     gpu_ready: bool,
 ) {
     let truth = app.sim().truth().q_ref_from_body;
+    let ghost_name = super::estimator_name(app, app.view().ghost_index);
     let ghost = app
         .sim()
         .estimates()
         .get(app.view().ghost_index)
         .and_then(|e| e.quaternion())
-        .zip(
-            app.sim()
-                .estimators()
-                .get(app.view().ghost_index)
-                .map(|e| e.label()),
-        );
+        .map(|q| (q, ghost_name.as_str()));
     let extras = app.sim().scene();
     let mut top = vec![tr(app, "body-truth")];
     top.extend(ghost.map(|(_, label)| tr_with(app, "body-ghost", &[("label", arg(label))])));
@@ -265,6 +263,19 @@ fn draw_body(
             .and_then(|e| e.unobservable_axis_body()),
         orbit: extras.orbit,
         captions: (top, tr(app, "body-hint")),
+        words: body3d::SceneWords {
+            vectors: extras
+                .vectors
+                .iter()
+                .map(|v| {
+                    let id = attlab::i18n::scene_id(app.sim().lab().id(), v.label);
+                    super::lab_word(app, &id, v.label)
+                })
+                .collect(),
+            unobservable: tr(app, "body-unobservable"),
+            orbit: (tr(app, "body-orbit"), tr(app, "body-shadow")),
+            no_gpu: tr(app, "body-no-gpu"),
+        },
     };
     body3d::show(ui, rect, camera, &scene, gpu_ready);
 }
@@ -274,10 +285,10 @@ fn draw_body(
 fn chart_caption(app: &AppState) -> String {
     let mut north = Vec::new();
     let mut flipped = Vec::new();
-    for (e, est) in app.sim().estimators().iter().zip(app.sim().estimates()) {
+    for (i, est) in app.sim().estimates().iter().enumerate() {
         match est.attitude.wz().map(|wz| wz.chart) {
-            Some(WzChart::North) => north.push(e.id()),
-            Some(WzChart::Flipped) => flipped.push(e.id()),
+            Some(WzChart::North) => north.push(super::estimator_short(app, i)),
+            Some(WzChart::Flipped) => flipped.push(super::estimator_short(app, i)),
             None => {}
         }
     }
@@ -295,8 +306,14 @@ fn chart_caption(app: &AppState) -> String {
 fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack> {
     let rec = app.sim().recorder();
     let truth = tr(app, "truth");
-    let mut names = vec![(TRUTH, truth.as_str())];
-    names.extend(app.sim().estimators().iter().map(|e| (e.id(), e.label())));
+    let mut names = vec![(TRUTH, truth)];
+    names.extend(
+        app.sim()
+            .estimators()
+            .iter()
+            .enumerate()
+            .map(|(i, e)| (e.id(), super::estimator_name(app, i))),
+    );
     let mut out = Vec::new();
     for (i, (src, label)) in names.iter().enumerate() {
         if app.view().hidden.contains(&i) {

@@ -206,7 +206,18 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 let id = i18n::preset_id(app.sim().lab().id(), i);
                 if ui
                     .button(i18n::lab_text(app.view().lang(), &id, preset.name))
-                    .on_hover_text(tr_with(app, "preset-hint", &[("help", arg(preset.help))]))
+                    .on_hover_text(tr_with(
+                        app,
+                        "preset-hint",
+                        &[(
+                            "help",
+                            arg(super::lab_word(
+                                app,
+                                &i18n::preset_help_id(app.sim().lab().id(), i),
+                                preset.help,
+                            )),
+                        )],
+                    ))
                     .clicked()
                 {
                     commands.push(Command::from(RunCommand::ApplyPreset(i)));
@@ -287,10 +298,11 @@ pub(super) fn param_widget(
         let english = spec_option(spec, i);
         i18n::lab_text(lang, &i18n::param_option_id(lab, spec.key, i), english)
     };
+    let help = i18n::lab_text(lang, &i18n::param_help_id(lab, spec.key), spec.help);
     let hint = if spec.needs_reset {
-        tr_with(app, "applies-at-reset", &[("help", arg(spec.help))])
+        tr_with(app, "applies-at-reset", &[("help", arg(help))])
     } else {
-        spec.help.to_string()
+        help
     };
     let response = match spec.kind {
         ParamKind::Toggle => {
@@ -354,26 +366,26 @@ fn spec_option(spec: &ParamSpec, i: usize) -> &'static str {
 }
 
 fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let with_attitude: Vec<(usize, &str)> = app
+    let with_attitude: Vec<(usize, String)> = app
         .sim()
         .estimators()
         .iter()
         .zip(app.sim().estimates())
         .enumerate()
         .filter(|(_, (_, est))| est.quaternion().is_some())
-        .map(|(i, (e, _))| (i, e.label()))
+        .map(|(i, _)| (i, super::estimator_name(app, i)))
         .collect();
     if !with_attitude.is_empty() {
         let current = with_attitude
             .iter()
             .find(|(i, _)| *i == app.view().ghost_index)
-            .map_or("—", |x| x.1);
+            .map_or("—", |x| &x.1[..]);
         egui::ComboBox::from_label(tr(app, "ghost"))
             .selected_text(current)
             .show_ui(ui, |ui| {
                 for (i, label) in &with_attitude {
                     if ui
-                        .selectable_label(*i == app.view().ghost_index, *label)
+                        .selectable_label(*i == app.view().ghost_index, &label[..])
                         .clicked()
                     {
                         commands.push(Command::from(ViewCommand::SetGhost(*i)));

@@ -2,7 +2,9 @@
 //! diagrams and the laboratory mode that replays a recorded gyro or IMU log (the sweeps have
 //! their own file).
 
+use super::{arg, lab_word, tr, tr_with};
 use crate::state::{AppState, Command, IoCommand, ViewCommand};
+use attlab::i18n;
 use egui::Ui;
 use egui_plot::{Line, Plot, Points};
 
@@ -21,51 +23,76 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         }
     };
     let paper = |x: Option<f64>| x.map_or_else(|| "—".into(), |v| format!("{v:e}"));
-    egui::CollapsingHeader::new(title).default_open(true).show(ui, |ui| {
-        let covered = app.sim().t_s().min(window_s);
-        ui.label(
-            egui::RichText::new(format!(
-                "σ: largest per-axis RMS error against the truth over the last {covered:.0} s of {window_s:.0} s (mean included); √P: the filter's own √max diag P now (the paper's metric). Click a row to show that filter as the ghost."
-            ))
-            .small(),
-        );
-        egui::ScrollArea::horizontal().show(ui, |ui| {
-            egui::Grid::new("accuracy_table").striped(true).num_columns(7).show(ui, |ui| {
-                for h in ["filter", "σ att °", "√P att °", "paper °", "σ rate °/s", "√P rate °/s", "paper °/s"] {
-                    ui.label(egui::RichText::new(h).small().strong());
-                }
-                ui.end_row();
-                for (i, r) in rows.iter().enumerate() {
-                    let selected = app.view().ghost_index == i;
-                    // Row i is estimator i (source i + 1): its colour, as in every plot.
-                    ui.horizontal(|ui| {
-                        ui.label(egui::RichText::new("●").small().color(colours.source(i + 1)));
-                        if ui.selectable_label(selected, egui::RichText::new(r.label).small()).clicked() {
-                            commands.push(Command::from(ViewCommand::SetGhost(i)));
+    let title = lab_word(app, &i18n::accuracy_title_id(app.sim().lab().id()), title);
+    egui::CollapsingHeader::new(title)
+        .default_open(true)
+        .show(ui, |ui| {
+            let covered = app.sim().t_s().min(window_s);
+            let help = tr_with(
+                app,
+                "accuracy-help",
+                &[
+                    ("covered", arg(format!("{covered:.0}"))),
+                    ("window", arg(format!("{window_s:.0}"))),
+                ],
+            );
+            ui.label(egui::RichText::new(help).small());
+            egui::ScrollArea::horizontal().show(ui, |ui| {
+                egui::Grid::new("accuracy_table")
+                    .striped(true)
+                    .num_columns(7)
+                    .show(ui, |ui| {
+                        for h in [
+                            "accuracy-filter",
+                            "accuracy-att",
+                            "accuracy-att-p",
+                            "accuracy-paper-att",
+                            "accuracy-rate",
+                            "accuracy-rate-p",
+                            "accuracy-paper-rate",
+                        ] {
+                            ui.label(egui::RichText::new(tr(app, h)).small().strong());
+                        }
+                        ui.end_row();
+                        for (i, r) in rows.iter().enumerate() {
+                            let selected = app.view().ghost_index == i;
+                            // Row i is estimator i (source i + 1): its colour, as in every plot.
+                            ui.horizontal(|ui| {
+                                ui.label(
+                                    egui::RichText::new("●")
+                                        .small()
+                                        .color(colours.source(i + 1)),
+                                );
+                                let name = super::estimator_name(app, i);
+                                if ui
+                                    .selectable_label(selected, egui::RichText::new(name).small())
+                                    .clicked()
+                                {
+                                    commands.push(Command::from(ViewCommand::SetGhost(i)));
+                                }
+                            });
+                            for text in [
+                                cell(r.att_sigma_deg),
+                                cell(r.att_p_deg),
+                                paper(r.paper[0]),
+                                cell(r.rate_sigma_deg_s),
+                                cell(r.rate_p_deg_s),
+                                paper(r.paper[1]),
+                            ] {
+                                ui.label(egui::RichText::new(text).small().monospace());
+                            }
+                            ui.end_row();
                         }
                     });
-                    for text in [
-                        cell(r.att_sigma_deg),
-                        cell(r.att_p_deg),
-                        paper(r.paper[0]),
-                        cell(r.rate_sigma_deg_s),
-                        cell(r.rate_p_deg_s),
-                        paper(r.paper[1]),
-                    ] {
-                        ui.label(egui::RichText::new(text).small().monospace());
-                    }
-                    ui.end_row();
-                }
             });
         });
-    });
 }
 
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit
 /// circle), filling `ui`, with its title above; a point of an estimator in its colour.
 pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
     let colours = crate::render::palette::of(ui.visuals());
-    ui.label(egui::RichText::new(&d.title).small());
+    ui.label(egui::RichText::new(diagram_heading(app, 0, d)).small());
     // The legend goes below the diagram, so it covers no point.
     let row = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
     let legend_h = row * (d.points.len() as f32 / 2.0).ceil().max(1.0);
@@ -75,7 +102,7 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
         id.and_then(|id| app.sim().estimators().iter().position(|e| e.id() == id))
             .map(|i| i + 1)
     };
-    Plot::new(("diagram_plot", d.title.as_str()))
+    Plot::new(("diagram_plot", d.title))
         .height(height)
         .data_aspect(1.0)
         .include_x(-1.2)
@@ -121,6 +148,16 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
     });
 }
 
+/// A diagram's title in the reader's language, with its detail in the paper's notation.
+pub fn diagram_heading(app: &AppState, index: usize, d: &attlab::model::Diagram) -> String {
+    let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), index), d.title);
+    if d.detail.is_empty() {
+        title
+    } else {
+        format!("{title} ({})", d.detail)
+    }
+}
+
 /// The laboratory mode of a lab that reads a kind of recorded log: its unit choices (the
 /// format's parameter specs, drawn like the lab's own), the file, the lab's example log,
 /// and the way back to the simulation.
@@ -128,10 +165,12 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
     let Some(format) = app.sim().lab().page().log_format else {
         return;
     };
-    egui::CollapsingHeader::new(format.title)
+    let lab = app.sim().lab().id();
+    let word = |part: &str, english: &str| lab_word(app, &i18n::log_format_id(lab, part), english);
+    egui::CollapsingHeader::new(word("title", format.title))
         .default_open(false)
         .show(ui, |ui| {
-            ui.label(format.help);
+            ui.label(word("help", format.help));
             let units = app.io().units_for(format);
             ui.horizontal_wrapped(|ui| {
                 for spec in format.units {
@@ -143,20 +182,24 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
                 }
             });
             ui.horizontal_wrapped(|ui| {
-                if ui.button(format.load_label).clicked() {
+                if ui.button(word("load", format.load_label)).clicked() {
                     commands.push(Command::from(IoCommand::LoadLog));
                 }
                 if let Some(example) = app.sim().lab().page().example_log
                     && ui
-                        .button("Replay the example log")
+                        .button(tr(app, "replay-example"))
                         .on_hover_text(example.name)
                         .clicked()
                 {
                     commands.push(Command::from(IoCommand::LoadExampleLog));
                 }
                 if let Some((name, n)) = &app.io().replaying {
-                    ui.label(format!("replaying {name} ({n} samples)"));
-                    if ui.button("Back to simulation").clicked() {
+                    ui.label(tr_with(
+                        app,
+                        "replaying",
+                        &[("name", arg(name)), ("n", (*n).into())],
+                    ));
+                    if ui.button(tr(app, "back-to-simulation")).clicked() {
                         commands.push(Command::from(IoCommand::EndReplay));
                     }
                 }

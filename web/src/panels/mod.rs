@@ -28,6 +28,11 @@ pub(crate) fn tr(app: &AppState, id: &str) -> String {
     i18n::t(app.view().lang(), id)
 }
 
+/// [`tr`] for the frame loop outside the panels.
+pub fn tr_page(app: &AppState, id: &str) -> String {
+    tr(app, id)
+}
+
 /// The same with arguments (`$name` in the message).
 pub(crate) fn tr_with(app: &AppState, id: &str, args: &[(&str, FluentValue<'_>)]) -> String {
     i18n::t_with(app.view().lang(), id, args)
@@ -40,11 +45,75 @@ pub(crate) fn arg(value: impl std::fmt::Display) -> FluentValue<'static> {
 
 /// The name of estimator `i` a student reads (its label, in the reader's language).
 pub(crate) fn estimator_name(app: &AppState, i: usize) -> String {
+    let lab = app.sim().lab().id();
     app.sim()
         .estimators()
         .get(i)
-        .map(|e| e.label().to_string())
+        .map(|e| i18n::estimator_name(app.view().lang(), lab, e.id(), e.label()))
         .unwrap_or_default()
+}
+
+/// The same, cut to [`SHORT_NAME`] characters with "…" where a view has little room (a
+/// chip, a dial's readout, a caption); the whole name is in the legend and on hover.
+pub(crate) fn estimator_short(app: &AppState, i: usize) -> String {
+    elide(&estimator_name(app, i), SHORT_NAME)
+}
+
+/// The longest name a chip or a dial shows whole.
+pub(crate) const SHORT_NAME: usize = 24;
+
+/// `text` cut to `max` characters, the last one "…" when cut.
+pub(crate) fn elide(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        return text.to_string();
+    }
+    let kept: String = text.chars().take(max.saturating_sub(1)).collect();
+    format!("{}…", kept.trim_end())
+}
+
+/// A lab's own word `english` in the reader's language (the catalogue's message `id`).
+pub(crate) fn lab_word(app: &AppState, id: &str, english: &str) -> String {
+    i18n::lab_text(app.view().lang(), id, english)
+}
+
+/// A series' legend (label and unit) in the reader's language.
+pub(crate) fn series_legend(app: &AppState, spec: &attlab::model::SeriesSpec) -> String {
+    i18n::series_legend(app.view().lang(), app.sim().lab().id(), spec)
+}
+
+/// The words the plot draws, in the reader's language.
+pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
+    let lab = app.sim().lab();
+    let outages = lab.page().outages.iter().enumerate();
+    crate::render::plots::PlotWords {
+        legend: Box::new(move |spec| series_legend(app, spec)),
+        time_axis: tr(app, "axis-time"),
+        mixed_units: tr(app, "axis-mixed-units"),
+        bands: tr(app, "bands-legend"),
+        outages: outages
+            .map(|(k, o)| lab_word(app, &i18n::outage_id(lab.id(), k), o.label))
+            .collect(),
+    }
+}
+
+/// The bad items of the link the page opened with, at the top of the page in the warning
+/// colour, until dismissed (the rest of the link is applied).
+pub fn link_problems(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if app.link_problems().is_empty() {
+        return;
+    }
+    egui::Panel::top("link_problems").show(ui, |ui| {
+        let warn = crate::render::palette::of(ui.visuals()).warn;
+        ui.horizontal_wrapped(|ui| {
+            ui.colored_label(warn, egui::RichText::new(tr(app, "link-problems")).strong());
+            if ui.small_button(tr(app, "link-dismiss")).clicked() {
+                commands.push(Command::from(crate::state::UrlCommand::DismissProblems));
+            }
+        });
+        for p in app.link_problems() {
+            ui.colored_label(warn, p);
+        }
+    });
 }
 
 /// The status line at the bottom: a re-run or export under way (with its progress and a
@@ -71,13 +140,14 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
             if app.run().stats.behind {
                 ui.colored_label(colours.warn, tr(app, "behind"));
             }
-            for (e, status) in app.sim().estimators().iter().zip(app.sim().statuses()) {
+            for (k, status) in app.sim().statuses().iter().enumerate() {
+                let name = estimator_name(app, k);
                 match status {
                     EstimatorStatus::Ok => {}
                     EstimatorStatus::Diverged(why) => {
                         ui.colored_label(
                             colours.error,
-                            tr_with(app, "diverged", &[("id", arg(e.id())), ("why", arg(why))]),
+                            tr_with(app, "diverged", &[("id", arg(&name)), ("why", arg(why))]),
                         );
                     }
                     EstimatorStatus::Unobservable(why) => {
@@ -86,7 +156,7 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
                             tr_with(
                                 app,
                                 "unobservable",
-                                &[("id", arg(e.id())), ("why", arg(why))],
+                                &[("id", arg(&name)), ("why", arg(why))],
                             ),
                         );
                     }

@@ -55,7 +55,7 @@ fn view_title(app: &AppState, kind: ViewKind) -> String {
     if kind == ViewKind::WPlane
         && let Some(d) = app.sim().lab().page().diagrams(app.sim().params()).first()
     {
-        return d.title.clone();
+        return super::lab_tools::diagram_heading(app, 0, d);
     }
     tr(app, kind.message())
 }

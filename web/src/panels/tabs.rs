@@ -13,10 +13,9 @@ use egui::Ui;
 pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let estimators = app.sim().estimators();
     let mut room = ui.available_width() - 160.0;
-    let fits = estimators
-        .iter()
-        .take_while(|e| {
-            room -= tab_width(ui, &format!("● {}", e.id())) * 0.9;
+    let fits = (0..estimators.len())
+        .take_while(|i| {
+            room -= tab_width(ui, &format!("● {}", super::estimator_short(app, *i))) * 0.9;
             room >= 0.0
         })
         .count();
@@ -40,12 +39,14 @@ pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<C
     });
 }
 
-/// The chip of estimator `i`: its id in its colour, grey while hidden.
+/// The chip of estimator `i`: its name (cut to fit; whole on hover, with its id) in its
+/// colour, grey while hidden.
 fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Command>) {
     let colours = crate::render::palette::of(ui.visuals());
     let Some(e) = app.sim().estimators().get(i) else {
         return;
     };
+    let name = super::estimator_name(app, i);
     let source = i + 1;
     let shown = !app.view().hidden.contains(&source);
     let color = if shown {
@@ -53,7 +54,7 @@ fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Comm
     } else {
         colours.ink_dim.gamma_multiply(0.6)
     };
-    let text = egui::RichText::new(format!("● {}", e.id()))
+    let text = egui::RichText::new(format!("● {}", super::estimator_short(app, i)))
         .small()
         .color(color);
     if ui
@@ -65,7 +66,7 @@ fn estimator_chip(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Comm
             } else {
                 "chip-show-hint"
             },
-            &[("name", arg(e.label()))],
+            &[("name", arg(format!("{name} ({})", e.id())))],
         ))
         .clicked()
     {

@@ -6,7 +6,7 @@ use super::mesh::{
 };
 use attlab::model::{BodyShape, OrbitPicture, SceneVector};
 use eframe::egui_wgpu::{self, wgpu};
-use egui::{Color32, Pos2, Rect, Sense, Stroke, Ui};
+use egui::{Color32, Pos2, Rect, Sense, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
 use std::sync::OnceLock;
 
@@ -274,6 +274,21 @@ pub struct Scene<'a> {
     /// The captions in the reader's language: the lines on top (what is solid, what is the
     /// ghost), and how to move the camera at the bottom.
     pub captions: (Vec<String>, String),
+    /// The words drawn in the view, in the reader's language.
+    pub words: SceneWords,
+}
+
+/// The words the 3D view draws, in the reader's language.
+#[derive(Clone, Debug, Default)]
+pub struct SceneWords {
+    /// Each reference direction's label, in the order of [`Scene::vectors`].
+    pub vectors: Vec<String>,
+    /// The ghost's unobservable axis.
+    pub unobservable: String,
+    /// The orbit inset's caption ("orbit") and the word for the Earth's shadow.
+    pub orbit: (String, String),
+    /// What the view says without a GPU renderer.
+    pub no_gpu: String,
 }
 
 /// Shows the 3D view filling `rect`.
@@ -287,7 +302,7 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
-            "3D view needs the wgpu renderer",
+            &scene.words.no_gpu,
             egui::FontId::proportional(14.0),
             colours.error,
         );
@@ -319,7 +334,7 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
             rect.right_bottom() - egui::vec2(side + 6.0, side + 6.0),
             egui::vec2(side, side),
         );
-        orbit_picture(&painter, area, orbit);
+        super::orbit_inset::orbit_picture(&painter, area, orbit, &scene.words.orbit);
     }
     captions(&painter, rect, scene);
 }
@@ -332,7 +347,7 @@ type Placed = (f64, [Vertex; 3]);
 
 /// The scene's triangles seen from `eye` — the body, its ghost, the reference vectors, the
 /// unobservable axis, the string — and the labels at the tips of the vectors.
-fn scene_triangles<'a>(scene: &Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Vec<Label<'a>>) {
+fn scene_triangles<'a>(scene: &'a Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Vec<Label<'a>>) {
     let body = mesh(scene.shape);
     let mut tris = Vec::with_capacity(body.len() * 2 + 64);
     let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
@@ -344,7 +359,7 @@ fn scene_triangles<'a>(scene: &Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Ve
     }
     let mut labels: Vec<Label<'a>> = Vec::new();
     let mut rods = Vec::new();
-    for v in scene.vectors {
+    for (k, v) in scene.vectors.iter().enumerate() {
         let tip = truth_at + v.dir_ref * 1.5;
         let [r, g, b] = v.rgb;
         let color = [
@@ -353,7 +368,8 @@ fn scene_triangles<'a>(scene: &Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Ve
             f32::from(b) / 255.0,
         ];
         rod(truth_at, tip, 0.018, color, &mut rods);
-        labels.push((tip, v.label, Color32::from_rgb(r, g, b)));
+        let label = scene.words.vectors.get(k).map_or(v.label, String::as_str);
+        labels.push((tip, label, Color32::from_rgb(r, g, b)));
     }
     if let (Some(axis), Some((q, _))) = (scene.ghost_axis, scene.ghost) {
         let d = q * axis;
@@ -366,7 +382,7 @@ fn scene_triangles<'a>(scene: &Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Ve
         );
         labels.push((
             ghost_at + d * 1.15,
-            "unobservable axis",
+            &scene.words.unobservable,
             Color32::from_rgb(242, 77, 217),
         ));
     }
@@ -430,63 +446,4 @@ fn to_screen(vp: &Matrix4<f64>, rect: Rect, p: &Vector3<f64>) -> Option<Pos2> {
         rect.left() + ((x + 1.0) / 2.0) as f32 * rect.width(),
         rect.top() + ((1.0 - y) / 2.0) as f32 * rect.height(),
     ))
-}
-
-/// The Earth seen from the orbit normal: the orbit, the satellite, the sun to the right and
-/// the shadow cylinder behind the Earth (the satellite turns red inside it).
-fn orbit_picture(painter: &egui::Painter, area: Rect, orbit: &OrbitPicture) {
-    painter.rect_filled(area, 4.0, Color32::from_rgba_unmultiplied(8, 10, 18, 220));
-    let n = orbit.normal_eci;
-    let sun_in_plane = orbit.sun_eci - n * orbit.sun_eci.dot(&n);
-    let ea = sun_in_plane.try_normalize(1e-9).unwrap_or_else(|| {
-        n.cross(&Vector3::x())
-            .try_normalize(1e-9)
-            .unwrap_or_else(Vector3::y)
-    });
-    let eb = n.cross(&ea);
-    let r = orbit.position_eci_m.norm().max(orbit.earth_radius_m);
-    let center = area.center() + egui::vec2(0.0, 6.0);
-    let scale = area.width() * 0.40 / r as f32;
-    let at = |x: f64, y: f64| center + egui::vec2(x as f32 * scale, -(y as f32) * scale);
-    let re = orbit.earth_radius_m;
-    // The shadow: the cylinder of the Earth's radius away from the sun.
-    let far = r * 1.25;
-    let shadow = vec![at(0.0, re), at(-far, re), at(-far, -re), at(0.0, -re)];
-    painter.add(egui::Shape::convex_polygon(
-        shadow,
-        Color32::from_rgba_unmultiplied(0, 0, 0, 170),
-        Stroke::NONE,
-    ));
-    painter.circle_filled(center, re as f32 * scale, Color32::from_rgb(40, 90, 170));
-    painter.circle_stroke(
-        center,
-        r as f32 * scale,
-        Stroke::new(1.0, Color32::from_gray(150)),
-    );
-    let p = orbit.position_eci_m;
-    let sat = at(p.dot(&ea), p.dot(&eb));
-    let sat_color = if orbit.eclipse {
-        Color32::from_rgb(230, 70, 70)
-    } else {
-        Color32::from_rgb(255, 230, 120)
-    };
-    painter.circle_filled(sat, 4.0, sat_color);
-    let tip = at(far, 0.0);
-    painter.arrow(
-        at(r * 1.02, 0.0),
-        tip - at(r * 1.02, 0.0),
-        Stroke::new(1.5, Color32::from_rgb(255, 210, 60)),
-    );
-    let beta = 90.0 - orbit.sun_eci.angle(&n).to_degrees();
-    let caption = format!(
-        "orbit · β {beta:.0}°{}",
-        if orbit.eclipse { " · shadow" } else { "" }
-    );
-    painter.text(
-        area.left_top() + egui::vec2(4.0, 3.0),
-        egui::Align2::LEFT_TOP,
-        caption,
-        egui::FontId::proportional(10.0),
-        Color32::from_gray(200),
-    );
 }

@@ -5,6 +5,7 @@ pub mod body3d;
 pub mod clip;
 pub mod fonts;
 pub mod mesh;
+mod orbit_inset;
 pub mod palette;
 pub mod plots;
 pub mod riemann_sphere;

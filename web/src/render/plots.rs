@@ -72,8 +72,24 @@ pub fn outage_intervals(rec: &Recorder, index: usize, out_when: f64) -> Vec<[f64
     out
 }
 
+/// The words a plot draws, in the reader's language (the page fills them from the
+/// catalogue; the renderer knows no language).
+pub struct PlotWords<'a> {
+    /// A series' legend: its label and unit.
+    pub legend: Box<dyn Fn(&attlab::model::SeriesSpec) -> String + 'a>,
+    /// The time axis' title.
+    pub time_axis: String,
+    /// The y axis' title when the series' units differ.
+    pub mixed_units: String,
+    /// The legend's entry for the ±3σ bands.
+    pub bands: String,
+    /// The lab's outages' labels, by position.
+    pub outages: Vec<String>,
+}
+
 /// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
 /// tab changes are commands.
+#[allow(clippy::too_many_arguments)]
 pub fn show(
     ui: &mut Ui,
     rec: &Recorder,
@@ -82,6 +98,7 @@ pub fn show(
     state: &PlotState,
     line_width: f32,
     hidden: &[usize],
+    words: &PlotWords<'_>,
 ) -> egui::Rect {
     let tab = match state.tab {
         Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
@@ -103,8 +120,8 @@ pub fn show(
     // The legend never covers data: beside a wide plot, below a narrow one.
     let (plot_rect, legend_rect) = split_for_legend(ui, full, shown.len());
     let plot = Plot::new(("series_plot", format!("{tab:?}")))
-        .x_axis_label("t [s]")
-        .y_axis_label(y_title(rec, &shown, log))
+        .x_axis_label(words.time_axis.clone())
+        .y_axis_label(y_title(rec, &shown, log, &words.mixed_units))
         .y_grid_spacer(nice_marks);
     let rect = ui
         .scope_builder(egui::UiBuilder::new().max_rect(plot_rect), |ui| {
@@ -120,7 +137,7 @@ pub fn show(
                         log,
                         bands: state.show_bands,
                     };
-                    draw_series(plot, rec, *i, style);
+                    draw_series(plot, rec, *i, style, &words.legend);
                 }
             })
             .response
@@ -128,7 +145,7 @@ pub fn show(
         })
         .inner;
     ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
-        legend(ui, rec, &shown, log, state, outages);
+        legend(ui, rec, &shown, (log, state), outages, words);
     });
     ui.advance_cursor_after_rect(full);
     rect
@@ -136,7 +153,7 @@ pub fn show(
 
 /// The y axis' title: the unit the drawn series share (`[°]`, `log10 [°²]`, `[–]` for none),
 /// or "mixed units (see the legend)".
-fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool) -> String {
+fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool, mixed: &str) -> String {
     let mut units = shown.iter().map(|(i, _)| rec.specs()[*i].unit);
     let Some(first) = units.next() else {
         return String::new();
@@ -148,7 +165,7 @@ fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool) -> String {
             format!("[{}]", attlab::model::display_unit(first))
         }
     } else {
-        "mixed units (see the legend)".to_string()
+        mixed.to_string()
     };
     if log { format!("log10 {unit}") } else { unit }
 }
@@ -216,9 +233,9 @@ fn legend(
     ui: &mut Ui,
     rec: &Recorder,
     shown: &[(usize, Color32)],
-    log: bool,
-    state: &PlotState,
+    (log, state): (bool, &PlotState),
     outages: &[Outage],
+    words: &PlotWords<'_>,
 ) {
     let colours = palette::of(ui.visuals());
     let swatch = |ui: &mut Ui, color: Color32, style: LineStyle| {
@@ -231,9 +248,9 @@ fn legend(
         for (i, color) in shown {
             let spec = &rec.specs()[*i];
             let text = if log {
-                format!("log10 {}", spec.legend())
+                format!("log10 {}", (words.legend)(spec))
             } else {
-                spec.legend()
+                (words.legend)(spec)
             };
             ui.horizontal(|ui| {
                 swatch(ui, *color, palette::pattern(spec.source));
@@ -244,7 +261,7 @@ fn legend(
         if state.show_bands && banded && !log {
             ui.horizontal(|ui| {
                 swatch(ui, Color32::GRAY, LineStyle::dashed_loose());
-                ui.label("±3σ of the filter's own covariance");
+                ui.add(egui::Label::new(&words.bands).wrap());
             });
         }
         if state.show_outages {
@@ -253,7 +270,8 @@ fn legend(
                     let (r, _) =
                         ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
                     ui.painter().rect_filled(r, 2.0, outage_color(colours, k));
-                    ui.label(o.label);
+                    let text = words.outages.get(k).map_or(o.label, String::as_str);
+                    ui.add(egui::Label::new(text).wrap());
                 });
             }
         }
@@ -328,10 +346,16 @@ struct LineLook {
 
 /// Series `i`, broken at its missing samples, with its ±3σ band from the variance series it
 /// names (never from its name).
-fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look: LineLook) {
+fn draw_series(
+    plot: &mut egui_plot::PlotUi<'_>,
+    rec: &Recorder,
+    i: usize,
+    look: LineLook,
+    legend: &dyn Fn(&attlab::model::SeriesSpec) -> String,
+) {
     let spec = &rec.specs()[i];
     let mut pts = rec.plot_points(i, MAX_POINTS);
-    let mut label = spec.legend();
+    let mut label = legend(spec);
     if look.log {
         for p in &mut pts {
             p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
@@ -357,7 +381,7 @@ fn draw_series(plot: &mut egui_plot::PlotUi<'_>, rec: &Recorder, i: usize, look:
             .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * scale])
             .collect()
     };
-    let name = format!("{} ±3σ", spec.label);
+    let name = format!("{} ±3σ", legend(spec));
     for sign in [1.0, -1.0] {
         for piece in pieces(plot, &sigma3(sign), LineStyle::dashed_loose()) {
             plot.line(

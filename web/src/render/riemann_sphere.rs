@@ -82,7 +82,7 @@ fn circle_points(f: impl Fn(f64) -> Vector3<f64>) -> impl Iterator<Item = Vector
     (0..=72).map(move |i| f(f64::from(i) * 5f64.to_radians()))
 }
 
-fn draw_grid(pr: &Projector, painter: &Painter) {
+fn draw_grid(pr: &Projector, painter: &Painter, pole: &str) {
     let colours = super::palette::of_ctx(painter.ctx());
     let front = Stroke::new(0.8, colours.grid_front);
     let back = Stroke::new(0.6, colours.grid_back);
@@ -135,7 +135,7 @@ fn draw_grid(pr: &Projector, painter: &Painter) {
     painter.text(
         s + Vec2::new(6.0, 2.0),
         Align2::LEFT_TOP,
-        "S (pole of w)",
+        pole,
         FontId::proportional(12.0),
         colours.highlight,
     );
@@ -183,7 +183,7 @@ pub fn show_sphere(
     rect: Rect,
     view: &mut SphereView,
     tracks: &[SphereTrack],
-    (title, caption): (&str, &str),
+    (title, caption, pole): (&str, &str, &str),
 ) {
     let response = ui.allocate_rect(rect, Sense::click_and_drag());
     if response.double_clicked() {
@@ -211,7 +211,7 @@ pub fn show_sphere(
         Color32::from_rgba_unmultiplied(60, 80, 120, 40),
         Stroke::new(1.2, colours.ink_dim),
     );
-    draw_grid(&pr, &painter);
+    draw_grid(&pr, &painter, pole);
     for t in tracks {
         draw_track(&pr, &painter, t);
     }

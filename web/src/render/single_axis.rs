@@ -192,19 +192,18 @@ pub fn phase_portrait(
     trails: &PhaseTrails,
     sources: &[AxisSource],
     shown: &[bool],
+    (title, angle_axis, rate_axis): (&str, &str, &str),
 ) {
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
-        ui.label(
-            egui::RichText::new("Phase portrait: rate against angle (the recent trail)").small(),
-        );
+        ui.label(egui::RichText::new(title).small());
         let mut portrait = Plot::new("phase_portrait").height((rect.height() - 24.0).max(60.0));
         let (most, tall) = super::riemann_sphere::ROOM_FOR_LEGEND;
         if sources.len() <= most && rect.height() >= tall {
             portrait = portrait.legend(Legend::default().text_style(egui::TextStyle::Small));
         }
         portrait
-            .x_axis_label("angle [°]")
-            .y_axis_label("rate [°/s]")
+            .x_axis_label(angle_axis)
+            .y_axis_label(rate_axis)
             .show(ui, |plot| {
                 for (((name, trail), s), _) in trails
                     .trails

@@ -80,12 +80,10 @@ impl AppState {
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {
                 Some(log) => self.start_replay(log.name.into(), log.text),
-                None => self.error("this lab ships no example log"),
+                None => self.warn("msg-no-example-log", &[]),
             },
             IoCommand::CopyPython => {
-                self.info(
-                    "copied: a Python snippet that loads the exported CSV and draws this plot",
-                );
+                self.say("msg-python-copied", &[]);
                 return Some(Effect::Clipboard(self.python_snippet()));
             }
             IoCommand::ExportPng(target) => return Some(Effect::Png(target)),
@@ -110,7 +108,7 @@ impl AppState {
     /// message, the choice stays).
     fn set_log_unit(&mut self, key: &'static str, value: f64) {
         let Some(format) = self.sim.lab().page().log_format else {
-            return self.error("this lab replays no logs");
+            return self.warn("msg-no-logs", &[]);
         };
         let mut units = self.io.units_for(format);
         match units.set(format.units, key, value) {
@@ -124,16 +122,25 @@ impl AppState {
     /// Parses `text` as the lab's kind of log and replays it.
     fn start_replay(&mut self, name: String, text: &str) {
         let Some(format) = self.sim.lab().page().log_format else {
-            return self.error(format!("{name}: this lab replays no logs"));
+            return self.warn("msg-no-logs-named", &[("name", name.as_str().into())]);
         };
         let log = (format.parse)(text, &self.io.units_for(format));
         const SHOWN: usize = 12;
         for e in log.errors.iter().take(SHOWN) {
-            self.error(format!("{name}: skipped {e}"));
+            self.warn(
+                "msg-log-skipped",
+                &[
+                    ("name", name.as_str().into()),
+                    ("why", e.to_string().into()),
+                ],
+            );
         }
         if log.errors.len() > SHOWN {
             let more = log.errors.len() - SHOWN;
-            self.error(format!("{name}: … and {more} more bad lines"));
+            self.warn(
+                "msg-log-more-bad",
+                &[("name", name.as_str().into()), ("n", more.into())],
+            );
         }
         let samples = log.t_s.len();
         let (lab, params) = (self.sim.lab(), self.sim.params().clone());
@@ -142,10 +149,19 @@ impl AppState {
                 self.drop_jobs();
                 self.sim = sim;
                 self.run.sweep = None;
-                self.info(format!("{name}: replaying {samples} samples"));
+                self.say(
+                    "msg-log-replaying",
+                    &[("name", name.as_str().into()), ("n", samples.into())],
+                );
                 self.io.replaying = Some((name, samples));
             }
-            Err(e) => self.error(format!("{name}: {e}")),
+            Err(e) => self.warn(
+                "msg-log-failed",
+                &[
+                    ("name", name.as_str().into()),
+                    ("why", e.to_string().into()),
+                ],
+            ),
         }
     }
 
@@ -157,14 +173,14 @@ impl AppState {
         });
         match message {
             Ok(m) => self.info(m),
-            Err(e) => self.error(format!("export failed: {e}")),
+            Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
         }
     }
 
     fn export_output_file(&mut self) {
         let lab = self.sim.lab();
         let Some(file) = lab.output_file(self.sim.params()) else {
-            return self.error("this lab has no output file of its paper");
+            return self.warn("msg-no-output-file", &[]);
         };
         let mut buf = Vec::new();
         let duration = self.sim.t_s().max(lab.default_duration_s());
@@ -173,12 +189,12 @@ impl AppState {
         let params = self.sim.params().clone();
         let result = attlab::sim::write_output_file(lab, params, seed, duration, &file, &mut buf)
             .map(|(rows, stopped)| {
-                let tail = if stopped {
-                    ", to the first row within tolerance"
+                let id = if stopped {
+                    "msg-output-rows-stopped"
                 } else {
-                    ""
+                    "msg-output-rows"
                 };
-                format!("{rows} rows{tail}")
+                self.word(id, &[("n", rows.into())])
             });
         self.save(&name, buf, result);
     }

@@ -55,7 +55,7 @@ impl AppState {
                 self.sim.release_recorder();
                 self.start_job(Purpose::Reselect, rerun);
             }
-            Err(e) => self.error(format!("cannot show this plot: {e}")),
+            Err(e) => self.warn("msg-plot-failed", &[("why", e.to_string().into())]),
         }
     }
 
@@ -67,7 +67,7 @@ impl AppState {
             .iter()
             .any(|j| matches!(j.purpose, Purpose::ExportCsv { .. }))
         {
-            return self.error("an export is under way: one at a time");
+            return self.warn("msg-export-busy", &[]);
         }
         let name = self.csv_name();
         let made = self
@@ -85,7 +85,7 @@ impl AppState {
                 let sink = Box::new(sink);
                 self.start_job(Purpose::ExportCsv { name, sink }, rerun)
             }
-            Err(e) => self.error(format!("export failed: {e}")),
+            Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
         }
     }
 
@@ -124,7 +124,7 @@ impl AppState {
     fn restore_recorder(&mut self) {
         let previous = self.sim.options().selection.clone();
         if let Err(e) = self.sim.reselect(previous) {
-            self.error(format!("the plots lost their history: {e}"));
+            self.warn("msg-plots-lost", &[("why", e.to_string().into())]);
         }
     }
 
@@ -157,32 +157,33 @@ impl AppState {
         match (job.purpose, outcome) {
             (Purpose::Reselect, Ok(())) => {
                 if let Err(e) = self.sim.adopt(job.rerun) {
-                    self.error(format!("cannot show this plot: {e}"));
+                    self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
                     self.restore_recorder();
                 } else if ms > 1000.0 {
                     let t_s = self.sim.t_s();
-                    self.info(format!(
-                        "re-ran {t_s:.0} s of simulation for this plot in {ms:.0} ms"
-                    ));
+                    let args = [
+                        ("t", format!("{t_s:.0}").into()),
+                        ("ms", format!("{ms:.0}").into()),
+                    ];
+                    self.say("msg-rerun-took", &args);
                 }
             }
             (Purpose::Reselect, Err(e)) => {
-                self.error(format!("cannot show this plot: {e}"));
+                self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
                 self.restore_recorder();
             }
             (Purpose::ExportCsv { name, sink }, Ok(())) => {
-                let result = sink.into_inner().map(|(bytes, rows)| {
-                    (
-                        bytes,
-                        format!("{rows} rows, every sample, re-run from t = 0"),
-                    )
-                });
+                let result = sink
+                    .into_inner()
+                    .map(|(bytes, rows)| (bytes, self.word("msg-csv-rows", &[("n", rows.into())])));
                 match result {
                     Ok((bytes, what)) => self.save(&name, bytes, Ok(what)),
-                    Err(e) => self.error(format!("export failed: {e}")),
+                    Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
                 }
             }
-            (Purpose::ExportCsv { .. }, Err(e)) => self.error(format!("export failed: {e}")),
+            (Purpose::ExportCsv { .. }, Err(e)) => {
+                self.warn("msg-export-failed", &[("why", e.to_string().into())]);
+            }
         }
     }
 }

@@ -13,12 +13,14 @@
 
 mod io;
 mod jobs;
+mod link_words;
 mod run;
 mod url;
 mod view;
 
 pub use io::{IoCommand, IoState};
 pub use jobs::Job;
+pub use link_words::link_problem;
 pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
 pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};
@@ -135,6 +137,9 @@ pub struct AppState {
     io: IoState,
     url: url::UrlSync,
     messages: Vec<Message>,
+    /// The bad items of the link the page opened with, in words (shown at the top until
+    /// dismissed).
+    link_problems: Vec<String>,
 }
 
 impl AppState {
@@ -148,6 +153,7 @@ impl AppState {
             io: IoState::default(),
             url: url::UrlSync::default(),
             messages: Vec::new(),
+            link_problems: Vec::new(),
         }
     }
 
@@ -160,11 +166,8 @@ impl AppState {
         state.view.theme = url.theme;
         state.view.lang = url.lang;
         state.view.browser_lang = crate::platform::browser_lang();
-        state.messages.extend(
-            errors
-                .into_iter()
-                .map(|e| Message::error(format!("{e} — ignored"))),
-        );
+        let lang = state.view.lang();
+        state.link_problems = errors.iter().map(|e| link_problem(lang, lab, e)).collect();
         state
     }
 
@@ -188,7 +191,12 @@ impl AppState {
         &self.io
     }
 
-    /// Messages for the user.
+    /// The bad items of the link the page opened with, in words.
+    pub fn link_problems(&self) -> &[String] {
+        &self.link_problems
+    }
+
+    /// Messages, oldest first.
     pub fn messages(&self) -> &[Message] {
         &self.messages
     }
@@ -217,5 +225,22 @@ impl AppState {
 
     fn error(&mut self, text: impl Into<String>) {
         self.messages.push(Message::error(text));
+    }
+
+    /// The page's message `id` in the reader's language.
+    fn word(&self, id: &str, args: &[(&str, attlab::i18n::FluentValue<'_>)]) -> String {
+        attlab::i18n::t_with(self.view.lang(), id, args)
+    }
+
+    /// An information message from the catalogue.
+    fn say(&mut self, id: &str, args: &[(&str, attlab::i18n::FluentValue<'_>)]) {
+        let text = self.word(id, args);
+        self.info(text);
+    }
+
+    /// An error message from the catalogue.
+    fn warn(&mut self, id: &str, args: &[(&str, attlab::i18n::FluentValue<'_>)]) {
+        let text = self.word(id, args);
+        self.error(text);
     }
 }

@@ -190,11 +190,14 @@ impl AppState {
             self.apply_run(RunCommand::SetParam(k, *v));
         }
         let waiting = self.sim.pending_reset();
-        self.info(if waiting.is_empty() {
-            format!("preset {} applied", preset.name)
+        let id = attlab::i18n::preset_id(lab.id(), i);
+        let name = attlab::i18n::lab_text(self.view.lang(), &id, preset.name);
+        let message = if waiting.is_empty() {
+            "msg-preset-applied"
         } else {
-            format!("preset {}: some values apply at Reset", preset.name)
-        });
+            "msg-preset-waits"
+        };
+        self.say(message, &[("name", name.into())]);
     }
 
     fn start_sweep(&mut self, i: usize) {

@@ -22,6 +22,8 @@ pub enum UrlCommand {
     Sync,
     /// Load lab, seed, speed, presenter mode and parameters from a link's fragment.
     Load(String),
+    /// Hide the link's bad items.
+    DismissProblems,
 }
 
 impl AppState {
@@ -34,6 +36,7 @@ impl AppState {
             }
             UrlCommand::Sync => self.sync_url(),
             UrlCommand::Load(fragment) => self.load_fragment(&fragment),
+            UrlCommand::DismissProblems => self.link_problems.clear(),
         }
         None
     }

@@ -174,7 +174,7 @@ impl AppState {
             // A PNG capture shows each tab for a few frames with the run held: re-run at
             // once, so the picture has the tab's whole history.
             if let Err(e) = self.sim.reselect(selection) {
-                self.error(format!("cannot show this plot: {e}"));
+                self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
             }
         } else {
             self.start_reselect(selection);

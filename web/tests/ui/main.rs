@@ -151,7 +151,8 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
         "J(α = 0.7, β = 0.3)",
         "J(α = 0.5, β = 0.5)",
     ] {
-        let label = format!("argmin of {pair}: gamma = ");
+        // The parameter by its label, as the slider shows it (not its key `gamma`).
+        let label = format!("argmin of {pair} over this sweep's 11 values: γ = det Q / det R = ");
         assert!(
             h.query_all_by_label_contains(&label).next().is_some(),
             "no '{label}' on the panel"
@@ -306,19 +307,24 @@ fn copy_as_python_names_the_csv_and_the_tabs_columns() {
     }
 }
 
-/// One click on an estimator's chip hides it everywhere; a second shows it again.
+/// One click on an estimator's chip hides it everywhere; a second shows it again. The chip
+/// names the estimator as a student reads it, not by its id.
 #[test]
 fn an_estimator_chip_hides_and_shows_it() {
     let mut h = harness("p4");
     h.run();
-    h.get_by_label_contains("● cf").click();
+    assert!(
+        h.query_by_label_contains("● cf").is_none(),
+        "a chip shows an id"
+    );
+    h.get_by_label_contains("● Complementary filter").click();
     h.run();
     assert_eq!(
         h.state().state.view().hidden,
         vec![2],
         "cf is the second estimator: source 2"
     );
-    h.get_by_label_contains("● cf").click();
+    h.get_by_label_contains("● Complementary filter").click();
     h.run();
     assert!(h.state().state.view().hidden.is_empty());
 }

@@ -2,6 +2,7 @@
 
 use attlab::analysis::fuzz::{self, FuzzConfig};
 use attlab::analysis::readme;
+use attlab::i18n::{self, Lang};
 use attlab::labs;
 use attlab::model::{Lab, ParamKind, Reproduction};
 use clap::{Parser, Subcommand};
@@ -25,7 +26,11 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// List the labs and their parameters.
-    Labs,
+    Labs {
+        /// Language of the labels and help: `en` or `ru` (the flags stay as written).
+        #[arg(long, default_value = "en")]
+        lang: String,
+    },
     /// Run a lab's paper scenarios and print measured numbers beside the paper's: each row
     /// is a measurement, or a check that matches or (declared, with the reason) differs.
     Reproduce {
@@ -124,10 +129,13 @@ enum Command {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Labs => {
-            list_labs();
-            Ok(true)
-        }
+        Command::Labs { lang } => match Lang::from_tag(&lang) {
+            Some(lang) => {
+                print!("{}", lab_listing(lang));
+                Ok(true)
+            }
+            None => Err(format!("--lang {lang}: the languages are en and ru")),
+        },
         Command::Reproduce {
             lab,
             json,
@@ -197,29 +205,54 @@ fn find_lab(id: &str) -> Result<&'static dyn Lab, String> {
     labs::find(id).ok_or_else(|| format!("no lab `{id}`; labs: {}", labs::ids()))
 }
 
-fn list_labs() {
+/// Every lab with its presets and parameters: the flags as the CLI takes them, the words in
+/// `lang` (labels, help and choices from the message catalogue, as the page shows them).
+fn lab_listing(lang: Lang) -> String {
+    use std::fmt::Write as _;
+    let mut out = String::new();
     for lab in labs::all() {
-        println!("{} — {}\n  paper: {}", lab.id(), lab.title(), lab.paper());
-        for p in lab.presets() {
-            println!("  --preset {:?} ({})", p.name, p.help);
+        let id = lab.id();
+        let word = |msg: &str, english: &str| i18n::lab_text(lang, msg, english);
+        let title = word(&i18n::lab_title_id(id), lab.title());
+        let paper = i18n::t(lang, "cli-paper");
+        let _ = writeln!(out, "{id} — {title}\n  {paper}: {}", lab.paper());
+        for (i, p) in lab.presets().iter().enumerate() {
+            let name = word(&i18n::preset_id(id, i), p.name);
+            let help = word(&i18n::preset_help_id(id, i), p.help);
+            let shown = if name == p.name {
+                String::new()
+            } else {
+                format!("{name}: ")
+            };
+            let _ = writeln!(out, "  --preset {:?} ({shown}{help})", p.name);
         }
         for p in lab.params() {
             let range = match p.kind {
                 ParamKind::Choice(options) => options
                     .iter()
                     .enumerate()
-                    .map(|(i, o)| format!("{i} = {o}"))
+                    .map(|(i, o)| {
+                        let words = word(&i18n::param_option_id(id, p.key, i), o);
+                        if words == *o {
+                            format!("{i} = {o}")
+                        } else {
+                            format!("{i} = {o} ({words})")
+                        }
+                    })
                     .collect::<Vec<_>>()
                     .join(" | "),
                 ParamKind::Toggle => "0 | 1".to_string(),
                 _ => format!("{} … {} {}", p.min, p.max, p.unit),
             };
-            println!(
-                "  --set {}=<{range}> (default {}) {}",
-                p.key, p.default, p.label
+            let label = word(&i18n::param_label_id(id, p.key), p.label);
+            let _ = writeln!(
+                out,
+                "  --set {}=<{range}> (default {}) {label}",
+                p.key, p.default
             );
         }
     }
+    out
 }
 
 fn reproduce(
@@ -288,4 +321,18 @@ fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
         println!("FAIL {f}");
     }
     report.failures.is_empty()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_listing_speaks_russian_and_keeps_the_flags() {
+        let (en, ru) = (lab_listing(Lang::En), lab_listing(Lang::Ru));
+        assert!(en.contains("--set gyro_noise_deg_s=") && en.contains("Gyro noise σ"));
+        assert!(ru.contains("--set gyro_noise_deg_s=") && ru.contains("Шум гироскопа σ"));
+        assert!(ru.contains("Статья 1"), "lab titles in Russian");
+        assert_eq!(en.lines().count(), ru.lines().count());
+    }
 }

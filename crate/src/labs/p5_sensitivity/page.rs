@@ -96,10 +96,12 @@ pub(super) fn diagrams(p: &ParamValues) -> Vec<Diagram> {
     let mut points = Vec::new();
     // Each point takes the colour of the filter whose update it linearises (the
     // re-integrating variant's for "(11) and variant", Method::Reintegrate).
+    // The points are notation only ("(11) λ1"): (11) and the re-integrating variant share
+    // one linearised update, drawn in the variant's colour.
     for (name, method, source) in [
         ("(9)", Method::Plain, "gn9"),
         ("(10)", Method::Regularised, "lm10"),
-        ("(11) and variant", Method::Reintegrate, "reint"),
+        ("(11)", Method::Reintegrate, "reint"),
     ] {
         for (k, l) in linearised_eigenvalues(method, dt, eps).iter().enumerate() {
             points.push(DiagramPoint {
@@ -110,7 +112,8 @@ pub(super) fn diagrams(p: &ParamValues) -> Vec<Diagram> {
         }
     }
     vec![Diagram {
-        title: format!("Eigenvalues of the linearised update (Δt = {dt} s, ε = {eps})"),
+        title: "Eigenvalues of the linearised update",
+        detail: format!("Δt = {dt} s, ε = {eps}"),
         unit_circle: true,
         points,
     }]

@@ -8,9 +8,12 @@
 //! id, so the gap is visible. The tests below fail when either language lacks a message the
 //! other has, and the page's own test fails when a message it asks for exists in neither.
 
+mod series;
+
 pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
+pub use series::{compose, estimator_id, estimator_name, quantity_id, series_label, series_legend};
 use std::sync::OnceLock;
 
 /// A language of the page.
@@ -60,28 +63,44 @@ impl Lang {
     /// The page's own messages: each in every language.
     fn sources(self) -> &'static [&'static str] {
         match self {
-            Self::En => &[include_str!("../locales/en/page.ftl")],
-            Self::Ru => &[include_str!("../locales/ru/page.ftl")],
+            Self::En => &[
+                include_str!("../../locales/en/page.ftl"),
+                include_str!("../../locales/en/series.ftl"),
+            ],
+            Self::Ru => &[
+                include_str!("../../locales/ru/page.ftl"),
+                include_str!("../../locales/ru/series.ftl"),
+            ],
         }
     }
 
     /// Translations of what the labs say in English in their code (see [`lab_text`]).
     fn lab_sources(self) -> &'static [&'static str] {
         match self {
-            Self::En => &[],
-            Self::Ru => &[include_str!("../locales/ru/labs.ftl")],
+            Self::En => &[include_str!("../../locales/en/units.ftl")],
+            Self::Ru => &[
+                include_str!("../../locales/ru/units.ftl"),
+                include_str!("../../locales/ru/labs.ftl"),
+                include_str!("../../locales/ru/hints.ftl"),
+                include_str!("../../locales/ru/quantities.ftl"),
+                include_str!("../../locales/ru/studies.ftl"),
+            ],
         }
     }
 }
 
 /// A lab's own words in `lang`: the lab writes them in English (its code holds them), and a
-/// translation is the message `id` of the language's `labs.ftl` (`lab-p1-title`); without
-/// one, the English.
+/// translation is the message `id` of the language's lab files (`lab-p1-title`). Where the
+/// code's English is a code rather than words (a log's unit choice `deg_s`, which the CLI
+/// takes as written), the English lab files give the words the page shows (`°/s`). Without
+/// either, the code's English.
 pub fn lab_text(lang: Lang, id: &str, english: &str) -> String {
-    if lang == Lang::En || !has(lang, id) {
-        return english.to_string();
+    for l in [lang, Lang::En] {
+        if has(l, id) {
+            return t(l, id);
+        }
     }
-    t(lang, id)
+    english.to_string()
 }
 
 /// The id of a lab's title in the catalogue.
@@ -114,27 +133,147 @@ pub fn preset_id(lab_id: &str, index: usize) -> String {
     format!("lab-{lab_id}-preset-{index}")
 }
 
+/// The id of the hover help of a lab's parameter `key`.
+pub fn param_help_id(lab_id: &str, key: &str) -> String {
+    format!("lab-{lab_id}-param-{key}-help")
+}
+
+/// The id of the hover help of a lab's preset `index`.
+pub fn preset_help_id(lab_id: &str, index: usize) -> String {
+    format!("lab-{lab_id}-preset-{index}-help")
+}
+
+/// The id of the label of a lab's outage `index` (the plots' shading).
+pub fn outage_id(lab_id: &str, index: usize) -> String {
+    format!("lab-{lab_id}-outage-{index}")
+}
+
+/// The id of a word of a lab's sweep `index`: `part` is `title`, `help`, `score-<j>`,
+/// `objective-<j>`, `log-help`, `log-score-<j>` or `log-objective-<j>`.
+pub fn sweep_id(lab_id: &str, index: usize, part: &str) -> String {
+    format!("lab-{lab_id}-sweep-{index}-{part}")
+}
+
+/// The id of the title of a lab's diagram `index`.
+pub fn diagram_id(lab_id: &str, index: usize) -> String {
+    format!("lab-{lab_id}-diagram-{index}")
+}
+
+/// The id of the title of a lab's live accuracy table.
+pub fn accuracy_title_id(lab_id: &str) -> String {
+    format!("lab-{lab_id}-accuracy-title")
+}
+
+/// The id of the label of a reference direction a lab draws in the 3D view ("sun").
+pub fn scene_id(lab_id: &str, label: &str) -> String {
+    let slug: String = label
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    format!("lab-{lab_id}-scene-{slug}")
+}
+
+/// The id of a word of a lab's log format: `part` is `name`, `title`, `help` or `load`.
+pub fn log_format_id(lab_id: &str, part: &str) -> String {
+    format!("lab-{lab_id}-log-{part}")
+}
+
 /// Every word a lab gives in English that a translation can take: `(id, English)` — its
-/// title, its summary, each parameter's label, each choice's options, each preset's name.
-pub fn lab_words(lab: &dyn crate::model::Lab) -> Vec<(String, &'static str)> {
+/// title, summary, parameters (label, options, help), presets (name, help), plot tabs,
+/// outages, sweeps (title, help, scores, objectives), log format, and (see
+/// [`series::lab_series_words`]) its estimators' names and its series' quantities.
+pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static str)> {
     let id = lab.id();
     let mut out = vec![
         (lab_title_id(id), lab.title()),
         (lab_summary_id(id), lab.summary()),
     ];
     for spec in lab.params() {
-        out.push((param_label_id(id, spec.key), spec.label));
-        if let crate::model::ParamKind::Choice(options) = spec.kind {
-            for (i, option) in options.iter().enumerate() {
-                out.push((param_option_id(id, spec.key, i), *option));
-            }
-        }
+        out.extend(param_words(id, spec));
     }
     for (i, preset) in lab.presets().iter().enumerate() {
         out.push((preset_id(id, i), preset.name));
+        out.push((preset_help_id(id, i), preset.help));
     }
-    for (i, figure) in lab.page().figures.iter().enumerate() {
+    let page = lab.page();
+    for (i, figure) in page.figures.iter().enumerate() {
         out.push((figure_id(id, i), figure.title));
+    }
+    for (i, outage) in page.outages.iter().enumerate() {
+        out.push((outage_id(id, i), outage.label));
+    }
+    for (i, sweep) in lab.sweeps().iter().enumerate() {
+        out.extend(sweep_words(id, i, sweep));
+    }
+    for (i, d) in page.diagrams(&defaults(lab)).iter().enumerate() {
+        out.push((diagram_id(id, i), d.title));
+    }
+    if let Some(table) = lab.accuracy_table() {
+        out.push((accuracy_title_id(id), table.title));
+    }
+    if let Some(f) = page.log_format {
+        for spec in f.units {
+            out.extend(param_words(id, spec));
+        }
+        for (part, english) in [
+            ("name", f.name),
+            ("title", f.title),
+            ("help", f.help),
+            ("load", f.load_label),
+        ] {
+            out.push((log_format_id(id, part), english));
+        }
+    }
+    out.extend(series::lab_series_words(lab));
+    // An empty English text (a parameter without help) has nothing to translate.
+    out.retain(|(_, english)| !english.is_empty());
+    out
+}
+
+/// A parameter's words: its label, its help, its choices.
+fn param_words(lab_id: &str, spec: &crate::model::ParamSpec) -> Vec<(String, &'static str)> {
+    let mut out = vec![
+        (param_label_id(lab_id, spec.key), spec.label),
+        (param_help_id(lab_id, spec.key), spec.help),
+    ];
+    if let crate::model::ParamKind::Choice(options) = spec.kind {
+        for (i, option) in options.iter().enumerate() {
+            out.push((param_option_id(lab_id, spec.key, i), *option));
+        }
+    }
+    out
+}
+
+/// A lab's default parameters.
+fn defaults(lab: &dyn crate::model::Lab) -> crate::model::ParamValues {
+    crate::model::ParamValues::defaults(lab.params())
+}
+
+/// The words of a lab's sweep `i`.
+fn sweep_words(
+    lab_id: &str,
+    i: usize,
+    sweep: &crate::model::SweepSpec,
+) -> Vec<(String, &'static str)> {
+    let mut out = vec![(sweep_id(lab_id, i, "title"), sweep.title)];
+    for (prefix, scoring) in [("", sweep.scoring), ("log-", sweep.log_scoring)] {
+        let Some(scoring) = scoring else { continue };
+        out.push((sweep_id(lab_id, i, &format!("{prefix}help")), scoring.help));
+        for (j, name) in scoring.names.iter().enumerate() {
+            out.push((sweep_id(lab_id, i, &format!("{prefix}score-{j}")), *name));
+        }
+        for (j, (name, _)) in scoring.objectives.iter().enumerate() {
+            out.push((
+                sweep_id(lab_id, i, &format!("{prefix}objective-{j}")),
+                *name,
+            ));
+        }
     }
     out
 }
@@ -199,110 +338,4 @@ fn format(lang: Lang, id: &str, args: Option<&FluentArgs<'_>>) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use std::collections::BTreeSet;
-
-    /// The ids of `lang`'s messages, after checking its files parse without an error and
-    /// hold no id twice.
-    fn ids(lang: Lang) -> BTreeSet<String> {
-        let mut out = BTreeSet::new();
-        for source in lang.sources() {
-            let resource = match FluentResource::try_new((*source).to_string()) {
-                Ok(r) => r,
-                Err((_, errors)) => panic!("{}: syntax errors {errors:?}", lang.code()),
-            };
-            for entry in resource.entries() {
-                if let fluent_syntax::ast::Entry::Message(m) = entry {
-                    let id = m.id.name.to_string();
-                    assert!(out.insert(id.clone()), "{}: `{id}` twice", lang.code());
-                }
-            }
-        }
-        out
-    }
-
-    #[test]
-    fn every_message_is_in_both_languages() {
-        let (en, ru) = (ids(Lang::En), ids(Lang::Ru));
-        let only_en: Vec<_> = en.difference(&ru).collect();
-        let only_ru: Vec<_> = ru.difference(&en).collect();
-        assert!(only_en.is_empty(), "missing in Russian: {only_en:?}");
-        assert!(only_ru.is_empty(), "missing in English: {only_ru:?}");
-        assert!(en.len() > 50, "{} messages", en.len());
-    }
-
-    #[test]
-    fn every_message_formats_without_an_error_in_both() {
-        for lang in Lang::ALL {
-            let b = bundle(lang);
-            for id in ids(lang) {
-                let pattern = b.get_message(&id).and_then(|m| m.value());
-                let pattern = pattern.unwrap_or_else(|| panic!("{id} has no value"));
-                let mut args = FluentArgs::new();
-                let words = ["help", "names", "n", "name", "title", "label", "ids", "t"];
-                let more = ["lab", "state", "speed", "error", "band"];
-                for name in words.into_iter().chain(more) {
-                    args.set(name, "x");
-                }
-                for name in ["realtime", "asked", "step", "rate", "frame", "sim", "mib"] {
-                    args.set(name, "1");
-                }
-                for name in ["series", "id", "why"] {
-                    args.set(name, "y");
-                }
-                let mut errors = Vec::new();
-                let text = b.format_pattern(pattern, Some(&args), &mut errors);
-                assert!(errors.is_empty(), "{}: {id}: {errors:?}", lang.code());
-                assert!(!text.trim().is_empty(), "{}: {id} is empty", lang.code());
-            }
-        }
-    }
-
-    #[test]
-    fn a_message_is_looked_up_then_falls_back_to_english_then_to_its_id() {
-        assert_eq!(t(Lang::En, "pause"), "Pause");
-        assert_eq!(t(Lang::Ru, "pause"), "Пауза");
-        assert_eq!(t(Lang::Ru, "no-such-message"), "no-such-message");
-        let with = t_with(Lang::Ru, "more-estimators", &[("n", 3.into())]);
-        assert_eq!(with, "ещё 3…");
-    }
-
-    #[test]
-    fn every_word_of_every_lab_is_translated_and_nothing_else_is_there() {
-        let mut derived = BTreeSet::new();
-        let mut missing = Vec::new();
-        for lab in crate::labs::all() {
-            for (id, english) in lab_words(*lab) {
-                if !has(Lang::Ru, &id) {
-                    missing.push(format!("{id} ({english})"));
-                }
-                assert_eq!(lab_text(Lang::En, &id, english), english);
-                derived.insert(id);
-            }
-        }
-        assert!(missing.is_empty(), "no Russian for {missing:#?}");
-        assert_ne!(lab_text(Lang::Ru, &lab_title_id("p1"), "x"), "x");
-        for source in Lang::Ru.lab_sources() {
-            let resource = FluentResource::try_new((*source).to_string()).expect("parses");
-            for entry in resource.entries() {
-                if let fluent_syntax::ast::Entry::Message(m) = entry {
-                    assert!(
-                        derived.contains(m.id.name),
-                        "stale translation `{}`",
-                        m.id.name
-                    );
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn the_readers_language_is_the_first_the_page_speaks() {
-        assert_eq!(Lang::negotiate(["de-DE", "ru-RU", "en"]), Lang::Ru);
-        assert_eq!(Lang::negotiate(["fr"]), Lang::En);
-        assert_eq!(Lang::from_tag("RU"), Some(Lang::Ru));
-        assert_eq!(Lang::from_tag("en_GB"), Some(Lang::En));
-        assert_eq!(Lang::from_tag(""), None);
-    }
-}
+mod tests;

@@ -1,0 +1,170 @@
+//! The catalogue's tests: both languages complete, every message formats, every lab word
+//! translated.
+use super::*;
+use std::collections::BTreeSet;
+
+/// The ids of `lang`'s messages, after checking its files parse without an error and
+/// hold no id twice.
+fn ids(lang: Lang) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for source in lang.sources() {
+        let resource = match FluentResource::try_new((*source).to_string()) {
+            Ok(r) => r,
+            Err((_, errors)) => panic!("{}: syntax errors {errors:?}", lang.code()),
+        };
+        for entry in resource.entries() {
+            if let fluent_syntax::ast::Entry::Message(m) = entry {
+                let id = m.id.name.to_string();
+                assert!(out.insert(id.clone()), "{}: `{id}` twice", lang.code());
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_message_is_in_both_languages() {
+    let (en, ru) = (ids(Lang::En), ids(Lang::Ru));
+    let only_en: Vec<_> = en.difference(&ru).collect();
+    let only_ru: Vec<_> = ru.difference(&en).collect();
+    assert!(only_en.is_empty(), "missing in Russian: {only_en:?}");
+    assert!(only_ru.is_empty(), "missing in English: {only_ru:?}");
+    assert!(en.len() > 50, "{} messages", en.len());
+}
+
+#[test]
+fn every_message_formats_without_an_error_in_both() {
+    for lang in Lang::ALL {
+        let b = bundle(lang);
+        for id in ids(lang) {
+            let pattern = b.get_message(&id).and_then(|m| m.value());
+            let pattern = pattern.unwrap_or_else(|| panic!("{id} has no value"));
+            let mut args = FluentArgs::new();
+            let words = ["help", "names", "n", "name", "title", "label", "ids", "t"];
+            let more = [
+                "lab", "state", "speed", "error", "band", "a", "b", "axis", "covered", "window",
+                "at", "param", "value", "rms", "lo", "hi", "best", "s", "ms", "item", "range",
+                "kept",
+            ];
+            for name in words.into_iter().chain(more) {
+                args.set(name, "x");
+            }
+            for name in ["realtime", "asked", "step", "rate", "frame", "sim", "mib"] {
+                args.set(name, "1");
+            }
+            for name in ["series", "id", "why"] {
+                args.set(name, "y");
+            }
+            // Plural selectors take numbers.
+            args.set("cells", 3);
+            args.set("seeds", 2);
+            let mut errors = Vec::new();
+            let text = b.format_pattern(pattern, Some(&args), &mut errors);
+            assert!(errors.is_empty(), "{}: {id}: {errors:?}", lang.code());
+            assert!(!text.trim().is_empty(), "{}: {id} is empty", lang.code());
+        }
+    }
+}
+
+#[test]
+fn a_message_is_looked_up_then_falls_back_to_english_then_to_its_id() {
+    assert_eq!(t(Lang::En, "pause"), "Pause");
+    assert_eq!(t(Lang::Ru, "pause"), "Пауза");
+    assert_eq!(t(Lang::Ru, "no-such-message"), "no-such-message");
+    let with = t_with(Lang::Ru, "more-estimators", &[("n", 3.into())]);
+    assert_eq!(with, "ещё 3…");
+}
+
+#[test]
+fn every_word_of_every_lab_is_translated_and_nothing_else_is_there() {
+    let mut derived = BTreeSet::new();
+    let mut missing = Vec::new();
+    for lab in crate::labs::all() {
+        for (id, english) in lab_words(*lab) {
+            if !has(Lang::Ru, &id) {
+                missing.push(format!("{id} ({english})"));
+            }
+            // The code's English, or the English lab files' words for a code.
+            if !has(Lang::En, &id) {
+                assert_eq!(lab_text(Lang::En, &id, english), english);
+            }
+            derived.insert(id);
+        }
+    }
+    assert!(missing.is_empty(), "no Russian for {missing:#?}");
+    assert_ne!(lab_text(Lang::Ru, &lab_title_id("p1"), "x"), "x");
+    for source in Lang::ALL.iter().flat_map(|l| l.lab_sources()) {
+        let resource = FluentResource::try_new((*source).to_string()).expect("parses");
+        for entry in resource.entries() {
+            if let fluent_syntax::ast::Entry::Message(m) = entry {
+                assert!(
+                    derived.contains(m.id.name),
+                    "stale translation `{}`",
+                    m.id.name
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_readers_language_is_the_first_the_page_speaks() {
+    assert_eq!(Lang::negotiate(["de-DE", "ru-RU", "en"]), Lang::Ru);
+    assert_eq!(Lang::negotiate(["fr"]), Lang::En);
+    assert_eq!(Lang::from_tag("RU"), Some(Lang::Ru));
+    assert_eq!(Lang::from_tag("en_GB"), Some(Lang::En));
+    assert_eq!(Lang::from_tag(""), None);
+}
+
+/// Every series of every lab (defaults and presets) composes from its key in English to
+/// exactly the label the core gave it, and composes in Russian.
+#[test]
+fn every_series_label_composes_from_its_key_in_both_languages() {
+    let mut wrong = Vec::new();
+    for lab in crate::labs::all() {
+        let sim =
+            crate::sim::Simulation::new(*lab, crate::model::ParamValues::defaults(lab.params()), 1);
+        for spec in sim.available_specs() {
+            match compose(Lang::En, lab.id(), spec) {
+                Some(en) if en == spec.label => {}
+                other => wrong.push(format!(
+                    "{}: {} `{}` composes as {other:?}",
+                    lab.id(),
+                    spec.name,
+                    spec.label
+                )),
+            }
+            if compose(Lang::Ru, lab.id(), spec).is_none() {
+                wrong.push(format!(
+                    "{}: {} `{}` has no Russian",
+                    lab.id(),
+                    spec.name,
+                    spec.label
+                ));
+            }
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "{} series:\n{}",
+        wrong.len(),
+        wrong.join("\n")
+    );
+}
+
+/// A quantity key names one thing: the same key never carries two labels (its translation
+/// is keyed by it).
+#[test]
+fn one_quantity_key_has_one_label() {
+    let mut labels: std::collections::BTreeMap<String, BTreeSet<&str>> = Default::default();
+    for lab in crate::labs::all() {
+        for (id, english) in series::lab_series_words(*lab) {
+            if id.starts_with("q-") {
+                labels.entry(id).or_default().insert(english);
+            }
+        }
+    }
+    let twice: Vec<_> = labels.iter().filter(|(_, l)| l.len() > 1).collect();
+    assert!(twice.is_empty(), "keys with two labels: {twice:#?}");
+    assert!(labels.len() > 40, "{} quantities", labels.len());
+}

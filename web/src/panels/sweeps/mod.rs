@@ -1,0 +1,280 @@
+//! The lab's sweeps: run/cancel with a progress bar (computed a slice per frame), then the
+//! result as a plot and a table — RMS against the swept value; the lab's scores with each
+//! objective's curve and argmin (paper 4's J(γ)); or, for a two-parameter grid, a heat map
+//! with the lab's lines over it and the optimum marked (paper 4's Q landscape).
+
+mod heat;
+mod words;
+
+use super::{arg, lab_word, tr, tr_with};
+use crate::state::{AppState, Command, RunCommand};
+use attlab::analysis::sweep::{Sweep, SweepPoint};
+use attlab::i18n;
+use attlab::model::{SweepSpec, fmt_sig};
+use egui::{RichText, Ui};
+use egui_plot::{Legend, Line, Plot, Points};
+use heat::heat_map;
+use words::Words;
+
+/// The lab's sweeps.
+pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    for (i, spec) in app.sim().lab().sweeps().iter().enumerate() {
+        let title = lab_word(
+            app,
+            &i18n::sweep_id(app.sim().lab().id(), i, "title"),
+            spec.title,
+        );
+        egui::CollapsingHeader::new(tr_with(app, "sweep-title", &[("title", arg(title))]))
+            .default_open(true)
+            .show(ui, |ui| {
+                let running = app
+                    .run()
+                    .sweep
+                    .as_ref()
+                    .filter(|(j, _)| *j == i)
+                    .map(|(_, s)| s);
+                controls(ui, app, spec, i, running, commands);
+                let Some(s) = running else { return };
+                problems(ui, app, s);
+                match (spec.grid, s.scoring()) {
+                    (Some(_), Some(_)) => heat_map(ui, app, s, i),
+                    (None, Some(_)) => {
+                        objective_plot(ui, app, s, i);
+                        score_table(ui, app, s, i);
+                    }
+                    _ => rms_plot(ui, app, s, i),
+                }
+            });
+    }
+}
+
+fn controls(
+    ui: &mut Ui,
+    app: &AppState,
+    spec: &SweepSpec,
+    i: usize,
+    running: Option<&Sweep>,
+    commands: &mut Vec<Command>,
+) {
+    let on_log = app.sim().replay_log().is_some() && spec.log_scoring.is_some();
+    match running {
+        Some(s) if !s.is_done() => {
+            ui.horizontal(|ui| {
+                ui.add(
+                    egui::ProgressBar::new(s.progress() as f32)
+                        .show_percentage()
+                        .desired_width(180.0),
+                );
+                if ui.button(tr(app, "cancel")).clicked() {
+                    commands.push(Command::from(RunCommand::CancelSweep));
+                }
+            });
+        }
+        _ => {
+            let (label, hover) = if on_log {
+                ("sweep-run-log", "sweep-run-log-hint")
+            } else {
+                ("sweep-run", "sweep-run-hint")
+            };
+            if ui
+                .button(tr(app, label))
+                .on_hover_text(tr(app, hover))
+                .clicked()
+            {
+                commands.push(Command::from(RunCommand::RunSweep(i)));
+            }
+        }
+    }
+    let cells = spec.values.len() * spec.grid.map_or(1, |g| g.values.len());
+    let seeds = if on_log { 1 } else { spec.seeds.max(1) };
+    let size = tr_with(
+        app,
+        if spec.grid.is_some() {
+            "sweep-size-grid"
+        } else {
+            "sweep-size"
+        },
+        &[("cells", cells.into()), ("seeds", seeds.into())],
+    );
+    let each = if on_log {
+        tr(app, "sweep-on-log")
+    } else {
+        tr_with(
+            app,
+            "sweep-each",
+            &[("s", arg(format!("{:.0}", spec.duration_s)))],
+        )
+    };
+    ui.label(RichText::new(format!("{size} · {each}")).small());
+    if let Some(scoring) = running.and_then(|s| s.scoring()) {
+        let part = if running.is_some_and(Sweep::is_on_log) {
+            "log-help"
+        } else {
+            "help"
+        };
+        let help = lab_word(
+            app,
+            &i18n::sweep_id(app.sim().lab().id(), i, part),
+            scoring.help,
+        );
+        ui.label(RichText::new(help).small().weak());
+    }
+}
+
+fn problems(ui: &mut Ui, app: &AppState, s: &Sweep) {
+    let spec = s.spec();
+    let w = Words::of(app, s, 0);
+    let error = crate::render::palette::of(ui.visuals()).error;
+    for p in s.points.iter().filter(|p| p.missing.iter().any(|m| *m > 0)) {
+        let at = arg(w.at(spec, p));
+        ui.colored_label(error, tr_with(app, "sweep-diverged", &[("at", at)]));
+    }
+    for p in s.points.iter().filter(|p| !p.unscored.is_empty()) {
+        let args = [
+            ("at", arg(w.at(spec, p))),
+            ("why", arg(p.unscored.join("; "))),
+        ];
+        ui.colored_label(error, tr_with(app, "sweep-unscored", &args));
+    }
+    for reason in &s.skipped {
+        ui.colored_label(
+            error,
+            tr_with(app, "sweep-skipped", &[("why", arg(reason))]),
+        );
+    }
+}
+
+fn log_points(s: &Sweep, f: impl Fn(&SweepPoint) -> f64) -> Vec<[f64; 2]> {
+    s.points
+        .iter()
+        .filter(|p| p.value > 0.0)
+        .map(|p| [p.value.log10(), f(p)])
+        .filter(|q| q[1].is_finite())
+        .collect()
+}
+
+/// RMS (largest |value|) of each series against log10 of the value.
+fn rms_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
+    let spec = s.spec();
+    let w = Words::of(app, s, i);
+    for k in 0..spec.series.len() {
+        if let Some((value, rms)) = s.best(k) {
+            let args = [
+                ("series", arg(w.series(s, k))),
+                ("param", arg(w.param(spec.key))),
+                ("value", arg(value)),
+                ("rms", arg(format!("{rms:.4}"))),
+            ];
+            ui.label(tr_with(app, "sweep-best", &args));
+        }
+    }
+    Plot::new(("sweep", i))
+        .height(170.0)
+        .legend(Legend::default().text_style(egui::TextStyle::Small))
+        .x_axis_label(w.log_axis(spec.key))
+        .y_axis_label(tr(app, "sweep-max-axis"))
+        .show(ui, |plot| {
+            for k in 0..spec.series.len() {
+                let pts = log_points(s, |p| p.max_abs[k].log10());
+                let color = colours.source(k + 1);
+                let legend = w.series(s, k);
+                plot.line(Line::new(legend.clone(), pts.clone()).color(color));
+                plot.points(Points::new(legend, pts).radius(3.0).color(color));
+            }
+        });
+}
+
+/// Each objective against log10 of the value, its argmin ringed.
+fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
+    let Some(scoring) = s.scoring() else { return };
+    let spec = s.spec();
+    let w = Words::of(app, s, i);
+    Plot::new(("sweep_objectives", i))
+        .height(190.0)
+        .legend(Legend::default().text_style(egui::TextStyle::Small))
+        .x_axis_label(w.log_axis(spec.key))
+        .y_axis_label(tr(app, "sweep-objective-axis"))
+        .show(ui, |plot| {
+            for (k, (english, _)) in scoring.objectives.iter().enumerate() {
+                let name = w.objective(k, english);
+                let color = colours.source(k + 1);
+                let pts = log_points(s, |p| p.objectives[k]);
+                plot.line(Line::new(name.clone(), pts.clone()).color(color));
+                plot.points(Points::new(name.clone(), pts).radius(2.5).color(color));
+                if let Some(best) = s.argmin(k).filter(|p| p.value > 0.0) {
+                    let xy = [best.value.log10(), best.objectives[k]];
+                    plot.points(
+                        Points::new(format!("argmin {name}"), vec![xy])
+                            .radius(7.0)
+                            .filled(false)
+                            .color(color),
+                    );
+                }
+            }
+        });
+}
+
+/// One row per value: the median scores (with their range over the seeds) and objectives;
+/// each objective's argmin in bold.
+fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
+    let Some(scoring) = s.scoring() else { return };
+    let spec = s.spec();
+    let w = Words::of(app, s, i);
+    for (k, (english, _)) in scoring.objectives.iter().enumerate() {
+        if let Some(best) = s.argmin(k) {
+            let args = [
+                ("name", arg(w.objective(k, english))),
+                ("n", s.points.len().into()),
+                ("at", arg(w.at(spec, best))),
+            ];
+            ui.label(RichText::new(tr_with(app, "sweep-argmin", &args)).strong());
+        }
+    }
+    let cell = |x: f64| {
+        if x.is_finite() {
+            fmt_sig(x)
+        } else {
+            "—".into()
+        }
+    };
+    egui::ScrollArea::horizontal()
+        .id_salt(("sweep_table_scroll", i))
+        .show(ui, |ui| {
+            egui::Grid::new(("sweep_table", i))
+                .striped(true)
+                .show(ui, |ui| {
+                    ui.label(RichText::new(w.param(spec.key)).small().strong());
+                    for (j, n) in scoring.names.iter().enumerate() {
+                        ui.label(RichText::new(w.score(j, n)).small().strong());
+                    }
+                    for (j, (n, _)) in scoring.objectives.iter().enumerate() {
+                        ui.label(RichText::new(w.objective(j, n)).small().strong());
+                    }
+                    ui.end_row();
+                    for p in &s.points {
+                        ui.label(RichText::new(fmt_sig(p.value)).small().monospace());
+                        for (v, r) in p.scores.iter().zip(&p.score_range) {
+                            let text = if p.runs > 1 && r[0].is_finite() {
+                                format!("{} [{}–{}]", cell(*v), cell(r[0]), cell(r[1]))
+                            } else {
+                                cell(*v)
+                            };
+                            ui.label(RichText::new(text).small().monospace());
+                        }
+                        for (k, j) in p.objectives.iter().enumerate() {
+                            let best = s.argmin(k).is_some_and(|b| std::ptr::eq(b, p));
+                            let text = RichText::new(cell(*j)).small().monospace();
+                            ui.label(if best {
+                                text.strong().color(colours.source(k + 1))
+                            } else {
+                                text
+                            });
+                        }
+                        ui.end_row();
+                    }
+                });
+        });
+}

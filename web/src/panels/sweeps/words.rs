@@ -1,0 +1,89 @@
+//! The words of a sweep's result in the reader's language: its parameters by their sliders'
+//! labels and units, its series as the plots name them, its scores and objectives.
+
+use super::super::lab_word;
+use crate::state::AppState;
+use attlab::analysis::sweep::{Sweep, SweepPoint};
+use attlab::i18n;
+use attlab::model::{SweepSpec, fmt_sig};
+
+/// The words of a sweep's result: its parameters, series, scores and objectives in the
+/// reader's language.
+pub(super) struct Words<'a> {
+    app: &'a AppState,
+    sweep: usize,
+    on_log: bool,
+}
+
+impl Words<'_> {
+    pub(super) fn of<'a>(app: &'a AppState, s: &Sweep, sweep: usize) -> Words<'a> {
+        Words {
+            app,
+            sweep,
+            on_log: s.is_on_log(),
+        }
+    }
+
+    /// A parameter's label with its unit (a log's key stays as it is).
+    pub(super) fn param(&self, key: &str) -> String {
+        let lab = self.app.sim().lab();
+        let Some(spec) = lab.params().iter().find(|p| p.key == key) else {
+            return key.to_string();
+        };
+        let label = lab_word(self.app, &i18n::param_label_id(lab.id(), key), spec.label);
+        if spec.unit.is_empty() {
+            label
+        } else {
+            format!("{label} [{}]", spec.unit)
+        }
+    }
+
+    /// Score `j`'s name.
+    pub(super) fn score(&self, j: usize, english: &str) -> String {
+        let part = format!("{}score-{j}", if self.on_log { "log-" } else { "" });
+        self.word(&part, english)
+    }
+
+    /// Objective `j`'s name.
+    pub(super) fn objective(&self, j: usize, english: &str) -> String {
+        let part = format!("{}objective-{j}", if self.on_log { "log-" } else { "" });
+        self.word(&part, english)
+    }
+
+    fn word(&self, part: &str, english: &str) -> String {
+        let lab = self.app.sim().lab().id();
+        lab_word(self.app, &i18n::sweep_id(lab, self.sweep, part), english)
+    }
+
+    /// Series `k`'s legend, as the plots name it.
+    pub(super) fn series(&self, s: &Sweep, k: usize) -> String {
+        let Some(key) = s.spec().series.get(k) else {
+            return s.legend(k);
+        };
+        let name = key.name();
+        let found = self
+            .app
+            .sim()
+            .available_specs()
+            .iter()
+            .find(|sp| sp.name == name);
+        found.map_or_else(
+            || s.legend(k),
+            |sp| super::super::series_legend(self.app, sp),
+        )
+    }
+
+    /// "parameter = value" (and the grid's) of a point.
+    pub(super) fn at(&self, spec: &SweepSpec, p: &SweepPoint) -> String {
+        let one = format!("{} = {}", self.param(spec.key), fmt_sig(p.value));
+        match (spec.grid, p.grid_value) {
+            (Some(g), Some(v)) => format!("{one}, {} = {}", self.param(g.key), fmt_sig(v)),
+            _ => one,
+        }
+    }
+
+    /// An axis: log10 of a parameter.
+    pub(super) fn log_axis(&self, key: &str) -> String {
+        format!("log10 {}", self.param(key))
+    }
+}
