@@ -19,12 +19,22 @@ pub mod state;
 
 pub use app::AttLabApp;
 
-/// Starts the app on the canvas with id `canvas_id` (called from `index.html`).
+/// Starts the app on the canvas with id `canvas_id` with the page's three fonts (sans,
+/// mono, symbols: `render::fonts::FILES`, fetched by `index.html` beside the wasm).
 #[cfg(target_arch = "wasm32")]
 #[wasm_bindgen::prelude::wasm_bindgen]
-pub async fn start(canvas_id: String) -> Result<(), wasm_bindgen::JsValue> {
+pub async fn start(
+    canvas_id: String,
+    sans: Vec<u8>,
+    mono: Vec<u8>,
+    symbols: Vec<u8>,
+) -> Result<(), wasm_bindgen::JsValue> {
     use wasm_bindgen::JsCast as _;
     let _ = eframe::WebLogger::init(log::LevelFilter::Info);
+    if [&sans, &mono, &symbols].iter().any(|f| f.is_empty()) {
+        return Err("a font file of assets/fonts/ arrived empty".into());
+    }
+    render::fonts::provide(sans, mono, symbols);
     let document = web_sys::window()
         .and_then(|w| w.document())
         .ok_or("no document")?;

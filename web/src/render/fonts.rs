@@ -6,25 +6,64 @@
 //! - `DejaVuSans-symbols`: what the labs' labels use beyond those — combining accents as in φ̇,
 //!   ϑ, ᵀ, primes, arrows, maths, ▶ ✕ ⟲ — as the fallback of both families.
 //!
+//! The page fetches the three files beside its wasm (`index.html` hands them to `start`);
+//! the desktop app and the tests carry them in the binary.
+//!
 //! In the browser, a character none of them has (a CJK column name in an imported log) is still
 //! drawn by eframe's canvas glyph fallback; on the desktop it shows as a box.
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
-/// The proportional font (a subset of Ubuntu-Light).
-const SANS: &[u8] = include_bytes!("../../../assets/fonts/AttLabSans.ttf");
-/// The monospace font (a subset of Hack).
-const MONO: &[u8] = include_bytes!("../../../assets/fonts/AttLabMono.ttf");
-/// The symbols fallback (a subset of DejaVu Sans).
-const SYMBOLS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans-symbols.ttf");
+/// The fonts' files, as the site serves them (`assets/fonts/`): (name, file).
+pub const FILES: [(&str, &str); 3] = [
+    ("sans", "AttLabSans.ttf"),
+    ("mono", "AttLabMono.ttf"),
+    ("symbols", "DejaVuSans-symbols.ttf"),
+];
 
-/// The app's font set: each family's fonts in fallback order.
+/// The proportional font (a subset of Ubuntu-Light), the monospace font (a subset of Hack)
+/// and the symbols fallback (a subset of DejaVu Sans). The desktop app and the tests carry
+/// them in the binary; the page fetches the same files beside the wasm (see `index.html`):
+/// they are 0.19 MB that a new release of the code need not send again, since the browser
+/// and the service worker keep them apart from the wasm.
+#[cfg(not(target_arch = "wasm32"))]
+fn bundled() -> [&'static [u8]; 3] {
+    [
+        include_bytes!("../../../assets/fonts/AttLabSans.ttf"),
+        include_bytes!("../../../assets/fonts/AttLabMono.ttf"),
+        include_bytes!("../../../assets/fonts/DejaVuSans-symbols.ttf"),
+    ]
+}
+
+/// The fonts the page fetched, handed over by `start` before the app's first frame.
+static FETCHED: OnceLock<[Vec<u8>; 3]> = OnceLock::new();
+
+/// Keeps the fonts the page fetched (sans, mono, symbols) for [`install`]; `false` if they
+/// were given already.
+pub fn provide(sans: Vec<u8>, mono: Vec<u8>, symbols: Vec<u8>) -> bool {
+    FETCHED.set([sans, mono, symbols]).is_ok()
+}
+
+/// The three fonts' bytes: bundled (desktop, tests) or fetched (the page).
+fn bytes() -> Vec<Arc<[u8]>> {
+    #[cfg(not(target_arch = "wasm32"))]
+    if FETCHED.get().is_none() {
+        return bundled().iter().map(|b| Arc::from(*b)).collect();
+    }
+    FETCHED
+        .get()
+        .map(|f| f.iter().map(|b| Arc::from(b.as_slice())).collect())
+        .unwrap_or_default()
+}
+
+/// The app's font set: each family's fonts in fallback order (empty in the page until the
+/// fonts are provided).
 pub fn definitions() -> egui::FontDefinitions {
     let mut fonts = egui::FontDefinitions::empty();
-    for (name, bytes) in [("sans", SANS), ("mono", MONO), ("symbols", SYMBOLS)] {
+    for ((name, _), data) in FILES.iter().zip(bytes()) {
         fonts.font_data.insert(
-            name.to_owned(),
-            Arc::new(egui::FontData::from_static(bytes)),
+            (*name).to_owned(),
+            Arc::new(egui::FontData::from_owned(data.to_vec())),
         );
     }
     let chain = |names: &[&str]| names.iter().map(|n| (*n).to_owned()).collect::<Vec<_>>();
