@@ -84,7 +84,11 @@ body-truth = truth (solid)
 body-ghost = estimate (ghost): { $label }
 body-hint = drag: orbit · wheel or pinch: zoom · double-click: reset · x red, y green, z blue
 sphere-title = Riemann sphere: vertical k in body axes
-chart-w = chart w (from S): { $ids }
+chart-all-w = every filter in chart w (from S)
+chart-w-rest = { $n ->
+    [one] { $n } other in chart w (from S)
+   *[other] { $n } others in chart w (from S)
+}
 chart-s = chart s = 1/w (upside down): { $ids }
 dial-title = Angle on a dial (0° up)
 
@@ -239,3 +243,7 @@ body-unobservable = unobservable axis
 body-orbit = orbit
 body-shadow = shadow
 body-no-gpu = 3D view needs the wgpu renderer
+
+## Zoom and its way back
+plot-reset-hint = Show the whole run again (the wheel zooms about the pointer; drag to move; a double click does this too)
+view-reset-hint = Back to the first view (a double click does this too)

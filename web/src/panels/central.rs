@@ -29,6 +29,7 @@ pub fn central(
             Focus::View(k) if k < kinds.len() => {
                 draw_view(ui, app, view, kinds[k], full, gpu_ready);
                 png_button(ui, app, k, full, commands);
+                reset_button(ui, app, view, kinds[k], full);
                 regions.views.push((k, full));
                 return;
             }
@@ -69,6 +70,7 @@ pub fn central(
             x += w;
             draw_view(ui, app, view, *kind, rect, gpu_ready);
             png_button(ui, app, k, rect, commands);
+            reset_button(ui, app, view, *kind, rect);
             regions.views.push((k, rect));
         }
         let bottom = Rect::from_min_max(full.min + Vec2::new(0.0, top_h + 6.0), full.max);
@@ -90,6 +92,31 @@ fn chrome_id() -> egui::Id {
 }
 /// The views' height below which they are no use (points).
 const MIN_VIEW_PT: f32 = 120.0;
+
+/// A visible "⟲" in the top-right corner of the 3D view or the sphere once the reader has
+/// turned or zoomed it (a double click does the same, but nothing says so on a touch screen).
+fn reset_button(ui: &mut Ui, app: &AppState, view: &mut View, kind: ViewKind, rect: Rect) {
+    let moved = match kind {
+        ViewKind::Body3d => view.camera != body3d::OrbitCamera::default(),
+        ViewKind::Sphere => view.sphere != riemann_sphere::SphereView::default(),
+        _ => false,
+    };
+    if !moved || app.view().capturing {
+        return;
+    }
+    let size = Vec2::new(26.0, 22.0);
+    let at = Rect::from_min_size(Pos2::new(rect.max.x - size.x - 4.0, rect.min.y + 4.0), size);
+    if ui
+        .put(at, egui::Button::new("⟲"))
+        .on_hover_text(tr(app, "view-reset-hint"))
+        .clicked()
+    {
+        match kind {
+            ViewKind::Body3d => view.camera = body3d::OrbitCamera::default(),
+            _ => view.sphere = riemann_sphere::SphereView::default(),
+        }
+    }
+}
 
 /// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
 /// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
@@ -221,7 +248,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
         if let Some(angle) = est.angle_rad {
             shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
-                name: super::estimator_short(app, i),
+                name: super::elide(&super::estimator_name(app, i), single_axis::DIAL_NAME),
                 color: colours.source(i + 1),
                 pattern: palette::pattern(i + 1),
                 angle_rad: angle,
@@ -280,24 +307,29 @@ fn draw_body(
     body3d::show(ui, rect, camera, &scene, gpu_ready);
 }
 
-/// Which chart of w each estimator integrates in, one line per chart in use (the estimators
-/// by id), so four filters make two short lines rather than four long ones.
+/// Which chart of w the estimators integrate in, short enough for a small view: "all in
+/// chart w" while none is upside down; else the ones in the flipped chart s = 1/w by name,
+/// and how many stay in chart w.
 fn chart_caption(app: &AppState) -> String {
-    let mut north = Vec::new();
+    let mut north = 0;
     let mut flipped = Vec::new();
     for (i, est) in app.sim().estimates().iter().enumerate() {
         match est.attitude.wz().map(|wz| wz.chart) {
-            Some(WzChart::North) => north.push(super::estimator_short(app, i)),
+            Some(WzChart::North) => north += 1,
             Some(WzChart::Flipped) => flipped.push(super::estimator_short(app, i)),
             None => {}
         }
     }
-    let mut lines = Vec::new();
-    if !north.is_empty() {
-        lines.push(tr_with(app, "chart-w", &[("ids", arg(north.join(", ")))]));
+    if flipped.is_empty() {
+        return if north > 0 {
+            tr(app, "chart-all-w")
+        } else {
+            String::new()
+        };
     }
-    if !flipped.is_empty() {
-        lines.push(tr_with(app, "chart-s", &[("ids", arg(flipped.join(", ")))]));
+    let mut lines = vec![tr_with(app, "chart-s", &[("ids", arg(flipped.join(", ")))])];
+    if north > 0 {
+        lines.push(tr_with(app, "chart-w-rest", &[("n", north.into())]));
     }
     lines.join("\n")
 }

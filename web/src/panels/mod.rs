@@ -90,6 +90,7 @@ pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> 
         time_axis: tr(app, "axis-time"),
         mixed_units: tr(app, "axis-mixed-units"),
         bands: tr(app, "bands-legend"),
+        reset: tr(app, "plot-reset-hint"),
         outages: outages
             .map(|(k, o)| lab_word(app, &i18n::outage_id(lab.id(), k), o.label))
             .collect(),

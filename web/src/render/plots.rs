@@ -85,6 +85,8 @@ pub struct PlotWords<'a> {
     pub bands: String,
     /// The lab's outages' labels, by position.
     pub outages: Vec<String>,
+    /// The reset button's hint.
+    pub reset: String,
 }
 
 /// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
@@ -119,13 +121,24 @@ pub fn show(
         .collect();
     // The legend never covers data: beside a wide plot, below a narrow one.
     let (plot_rect, legend_rect) = split_for_legend(ui, full, shown.len());
-    let plot = Plot::new(("series_plot", format!("{tab:?}")))
+    // The wheel zooms about the pointer (it panned the data out of view); a visible button
+    // brings back the whole run once the reader has zoomed or dragged.
+    let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
+    let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
         .y_axis_label(y_title(rec, &shown, log, &words.mixed_units))
-        .y_grid_spacer(nice_marks);
-    let rect = ui
+        .y_grid_spacer(nice_marks)
+        .allow_scroll(false);
+    if ui
+        .data_mut(|d| d.remove_temp::<bool>(reset_id))
+        .unwrap_or(false)
+    {
+        plot = plot.reset();
+    }
+    let (rect, moved) = ui
         .scope_builder(egui::UiBuilder::new().max_rect(plot_rect), |ui| {
-            plot.show(ui, |plot| {
+            let shown_plot = plot.show(ui, |plot| {
+                wheel_zoom(plot);
                 if state.show_outages {
                     shade_outages(plot, rec, outages, colours);
                 }
@@ -139,16 +152,45 @@ pub fn show(
                     };
                     draw_series(plot, rec, *i, style, &words.legend);
                 }
-            })
-            .response
-            .rect
+                !plot.auto_bounds().all()
+            });
+            (shown_plot.response.rect, shown_plot.inner)
         })
         .inner;
+    if moved {
+        reset_button(ui, rect, reset_id, &words.reset);
+    }
     ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
         legend(ui, rec, &shown, (log, state), outages, words);
     });
     ui.advance_cursor_after_rect(full);
     rect
+}
+
+/// The "⟲" in the plot's top-right corner: the next frame shows the whole run again.
+fn reset_button(ui: &mut Ui, plot: egui::Rect, reset_id: egui::Id, hint: &str) {
+    let at = egui::Rect::from_min_size(
+        egui::pos2(plot.max.x - 30.0, plot.min.y + 4.0),
+        egui::vec2(26.0, 22.0),
+    );
+    if ui
+        .put(at, egui::Button::new("⟲"))
+        .on_hover_text(hint)
+        .clicked()
+    {
+        ui.data_mut(|d| d.insert_temp(reset_id, true));
+    }
+}
+
+/// A turn of the wheel over the plot zooms about the pointer (up: in), as a map does.
+fn wheel_zoom(plot: &mut egui_plot::PlotUi<'_>) {
+    if !plot.response().hovered() {
+        return;
+    }
+    let scroll = plot.response().ctx.input(|i| i.smooth_scroll_delta.y);
+    if scroll != 0.0 {
+        plot.zoom_bounds_around_hovered(egui::Vec2::splat((scroll * 0.003).exp()));
+    }
 }
 
 /// The y axis' title: the unit the drawn series share (`[°]`, `log10 [°²]`, `[–]` for none),

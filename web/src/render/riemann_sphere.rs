@@ -197,12 +197,31 @@ pub fn show_sphere(
     let painter = ui.painter_at(rect);
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
-    let radius = 0.33 * rect.width().min(rect.height() * 1.1);
+    // Title on top and caption at the bottom, each wrapped inside the view; the sphere takes
+    // the band between them, so none runs into another on a small view.
+    let wrap = (rect.width() - 16.0).max(40.0);
+    let title = painter.layout(
+        title.to_string(),
+        FontId::proportional(13.0),
+        colours.ink,
+        wrap,
+    );
+    let caption = painter.layout(
+        caption.to_string(),
+        FontId::proportional(12.0),
+        colours.highlight,
+        wrap,
+    );
+    let top = rect.top() + 6.0 + title.size().y;
+    let bottom = rect.bottom() - 6.0 - caption.size().y;
+    let band = egui::Rect::from_x_y_ranges(rect.x_range(), top..=bottom.max(top + 40.0));
+    // Room for the axis labels (ζ′ above, S and its label below) around the sphere.
+    let radius = (0.36 * band.width()).min(0.40 * band.height()).max(12.0);
     let rot = Rotation3::from_axis_angle(&Vector3::x_axis(), view.pitch_rad)
         * Rotation3::from_axis_angle(&Vector3::z_axis(), view.yaw_rad);
     let pr = Projector {
         rot,
-        center: rect.center() + Vec2::new(0.0, 8.0),
+        center: band.center(),
         radius,
     };
     painter.circle(
@@ -215,21 +234,7 @@ pub fn show_sphere(
     for t in tracks {
         draw_track(&pr, &painter, t);
     }
-    // Title and caption wrap inside the view, so neither runs off it or into the other.
-    let wrap = (rect.width() - 16.0).max(40.0);
-    let title = painter.layout(
-        title.to_string(),
-        FontId::proportional(13.0),
-        colours.ink,
-        wrap,
-    );
     painter.galley(rect.left_top() + Vec2::new(8.0, 6.0), title, colours.ink);
-    let caption = painter.layout(
-        caption.to_string(),
-        FontId::proportional(12.0),
-        colours.highlight,
-        wrap,
-    );
     let at = rect.left_bottom() + Vec2::new(8.0, -6.0 - caption.size().y);
     painter.galley(at, caption, colours.highlight);
 }

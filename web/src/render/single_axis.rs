@@ -124,10 +124,11 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
     painter.circle_filled(center, 4.0, colours.ink);
     for (k, s) in sources.iter().enumerate() {
         let at = readouts + Vec2::new(0.0, row * k as f32);
+        // The number first, so a long name is what a narrow view cuts, never the angle.
         let text = if s.angle_rad.is_finite() {
-            format!("{}  {:+.2}°", s.name, s.angle_rad.to_degrees())
+            format!("{:+8.2}°  {}", s.angle_rad.to_degrees(), s.name)
         } else {
-            format!("{}  —", s.name)
+            format!("{:>9}  {}", "—", s.name)
         };
         painter.text(
             at,
@@ -141,8 +142,13 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
 
 /// Height of one readout line under or beside the dial (points).
 const READOUT_ROW_PT: f32 = 16.0;
-/// Width a readout line needs ("kf-torsion  +123.45°" in 11-pt monospace), in points.
+/// Width a readout line needs (" +123.45°  " and a name cut to [`DIAL_NAME`] characters, in
+/// 11-pt monospace), in points.
 const READOUT_W_PT: f32 = 125.0;
+
+/// The longest source name a dial's readout shows whole (the legend and the chips show the
+/// whole name in the same colour).
+pub const DIAL_NAME: usize = 8;
 /// Height of the dial's title (points).
 const DIAL_TITLE_PT: f32 = 24.0;
 

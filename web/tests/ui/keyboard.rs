@@ -118,3 +118,36 @@ fn question_mark_opens_the_keyboard_dialog_and_escape_closes_it() {
     h.run();
     assert!(h.state().state.view().keys_help);
 }
+
+/// The wheel over the plot zooms (it used to pan the data out of view), and a visible ⟲
+/// then brings back the whole run.
+#[test]
+fn the_wheel_zooms_the_plot_and_a_visible_button_resets_it() {
+    let mut h = harness("p1");
+    for _ in 0..300 {
+        h.state_mut().apply(RunCommand::StepOnce.into());
+    }
+    h.run();
+    assert!(h.query_by_label("⟲").is_none(), "no reset before a zoom");
+    // The plot fills the lower right of the 1400×900 window.
+    let over_plot = egui::pos2(900.0, 700.0);
+    h.hover_at(over_plot);
+    h.run();
+    for _ in 0..3 {
+        h.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: egui::vec2(0.0, 60.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Unknown,
+            modifiers: Modifiers::NONE,
+        });
+        h.run();
+    }
+    h.get_by_label("⟲").click();
+    h.run();
+    h.run();
+    assert!(
+        h.query_by_label("⟲").is_none(),
+        "the reset brought back the whole run"
+    );
+}
