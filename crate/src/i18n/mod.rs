@@ -13,7 +13,10 @@ mod series;
 pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
-pub use series::{compose, estimator_id, estimator_name, quantity_id, series_label, series_legend};
+pub use series::{
+    compose, estimator_id, estimator_name, lab_series_words, quantity_id, series_label,
+    series_legend,
+};
 use std::sync::OnceLock;
 
 /// A language of the page.
@@ -187,7 +190,7 @@ pub fn log_format_id(lab_id: &str, part: &str) -> String {
 /// Every word a lab gives in English that a translation can take: `(id, English)` — its
 /// title, summary, parameters (label, options, help), presets (name, help), plot tabs,
 /// outages, sweeps (title, help, scores, objectives), log format, and (see
-/// [`series::lab_series_words`]) its estimators' names and its series' quantities.
+/// [`lab_series_words`]) its estimators' names and its series' quantities.
 pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static str)> {
     let id = lab.id();
     let mut out = vec![

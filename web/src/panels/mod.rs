@@ -28,7 +28,7 @@ pub(crate) fn tr(app: &AppState, id: &str) -> String {
     i18n::t(app.view().lang(), id)
 }
 
-/// [`tr`] for the frame loop outside the panels.
+/// The page's message `id` in the reader's language, for the frame loop outside the panels.
 pub fn tr_page(app: &AppState, id: &str) -> String {
     tr(app, id)
 }

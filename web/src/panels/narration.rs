@@ -1,7 +1,7 @@
 //! The live description of the run for a screen reader (a polite live region, see `a11y`):
 //! the lab, the time, whether it runs, and the ghost's estimator against the truth with its
 //! own 3σ ("ST+Gyro [λ,ω]: attitude error 0.00081°, within its 3σ band of 0.0021°").
-//! While the run goes on it is refreshed every [`EVERY`]; a pause, a lab or an estimator
+//! While the run goes on it is refreshed every ten seconds; a pause, a lab or an estimator
 //! change refreshes it at once.
 
 use super::{arg, tr_with};
@@ -84,7 +84,7 @@ pub struct Narration {
 
 impl Narration {
     /// The description to publish now, if one is due: the first, one after a pause, a lab or
-    /// an estimator change, or a changed one [`EVERY`] after the last.
+    /// an estimator change, or a changed one ten seconds after the last.
     pub fn due(&mut self, app: &AppState, now: Instant) -> Option<String> {
         let key = (
             app.run().playing,

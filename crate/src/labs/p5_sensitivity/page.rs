@@ -95,7 +95,7 @@ pub(super) fn diagrams(p: &ParamValues) -> Vec<Diagram> {
     let (dt, eps) = (p.get("interval_s"), p.get("eps"));
     let mut points = Vec::new();
     // Each point takes the colour of the filter whose update it linearises (the
-    // re-integrating variant's for "(11) and variant", Method::Reintegrate).
+    // re-integrating variant's for (11), Method::Reintegrate).
     // The points are notation only ("(11) λ1"): (11) and the re-integrating variant share
     // one linearised update, drawn in the variant's colour.
     for (name, method, source) in [
