@@ -24,6 +24,7 @@ pub mod dynamics;
 pub mod estimators;
 pub mod i18n;
 pub mod labs;
+pub mod lessons;
 pub mod math;
 pub mod model;
 pub mod record;

@@ -166,6 +166,8 @@ impl AttLabApp {
         }
         panels::shortcuts(ui.ctx(), &self.state, &mut commands);
         panels::help_dialog(ui.ctx(), &self.state, &mut commands);
+        panels::share_dialog(ui.ctx(), &self.state, &mut commands);
+        panels::cycle_panel(ui.ctx(), &self.state, &mut commands);
         panels::link_problems(ui, &self.state, &mut commands);
         panels::status_line(ui, &self.state, &mut commands);
         if narrow {
@@ -174,6 +176,7 @@ impl AttLabApp {
         } else {
             panels::controls(ui, &self.state, &mut commands);
         }
+        panels::tiles(ui, &self.state);
         self.regions = Regions::default();
         panels::central(
             ui,
@@ -235,6 +238,8 @@ impl AttLabApp {
             recorder_bytes: self.state.sim().recorder().memory_bytes(),
             errors: &self.app_errors,
             last_png: self.last_png.as_ref(),
+            lesson_step: self.state.lesson().map(|l| l.step),
+            playing: self.state.run().playing,
             views: self
                 .regions
                 .views

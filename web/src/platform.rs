@@ -111,6 +111,10 @@ pub struct Status<'a> {
     pub layout: Option<([f32; 4], [f32; 4], f32)>,
     /// The lab's views drawn: `[index in the lab's views, x, y, width, height]`, in points.
     pub views: Vec<[f32; 5]>,
+    /// The lesson step shown (1-based), if a lesson is open.
+    pub lesson_step: Option<usize>,
+    /// The run is playing (not paused).
+    pub playing: bool,
 }
 
 /// Publishes the status (browser only).
@@ -161,6 +165,10 @@ pub fn publish_status(status: &Status<'_>) {
             })
             .collect();
         let _ = Reflect::set(&o, &"views".into(), &views);
+        if let Some(step) = status.lesson_step {
+            let _ = Reflect::set(&o, &"lessonStep".into(), &JsValue::from_f64(step as f64));
+        }
+        let _ = Reflect::set(&o, &"playing".into(), &JsValue::from_bool(status.playing));
         let _ = Reflect::set(
             &o,
             &"recorderBytes".into(),

@@ -247,3 +247,38 @@ body-no-gpu = 3D view needs the wgpu renderer
 ## Zoom and its way back
 plot-reset-hint = Show the whole run again (the wheel zooms about the pointer; drag to move; a double click does this too)
 view-reset-hint = Back to the first view (a double click does this too)
+
+## The lesson card (web/src/panels/lesson.rs)
+lesson-start = ▶ Start the lesson
+lesson-step = step { $n } of { $count }
+lesson-predict = Choose what you expect; then the run shows it.
+lesson-shows = The run shows: { $answer }
+lesson-running = Running to t = { $t } s…
+lesson-back = ◀ Back
+lesson-next = Next ▶
+lesson-again = ⟲ Again
+lesson-end = End the lesson
+msg-lesson-bad-step = This lesson step cannot be opened: { $why }
+share = Share…
+cycle-open = The filter's cycle
+share-hint = A link for the class: this state or this lesson step, with controls hidden or locked, and its QR code.
+share-title = Share with the class
+share-scan = Scan with a phone's camera.
+share-copy = Copy the link
+share-from-step = This lesson step, from its start
+share-as-is = The page as it is now
+share-answers = With the answers chosen
+share-presenter = Open in presenter mode
+share-controls = Hide or lock controls
+share-control = Control
+share-hide = Hide
+share-lock = Lock
+share-all = Every control
+cycle-title = The filter's cycle
+cycle-at = t = { $t } s, step { $k }
+cycle-step = Step one sample (s)
+cycle-pause = Pause
+cycle-states = States: { $names }
+cycle-no-update = No measurement this step: x̂⁺ = x̂⁻, P⁺ = P⁻.
+cycle-note-window = The adaptation window ended: P was replaced by the window's estimate (§2.6, Table 2.3).
+tile-none = —

@@ -249,3 +249,38 @@ body-no-gpu = 3D-виду нужен отрисовщик wgpu
 ## Масштаб и возврат
 plot-reset-hint = Снова показать весь прогон (колесо масштабирует вокруг указателя, перетаскивание сдвигает; двойной щелчок делает то же)
 view-reset-hint = Вернуть исходный вид (двойной щелчок делает то же)
+
+## The lesson card (web/src/panels/lesson.rs)
+lesson-start = ▶ Начать урок
+lesson-step = шаг { $n } из { $count }
+lesson-predict = Выберите, что вы ожидаете; затем расчёт это покажет.
+lesson-shows = Расчёт показывает: { $answer }
+lesson-running = Расчёт идёт до t = { $t } с…
+lesson-back = ◀ Назад
+lesson-next = Далее ▶
+lesson-again = ⟲ Заново
+lesson-end = Закончить урок
+msg-lesson-bad-step = Этот шаг урока не открывается: { $why }
+share = Поделиться…
+cycle-open = Цикл фильтра
+share-hint = Ссылка для группы: это состояние или этот шаг урока, со скрытыми или закреплёнными регуляторами, и её QR-код.
+share-title = Поделиться с группой
+share-scan = Наведите камеру телефона.
+share-copy = Копировать ссылку
+share-from-step = Этот шаг урока, с начала
+share-as-is = Страница как есть
+share-answers = С выбранными ответами
+share-presenter = Открыть в режиме презентации
+share-controls = Скрыть или закрепить регуляторы
+share-control = Регулятор
+share-hide = Скрыть
+share-lock = Закрепить
+share-all = Все регуляторы
+cycle-title = Цикл фильтра
+cycle-at = t = { $t } с, шаг { $k }
+cycle-step = Шаг на один отсчёт (s)
+cycle-pause = Пауза
+cycle-states = Состояния: { $names }
+cycle-no-update = На этом шаге измерения нет: x̂⁺ = x̂⁻, P⁺ = P⁻.
+cycle-note-window = Окно адаптации закончилось: P заменена оценкой по окну (§2.6, табл. 2.3).
+tile-none = —

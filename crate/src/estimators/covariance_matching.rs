@@ -86,6 +86,9 @@ pub struct AdaptiveKf {
     count: usize,
     /// Windows completed.
     pub resets: u64,
+    /// The last update's prior (after the process noise it adds) and its Joseph result
+    /// (before any adaptation), for the step-through panel.
+    pub last_update: Option<(KalmanState<2>, KalmanState<2>)>,
 }
 
 impl AdaptiveKf {
@@ -101,6 +104,7 @@ impl AdaptiveKf {
             r_sum: 0.0,
             count: 0,
             resets: 0,
+            last_update: None,
         }
     }
 
@@ -127,12 +131,14 @@ impl AdaptiveKf {
             self.kf.p[(1, 1)] += self.q_rate;
         }
         self.innovation = z - self.kf.x[1];
+        let prior = self.kf;
         let before = self.kf.x;
         self.kf.update_scalar(
             self.innovation,
             &Matrix1x2::new(0.0, 1.0),
             self.r.max(1e-16),
         )?;
+        self.last_update = Some((prior, self.kf));
         let q = match self.adaptation.mode {
             AdaptMode::SawTooth | AdaptMode::SawToothDiagonal => {
                 Vector2::new(phi_int_rad - self.kf.x[0], z - self.kf.x[1])

@@ -9,6 +9,7 @@ mod accel_wz;
 pub mod blended_wz;
 pub mod covariance_matching;
 pub mod kf;
+pub mod kf_cycle;
 pub mod mekf;
 pub mod one_axis_kf;
 mod quaternion_integration;

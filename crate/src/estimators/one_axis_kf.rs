@@ -13,11 +13,13 @@
 use super::covariance_matching::{
     AdaptMode, Adaptation, AdaptiveKf, rotation_transition, torsion_transition,
 };
+use super::kf::Innovation;
+use super::kf_cycle::CycleRecorder;
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
-    StateInfo, StateKind, Tuner,
+    Covariance, Estimate, Estimator, EstimatorStatus, Extras, KalmanCycle, Measurements,
+    ParamValues, Quantity, StateInfo, StateKind, Tuner,
 };
-use nalgebra::{Matrix2, Vector2, Vector3};
+use nalgebra::{Matrix1, Matrix1x2, Matrix2, Vector1, Vector2, Vector3};
 
 // The series this estimator records besides the catalogue's (figures name them).
 /// innovation z − Hx̂ (gyro rate less predicted φ̇) (rad/s).
@@ -87,6 +89,7 @@ pub struct OneAxisKf {
     rate_minus_sensor_rad_s: f64,
     innovation: [f64; 1],
     status: EstimatorStatus,
+    cycle: CycleRecorder,
 }
 
 impl OneAxisKf {
@@ -114,6 +117,7 @@ impl OneAxisKf {
             rate_minus_sensor_rad_s: 0.0,
             innovation: [0.0],
             status: EstimatorStatus::Ok,
+            cycle: CycleRecorder::new(STATES),
         }
     }
 
@@ -141,6 +145,28 @@ impl OneAxisKf {
             OneAxisModel::PermanentRotation => rotation_transition(dt_s),
             OneAxisModel::Torsion { omega_rad_s } => torsion_transition(omega_rad_s, dt_s),
         }
+    }
+}
+
+/// What the step-through panel says when an adaptation window ends at this update.
+const WINDOW_ENDED: &str =
+    "the adaptation window ended: P was replaced by the window's estimate (§2.6, Table 2.3)";
+
+impl OneAxisKf {
+    /// Records the update just made (z − Hx̂⁻ with H = [0 1], R = σ²/m) in the cycle.
+    fn record_update(&mut self) {
+        let Some((prior, post)) = self.kf.last_update else {
+            return;
+        };
+        let h = Matrix1x2::new(0.0, 1.0);
+        let r = Matrix1::new(self.kf.r.max(1e-16));
+        let innovation = Innovation {
+            residual: Vector1::new(self.kf.innovation),
+            s: h * prior.p * h.transpose() + r,
+            nis: 0.0,
+        };
+        let rows = ["averaged gyro rate ω̄ (rad/s)", ""];
+        self.cycle.updated(&prior, &h, &r, rows, &innovation, &post);
     }
 }
 
@@ -199,6 +225,10 @@ impl Estimator for OneAxisKf {
         &self.status
     }
 
+    fn cycle(&self) -> Option<&KalmanCycle> {
+        Some(self.cycle.cycle())
+    }
+
     fn apply_params(&mut self, p: &ParamValues) {
         if let Some(f) = self.model_from {
             self.model = f(p);
@@ -225,16 +255,23 @@ impl Estimator for OneAxisKf {
         }
         self.phi_int_rad += self.last_z.unwrap_or(0.0) * dt_s;
         let phi = self.transition(dt_s);
+        let before = self.kf.kf;
         self.kf.predict(&phi);
+        self.cycle
+            .predicted(&before, &phi, &Matrix2::zeros(), &self.kf.kf);
+        let resets = self.kf.resets;
         if let Some(z) = m.gyro_axis_rad_s {
             match self.kf.update(z, self.phi_int_rad) {
                 Ok(()) => {
                     self.innovation[0] = self.kf.innovation;
                     self.rate_minus_sensor_rad_s = self.kf.x()[1] - z;
+                    self.record_update();
                 }
                 Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
             }
         }
+        let note = (self.kf.resets > resets).then_some(WINDOW_ENDED);
+        self.cycle.finish(&self.kf.kf, note);
         if !(self
             .kf
             .x()

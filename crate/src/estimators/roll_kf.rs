@@ -15,9 +15,10 @@
 //!   sweep can walk across lines of constant γ.
 
 use super::kf::{KalmanState, LinearObservation};
+use super::kf_cycle::CycleRecorder;
 use crate::model::{
-    Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
-    StateInfo, StateKind, Tuner,
+    Covariance, Estimate, Estimator, EstimatorStatus, Extras, KalmanCycle, Measurements,
+    ParamValues, Quantity, StateInfo, StateKind, Tuner,
 };
 use nalgebra::{SMatrix, SVector, Vector3};
 
@@ -110,6 +111,9 @@ pub fn accel_angle_rad(accel_g: &Vector3<f64>) -> f64 {
     accel_g.y.atan2(accel_g.z)
 }
 
+/// What the roll filter's two measurement rows are, for the step-through panel.
+const CYCLE_ROWS_NAMED: [&str; 2] = ["accelerometer angle θ_acc (rad)", "gyro rate ω (rad/s)"];
+
 /// Paper 4's roll filter with `N` = 2 ([θ, ω]) or 3 ([θ, ω, b]) states.
 #[derive(Clone, Debug)]
 pub struct RollKf<const N: usize> {
@@ -121,6 +125,7 @@ pub struct RollKf<const N: usize> {
     kf: KalmanState<N>,
     innovation: [f64; 2],
     status: EstimatorStatus,
+    cycle: CycleRecorder,
 }
 
 impl<const N: usize> RollKf<N> {
@@ -146,6 +151,7 @@ impl<const N: usize> RollKf<N> {
             kf: KalmanState::new(SVector::zeros(), p0),
             innovation: [0.0; 2],
             status: EstimatorStatus::Ok,
+            cycle: CycleRecorder::new(if N == 3 { STATES_3 } else { STATES_2 }),
         }
     }
 
@@ -209,7 +215,9 @@ impl<const N: usize> Estimator for RollKf<N> {
             (2, 2) => self.tuning.bias_walk.powi(2) * dt_s,
             _ => 0.0,
         });
+        let before = self.kf;
         self.kf.predict_with(x, &phi, &qm);
+        self.cycle.predicted(&before, &phi, &qm, &self.kf);
         if let (Some(a), Some(w)) = (m.accel_body_g, m.gyro_axis_rad_s) {
             let z = nalgebra::Vector2::new(accel_angle_rad(&a), w);
             let h = SMatrix::<f64, 2, N>::from_fn(|i, j| match (i, j) {
@@ -222,11 +230,17 @@ impl<const N: usize> Estimator for RollKf<N> {
                 0.0,
                 self.tuning.sigma_rate_rad_s.powi(2).max(1e-18),
             );
+            let prior = self.kf;
             match self.kf.update(&z, &LinearObservation::new(h, r)) {
-                Ok(inn) => self.innovation = [inn.residual[0], inn.residual[1]],
+                Ok(inn) => {
+                    self.innovation = [inn.residual[0], inn.residual[1]];
+                    self.cycle
+                        .updated(&prior, &h, &r, CYCLE_ROWS_NAMED, &inn, &self.kf);
+                }
                 Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
             }
         }
+        self.cycle.finish(&self.kf, None);
     }
 
     fn estimate(&self) -> Estimate {
@@ -243,6 +257,10 @@ impl<const N: usize> Estimator for RollKf<N> {
 
     fn covariance_states(&self) -> &'static [StateInfo] {
         if N == 3 { STATES_3 } else { STATES_2 }
+    }
+
+    fn cycle(&self) -> Option<&KalmanCycle> {
+        Some(self.cycle.cycle())
     }
 
     fn covariance(&self) -> Option<Covariance<'_>> {

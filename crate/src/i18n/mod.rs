@@ -87,6 +87,12 @@ impl Lang {
                 include_str!("../../locales/ru/hints.ftl"),
                 include_str!("../../locales/ru/quantities.ftl"),
                 include_str!("../../locales/ru/studies.ftl"),
+                include_str!("../../locales/ru/lesson-free-rotation.ftl"),
+                include_str!("../../locales/ru/lesson-p1.ftl"),
+                include_str!("../../locales/ru/lesson-p2.ftl"),
+                include_str!("../../locales/ru/lesson-p3.ftl"),
+                include_str!("../../locales/ru/lesson-p4.ftl"),
+                include_str!("../../locales/ru/lesson-p5.ftl"),
             ],
         }
     }
@@ -234,8 +240,38 @@ pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static s
         }
     }
     out.extend(series::lab_series_words(lab));
+    if let Some(lesson) = lab.lesson() {
+        out.extend(lesson_words(id, lesson));
+    }
     // An empty English text (a parameter without help) has nothing to translate.
     out.retain(|(_, english)| !english.is_empty());
+    out
+}
+
+/// The id of a lesson's word: its title (`step` `None`, `part` `title`) or a part of step
+/// `step` (1-based): `title`, `text`, `ask`, `why` or `answer-<k>` (k 1-based).
+pub fn lesson_id(lab_id: &str, step: Option<usize>, part: &str) -> String {
+    match step {
+        Some(n) => format!("lesson-{lab_id}-{n}-{part}"),
+        None => format!("lesson-{lab_id}-{part}"),
+    }
+}
+
+/// A lesson's words: its title, each step's title and text, and each question's words.
+fn lesson_words(lab_id: &str, lesson: &crate::model::Lesson) -> Vec<(String, &'static str)> {
+    let mut out = vec![(lesson_id(lab_id, None, "title"), lesson.title)];
+    for (i, step) in lesson.steps.iter().enumerate() {
+        let n = Some(i + 1);
+        out.push((lesson_id(lab_id, n, "title"), step.title));
+        out.push((lesson_id(lab_id, n, "text"), step.text));
+        if let Some(q) = &step.question {
+            out.push((lesson_id(lab_id, n, "ask"), q.ask));
+            out.push((lesson_id(lab_id, n, "why"), q.why));
+            for (k, answer) in q.answers.iter().enumerate() {
+                out.push((lesson_id(lab_id, n, &format!("answer-{}", k + 1)), *answer));
+            }
+        }
+    }
     out
 }
 

@@ -44,7 +44,7 @@ fn every_message_formats_without_an_error_in_both() {
             let more = [
                 "lab", "state", "speed", "error", "band", "a", "b", "axis", "covered", "window",
                 "at", "param", "value", "rms", "lo", "hi", "best", "s", "ms", "item", "range",
-                "kept",
+                "kept", "k", "count", "answer",
             ];
             for name in words.into_iter().chain(more) {
                 args.set(name, "x");

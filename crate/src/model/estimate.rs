@@ -1,5 +1,6 @@
 //! What sensors deliver and what estimators publish.
 
+use super::cycle::KalmanCycle;
 use super::data::LabData;
 use super::params::ParamValues;
 use super::series::{Extras, Quantity};
@@ -308,4 +309,9 @@ pub trait Estimator: Send {
     }
     /// Writes the internals of [`Estimator::extra_quantities`] into `out` (same length).
     fn extras(&self, _out: &mut Extras<'_>) {}
+    /// The last predict/update cycle as numbers, for a filter small enough to show one
+    /// (the page's step-through panel).
+    fn cycle(&self) -> Option<&KalmanCycle> {
+        None
+    }
 }

@@ -2,6 +2,7 @@
 
 use super::data::LabData;
 use super::estimate::{Estimator, Measurements};
+use super::lesson::Lesson;
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
 use super::report::{ReproError, Reproduction};
@@ -175,6 +176,10 @@ pub trait Lab: Sync {
     }
     /// A live table of each estimator's accuracy beside the paper's, if the paper has one.
     fn accuracy_table(&self) -> Option<AccuracyTable> {
+        None
+    }
+    /// The lab's guided lesson (its steps are data in the lab's folder, `lesson.rs`).
+    fn lesson(&self) -> Option<&'static Lesson> {
         None
     }
 }

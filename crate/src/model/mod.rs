@@ -6,10 +6,12 @@
 //! math → model → dynamics, sensors, estimators → record, sim → analysis → labs → state, bin
 //! ```
 
+mod cycle;
 mod data;
 mod estimate;
 mod key;
 mod lab;
+mod lesson;
 mod log;
 mod page;
 mod params;
@@ -18,6 +20,7 @@ mod report;
 mod series;
 mod study;
 
+pub use cycle::{CYCLE_ROWS, CYCLE_STATES, CycleUpdate, KalmanCycle, StateMatrix, StateVector};
 pub use data::LabData;
 pub use estimate::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Outputs, STATUS_OK,
@@ -27,6 +30,7 @@ pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 pub use lab::{
     AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
 };
+pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
 pub use log::{LogFormat, LogLineError, RateLog};
 pub use page::{
     BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,

@@ -28,6 +28,9 @@ pub use layout::Layout;
 pub use rerun::{RerunError, RerunItem, RerunJob};
 pub use selection::{Selection, UnknownSeries};
 
+/// Speeds the page offers (simulated seconds per wall-clock second).
+pub const SPEED_RANGE: (f64, f64) = (0.1, 1000.0);
+
 use crate::model::{
     Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
     SeriesGroup, SeriesKey, SeriesSpec, TruthState,

@@ -36,9 +36,14 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// Everything of the controls below the run buttons: presets, parameters, tools, outputs,
 /// messages and the explanation (presenter mode: the presets, the rest behind one click).
 pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    super::lesson::card(ui, app, commands);
     if app.view().presenter {
-        // For the projector: the presets carry the lesson; the sliders wait behind one click.
-        presets(ui, app, commands);
+        // For the projector: the presets (or the lesson step's own sliders) carry the
+        // lesson; the other sliders wait behind one click.
+        match app.lesson_step().filter(|s| !s.highlight.is_empty()) {
+            Some(step) => super::sliders::slider_rows(ui, app, commands, Some(step.highlight)),
+            None => presets(ui, app, commands),
+        }
         egui::CollapsingHeader::new(tr(app, "all-parameters"))
             .default_open(false)
             .show(ui, |ui| parameters(ui, app, commands));
@@ -228,6 +233,9 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if app.view().hides(attlab::state::ALL_CONTROLS) {
+        return;
+    }
     ui.horizontal(|ui| {
         ui.strong(tr(app, "parameters"));
         if ui.small_button(tr(app, "defaults")).clicked() {
@@ -237,51 +245,8 @@ fn parameters(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if !app.view().presenter {
         presets(ui, app, commands);
     }
-    for spec in app.sim().lab().params() {
-        let value = app.sim().params().get(spec.key);
-        let active = spec
-            .requires
-            .is_none_or(|k| app.sim().params().get(k) != 0.0);
-        let changed = ui
-            .add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
-            .inner;
-        if let Some(v) = changed {
-            commands.push(Command::from(RunCommand::SetParam(spec.key, v)));
-        }
-    }
-    pending_reset(ui, app, commands);
-}
-
-/// A line naming the reset-only parameters that were moved and wait for Reset, with the
-/// button that applies them (until then the run goes on unchanged).
-fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let pending = app.sim().pending_reset();
-    if pending.is_empty() {
-        return;
-    }
-    let specs = app.sim().lab().params();
-    let labels: Vec<String> = pending
-        .iter()
-        .filter_map(|k| specs.iter().find(|s| s.key == *k))
-        .map(|s| {
-            let id = i18n::param_label_id(app.sim().lab().id(), s.key);
-            i18n::lab_text(app.view().lang(), &id, s.label)
-        })
-        .collect();
-    ui.horizontal_wrapped(|ui| {
-        ui.label(tr_with(
-            app,
-            "waiting-for-reset",
-            &[("names", arg(labels.join(", ")))],
-        ));
-        if ui
-            .small_button(tr(app, "reset-now"))
-            .on_hover_text(tr(app, "reset-now-hint"))
-            .clicked()
-        {
-            commands.push(Command::from(RunCommand::Reset));
-        }
-    });
+    super::sliders::slider_rows(ui, app, commands, None);
+    super::sliders::pending_reset(ui, app, commands);
 }
 
 /// One widget for one parameter; returns the new value if the user changed it.
@@ -407,6 +372,13 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .clicked()
         {
             commands.push(Command::from(UrlCommand::CopyLink));
+        }
+        if ui
+            .button(tr(app, "share"))
+            .on_hover_text(tr(app, "share-hint"))
+            .clicked()
+        {
+            commands.push(Command::from(crate::state::ShareCommand::Open));
         }
         if ui
             .button(tr(app, "copy-python"))

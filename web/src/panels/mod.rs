@@ -4,20 +4,30 @@
 
 mod central;
 mod controls;
+mod cycle;
 mod keys;
 mod lab_tools;
+mod lesson;
 mod narration;
 mod narrow;
+mod share;
 mod slider_keys;
+mod sliders;
 mod sweeps;
 mod tabs;
+mod tiles;
 
 pub use central::central;
 pub use controls::controls;
+pub use cycle::{
+    cycle_panel, matrix as cycle_matrix, num as cycle_num, shown_filter, vector as cycle_vector,
+};
 pub use keys::{focus_ring, help_dialog, shortcuts, tabs};
 pub use narration::{Narration, describe as describe_run};
 pub use narrow::{bar as narrow_bar, is_narrow, sheet as narrow_sheet, touch_style};
+pub use share::share_dialog;
 pub use slider_keys::rail_position;
+pub use tiles::tiles;
 
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n::{self, FluentValue};

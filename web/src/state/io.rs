@@ -75,7 +75,13 @@ impl AppState {
                 self.drop_jobs();
                 let (lab, params) = (self.sim.lab(), self.sim.params().clone());
                 self.sim.release_recorder();
-                self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+                self.sim = simulation(
+                    lab,
+                    params,
+                    self.run.seed,
+                    self.view.plots.tab,
+                    self.tiles(),
+                );
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {

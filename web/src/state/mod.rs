@@ -13,15 +13,19 @@
 
 mod io;
 mod jobs;
+mod lesson;
 mod link_words;
 mod run;
+mod share;
 mod url;
 mod view;
 
 pub use io::{IoCommand, IoState};
 pub use jobs::Job;
+pub use lesson::{LessonCommand, LessonState};
 pub use link_words::link_problem;
 pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
+pub use share::{QrModules, ShareCommand, ShareOptions, qr};
 pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};
 
@@ -69,6 +73,10 @@ pub enum Command {
     Io(IoCommand),
     /// The link.
     Url(UrlCommand),
+    /// The lesson.
+    Lesson(LessonCommand),
+    /// The share dialog.
+    Share(ShareCommand),
     /// Show this message.
     Notify(Message),
     /// Remove message `i`.
@@ -90,6 +98,18 @@ impl From<ViewCommand> for Command {
 impl From<IoCommand> for Command {
     fn from(c: IoCommand) -> Self {
         Self::Io(c)
+    }
+}
+
+impl From<LessonCommand> for Command {
+    fn from(c: LessonCommand) -> Self {
+        Self::Lesson(c)
+    }
+}
+
+impl From<ShareCommand> for Command {
+    fn from(c: ShareCommand) -> Self {
+        Self::Share(c)
     }
 }
 
@@ -140,6 +160,10 @@ pub struct AppState {
     /// The bad items of the link the page opened with, in words (shown at the top until
     /// dismissed).
     link_problems: Vec<String>,
+    /// The lesson under way, if any.
+    lesson: Option<LessonState>,
+    /// The share dialog's choices, while it is open.
+    share: Option<ShareOptions>,
 }
 
 impl AppState {
@@ -147,13 +171,15 @@ impl AppState {
     pub fn new(lab: &'static dyn Lab, params: ParamValues, seed: u64, speed: f64) -> Self {
         let view = ViewState::for_lab(lab);
         Self {
-            sim: run::simulation(lab, params, seed, view.plots.tab),
+            sim: run::simulation(lab, params, seed, view.plots.tab, &[]),
             run: RunState::new(seed, speed),
             view,
             io: IoState::default(),
             url: url::UrlSync::default(),
             messages: Vec::new(),
             link_problems: Vec::new(),
+            lesson: None,
+            share: None,
         }
     }
 
@@ -168,6 +194,11 @@ impl AppState {
         state.view.browser_lang = crate::platform::browser_lang();
         let lang = state.view.lang();
         state.link_problems = errors.iter().map(|e| link_problem(lang, lab, e)).collect();
+        state.view.hide = url.hide;
+        state.view.lock = url.lock;
+        if let Some(link) = &url.lesson {
+            state.open_lesson_link(link);
+        }
         state
     }
 
@@ -209,6 +240,8 @@ impl AppState {
             Command::View(c) => self.apply_view(c),
             Command::Io(c) => return self.apply_io(c),
             Command::Url(c) => return self.apply_url(c),
+            Command::Lesson(c) => self.apply_lesson(c),
+            Command::Share(c) => return self.apply_share(c),
             Command::Notify(m) => self.messages.push(m),
             Command::Dismiss(i) => {
                 if i < self.messages.len() {

@@ -4,7 +4,7 @@
 
 use super::{AppState, ViewState, jobs::Job};
 use attlab::analysis::sweep::Sweep;
-use attlab::model::{Lab, ParamValues, PlotTab};
+use attlab::model::{Lab, ParamValues, PlotTab, SeriesKey};
 use attlab::sim::{Simulation, default_tab};
 use web_time::{Duration, Instant};
 
@@ -43,6 +43,8 @@ pub struct RunState {
     pub sweep: Option<(usize, Sweep)>,
     /// Re-runs and exports under way, the first one advancing.
     pub(super) jobs: Vec<Job>,
+    /// The run pauses on reaching this time (s): a lesson step's picture.
+    pub pause_at_s: Option<f64>,
     last_frame: Option<Instant>,
     step_debt: f64,
 }
@@ -57,9 +59,15 @@ impl RunState {
             stats: Stats::default(),
             sweep: None,
             jobs: Vec::new(),
+            pause_at_s: None,
             last_frame: None,
             step_debt: 0.0,
         }
+    }
+
+    /// The clock starts over (a new run): no steps owed.
+    pub(super) fn reset_clock(&mut self) {
+        self.step_debt = 0.0;
     }
 
     /// The job advancing now (a re-run for a plot, an export), if any.
@@ -130,7 +138,13 @@ impl AppState {
                 let params = ParamValues::defaults(lab.params());
                 self.drop_jobs();
                 self.sim.release_recorder();
-                self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+                self.sim = simulation(
+                    lab,
+                    params,
+                    self.run.seed,
+                    self.view.plots.tab,
+                    self.tiles(),
+                );
                 self.io.replaying = None;
             }
             RunCommand::SetPlaying(on) => self.run.playing = on,
@@ -164,7 +178,11 @@ impl AppState {
     }
 
     fn select_lab(&mut self, lab: &'static dyn Lab) {
+        self.lesson = None;
+        self.run.pause_at_s = None;
         self.view = ViewState {
+            hide: std::mem::take(&mut self.view.hide),
+            lock: std::mem::take(&mut self.view.lock),
             presenter: self.view.presenter,
             theme: self.view.theme,
             lang: self.view.lang,
@@ -176,7 +194,13 @@ impl AppState {
         self.sim.release_recorder();
         self.run.sweep = None;
         let params = ParamValues::defaults(lab.params());
-        self.sim = simulation(lab, params, self.run.seed, self.view.plots.tab);
+        self.sim = simulation(
+            lab,
+            params,
+            self.run.seed,
+            self.view.plots.tab,
+            self.tiles(),
+        );
         self.io.replaying = None;
         self.run.step_debt = 0.0;
     }
@@ -257,6 +281,15 @@ impl AppState {
         let mut steps = 0u32;
         run.stats.behind = false;
         while run.step_debt >= 1.0 {
+            if run
+                .pause_at_s
+                .is_some_and(|t| self.sim.t_s() >= t - 0.5 * self.sim.dt_s())
+            {
+                run.pause_at_s = None;
+                run.playing = false;
+                run.step_debt = 0.0;
+                break;
+            }
             self.sim.step();
             run.step_debt -= 1.0;
             steps += 1;
@@ -274,19 +307,23 @@ impl AppState {
     }
 }
 
-/// A simulation recording what `tab` shows.
+/// A simulation recording what `tab` shows and the lesson step's `tiles`.
 pub(super) fn simulation(
     lab: &'static dyn Lab,
     params: ParamValues,
     seed: u64,
     tab: PlotTab,
+    tiles: &[SeriesKey],
 ) -> Simulation {
     let mut sim = Simulation::new(lab, params, seed);
-    if tab == default_tab(lab) {
+    let has_tiles = tiles
+        .iter()
+        .all(|t| sim.specs().iter().any(|s| t.is(&s.name)));
+    if tab == default_tab(lab) && has_tiles {
         return sim;
     }
     // At t = 0 the re-run is immediate; on an error the run records the default tab's series.
-    let selection = super::view_selection(&sim, tab);
+    let selection = super::view_selection(&sim, tab, tiles);
     let _ = sim.reselect(selection);
     sim
 }

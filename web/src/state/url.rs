@@ -51,6 +51,9 @@ impl AppState {
             presenter: self.view.presenter,
             theme: self.view.theme,
             lang: self.view.lang,
+            lesson: self.lesson.as_ref().map(super::LessonState::link),
+            hide: self.view.hide.clone(),
+            lock: self.view.lock.clone(),
         }
         .encode()
     }

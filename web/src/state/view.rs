@@ -5,7 +5,7 @@
 use super::AppState;
 use crate::render::plots::PlotState;
 use attlab::i18n::Lang;
-use attlab::model::{Lab, PlotTab};
+use attlab::model::{Lab, PlotTab, SeriesKey};
 use attlab::sim::{Selection, Simulation};
 use attlab::state::Theme;
 
@@ -60,12 +60,32 @@ pub struct ViewState {
     pub narrow_view: usize,
     /// The keyboard dialog is open (key ? or F1, or its button).
     pub keys_help: bool,
+    /// Parameters whose controls are hidden (`hide=` in the link; `all` for every one).
+    pub hide: Vec<String>,
+    /// Parameters whose controls are shown locked (`lock=` in the link; `all`).
+    pub lock: Vec<String>,
+    /// The filter-cycle panel is open.
+    pub cycle_open: bool,
 }
 
 impl ViewState {
     /// The language shown: the one chosen, else the browser's.
     pub fn lang(&self) -> Lang {
         self.lang.unwrap_or(self.browser_lang)
+    }
+
+    /// Whether the control of parameter `key` is hidden by the link.
+    pub fn hides(&self, key: &str) -> bool {
+        self.hide
+            .iter()
+            .any(|h| h == key || h == attlab::state::ALL_CONTROLS)
+    }
+
+    /// Whether the control of parameter `key` is locked by the link.
+    pub fn locks(&self, key: &str) -> bool {
+        self.lock
+            .iter()
+            .any(|h| h == key || h == attlab::state::ALL_CONTROLS)
     }
 
     /// The theme shown: the one chosen, else light in presenter mode and dark otherwise.
@@ -88,6 +108,9 @@ impl ViewState {
             sheet_open: false,
             narrow_view: 0,
             keys_help: false,
+            hide: Vec::new(),
+            lock: Vec::new(),
+            cycle_open: false,
         }
     }
 }
@@ -123,6 +146,8 @@ pub enum ViewCommand {
     ShowNarrowView(usize),
     /// Open or close the keyboard dialog.
     SetKeysHelp(bool),
+    /// Open or close the filter-cycle panel.
+    SetCycle(bool),
 }
 
 impl AppState {
@@ -149,6 +174,7 @@ impl AppState {
             ViewCommand::SetLang(lang) => view.lang = Some(lang),
             ViewCommand::SetSheet(open) => view.sheet_open = open,
             ViewCommand::SetKeysHelp(open) => view.keys_help = open,
+            ViewCommand::SetCycle(open) => view.cycle_open = open,
             ViewCommand::ShowNarrowView(k) => {
                 if k < self.sim.lab().page().views.len() {
                     view.narrow_view = k;
@@ -162,7 +188,7 @@ impl AppState {
     /// the new plot covers the whole run too.
     fn select_tab(&mut self, tab: PlotTab) {
         self.view.plots.tab = tab;
-        let selection = view_selection(&self.sim, tab);
+        let selection = view_selection(&self.sim, tab, self.tiles());
         let Selection::View(wanted) = &selection else {
             return;
         };
@@ -182,7 +208,14 @@ impl AppState {
     }
 }
 
-/// What the page records while `tab` is shown (see [`Selection::for_tab`]).
-pub fn view_selection(sim: &Simulation, tab: PlotTab) -> Selection {
-    Selection::for_tab(sim.lab(), sim.available_specs(), tab)
+/// What the page records while `tab` is shown (see [`Selection::for_tab`]), and the lesson
+/// step's `tiles`.
+pub fn view_selection(sim: &Simulation, tab: PlotTab, tiles: &[SeriesKey]) -> Selection {
+    match Selection::for_tab(sim.lab(), sim.available_specs(), tab) {
+        Selection::View(mut names) => {
+            names.extend(tiles.iter().map(SeriesKey::name));
+            Selection::View(names)
+        }
+        other => other,
+    }
 }

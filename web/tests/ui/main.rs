@@ -13,6 +13,7 @@ use egui_kittest::kittest::{NodeT, Queryable};
 
 mod a11y;
 mod keyboard;
+mod lessons;
 mod narrow;
 mod png;
 
@@ -355,6 +356,9 @@ fn a_reset_only_slider_waits_for_reset_and_says_so() {
         "the run goes on unchanged"
     );
     h.get_by_label("Waiting for Reset: Gyro output rate.");
+    // The controls scroll: bring the button into the window first, as a reader would.
+    h.get_by_label("Reset now").scroll_to_me();
+    h.run();
     h.get_by_label("Reset now").click();
     h.run();
     let sim = &h.state().state.sim();

@@ -4,6 +4,7 @@
 //! intermediate axis the body flips over and over (Dzhanibekov effect), which sends w
 //! through ∞ and exercises the chart switch of the (u, v, z) integrator.
 
+mod lesson;
 mod page;
 mod params;
 mod reproduce;
@@ -50,6 +51,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for FreeRotation {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

@@ -4,6 +4,7 @@
 //! KIAM RAS preprint). Estimators: direct integration, the permanent-rotation KF and the
 //! torsional KF, each with covariance matching over a window of N measurements (or none).
 
+mod lesson;
 mod reproduce;
 
 use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
@@ -273,6 +274,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for SuspendedMockup {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

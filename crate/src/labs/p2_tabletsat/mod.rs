@@ -4,6 +4,7 @@
 //! (Table 1) feed every EKF variant of Table 2 at once, beside the reduced [λ, Δω] variant,
 //! the parallel disturbance filter (§3.2) and the constant-gain filter (§3.3).
 
+mod lesson;
 mod reproduce;
 pub mod sensors;
 pub mod sets;
@@ -343,6 +344,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for TabletSat {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

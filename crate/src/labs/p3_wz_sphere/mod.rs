@@ -8,6 +8,7 @@
 //! (eq. 28), the paper's HPF/LPF blend (Fig. 9), a Kalman filter in (u, v), and quaternion
 //! integration for comparison.
 
+mod lesson;
 mod reproduce;
 
 use crate::dynamics::{AngleProfile, EulerMotion, RigidBody, RigidBodyState};
@@ -248,6 +249,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for WzSphere {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

@@ -4,6 +4,7 @@
 //! number here that is not the paper's is marked "ours" in the help and the README.
 
 pub mod keys;
+mod lesson;
 mod mpu6050;
 mod plant;
 mod reproduce;
@@ -218,6 +219,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for QuadrotorRoll {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

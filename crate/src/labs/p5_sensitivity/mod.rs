@@ -5,6 +5,7 @@
 //! through U = ∂Λ/∂p. The paper's three update rules and a re-integrating variant run side by
 //! side on the same measurements.
 
+mod lesson;
 mod page;
 mod params;
 mod reproduce;
@@ -54,6 +55,9 @@ const PAGE: Page = Page {
 };
 
 impl Lab for SensitivityLab {
+    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+        Some(&lesson::LESSON)
+    }
     fn spec(&self) -> &'static LabSpec {
         &SPEC
     }

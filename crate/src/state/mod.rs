@@ -10,6 +10,8 @@ use crate::labs;
 use crate::model::{Lab, ParamError, ParamValues};
 use thiserror::Error;
 
+mod lesson;
+
 /// What a URL fragment asks for.
 #[derive(Clone, Debug, PartialEq)]
 pub struct UrlState {
@@ -27,6 +29,45 @@ pub struct UrlState {
     pub theme: Option<Theme>,
     /// The language asked for; `None` follows the reader's browser.
     pub lang: Option<Lang>,
+    /// The lab's lesson at a step, with the reader's answers (`lesson=p2&step=4&answers=2b`).
+    pub lesson: Option<LessonLink>,
+    /// Parameters whose controls the page hides (`hide=key.key`, `all` for every one).
+    pub hide: Vec<String>,
+    /// Parameters whose controls the page shows but locks (`lock=key.key`, or `all`).
+    pub lock: Vec<String>,
+}
+
+/// Where a link opens a lesson, and the answers chosen so far.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LessonLink {
+    /// The step (1-based).
+    pub step: usize,
+    /// (step, answer), both 1-based, in the order given: `answers=2b.5a` is step 2's second
+    /// answer and step 5's first.
+    pub answers: Vec<(usize, usize)>,
+}
+
+impl LessonLink {
+    /// The link's spelling of the answers: step number and answer letter, dot separated.
+    pub fn encode_answers(&self) -> String {
+        self.answers
+            .iter()
+            .map(|(step, answer)| format!("{step}{}", char::from(b'a' + (*answer as u8 - 1))))
+            .collect::<Vec<_>>()
+            .join(".")
+    }
+}
+
+/// The word a link uses for every parameter in `hide=` and `lock=`.
+pub const ALL_CONTROLS: &str = "all";
+
+/// The parameters a lab opens with for a lesson step (its defaults without one); a link's
+/// parameters are given relative to these.
+pub fn base_params(lab: &'static dyn Lab, lesson: Option<&LessonLink>) -> ParamValues {
+    lesson
+        .and_then(|l| lab.lesson()?.step(l.step))
+        .and_then(|step| crate::lessons::step_params(lab, step).ok())
+        .unwrap_or_else(|| ParamValues::defaults(lab.params()))
 }
 
 /// The page's colour theme.
@@ -53,8 +94,7 @@ impl Theme {
     }
 }
 
-/// Speeds the UI offers (× real time).
-pub const SPEED_RANGE: (f64, f64) = (0.1, 1000.0);
+pub use crate::sim::SPEED_RANGE;
 
 /// One bad item in a URL fragment.
 #[derive(Clone, Debug, Error, PartialEq)]
@@ -82,6 +122,9 @@ impl UrlState {
             presenter: false,
             theme: None,
             lang: None,
+            lesson: None,
+            hide: Vec::new(),
+            lock: Vec::new(),
         }
     }
 
@@ -101,10 +144,23 @@ impl UrlState {
         if let Some(lang) = self.lang {
             out.append_pair("lang", lang.code());
         }
+        if let Some(lesson) = &self.lesson {
+            out.append_pair("lesson", self.lab_id)
+                .append_pair("step", &lesson.step.to_string());
+            if !lesson.answers.is_empty() {
+                out.append_pair("answers", &lesson.encode_answers());
+            }
+        }
+        for (key, list) in [("hide", &self.hide), ("lock", &self.lock)] {
+            if !list.is_empty() {
+                out.append_pair(key, &list.join("."));
+            }
+        }
         if let Some(lab) = labs::find(self.lab_id) {
+            let base = base_params(lab, self.lesson.as_ref());
             for spec in lab.params() {
                 if let Ok(v) = self.params.try_get(spec.key)
-                    && v != spec.default
+                    && Ok(v) != base.try_get(spec.key)
                 {
                     out.append_pair(spec.key, &v.to_string());
                 }
@@ -151,12 +207,22 @@ impl UrlState {
                 }
             }
         }
+        let lesson_items = items
+            .iter()
+            .filter(|(_, k, _, _)| k == "lesson" || k == "step")
+            .map(|(pos, k, v, item)| (*pos, k.as_str(), v.as_deref().unwrap_or(""), *item));
+        let (lab, lesson) = lesson::parse(lab, lesson_items, &mut errors);
         let mut state = Self::defaults(lab);
+        state.params = base_params(lab, lesson.as_ref());
+        state.lesson = lesson;
         for (pos, key, value, item) in &items {
             let Some(value) = value else {
                 errors.push(err(*pos, item, "expected key=value".into()));
                 continue;
             };
+            if matches!(key.as_str(), "lesson" | "step") {
+                continue;
+            }
             if let Err((reason, param)) = state.apply_item(lab, key, value) {
                 errors.push(UrlStateError {
                     param,
@@ -175,6 +241,9 @@ impl UrlState {
         key: &str,
         value: &str,
     ) -> Result<(), (String, Option<ParamError>)> {
+        if matches!(key, "answers" | "hide" | "lock") {
+            return lesson::apply_list(self, lab, key, value).map_err(|reason| (reason, None));
+        }
         if !matches!(
             key,
             "lab" | "seed" | "speed" | "presenter" | "theme" | "lang"

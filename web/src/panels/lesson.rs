@@ -1,0 +1,142 @@
+//! The lesson card: the step's title and text beside the model, its question (predict, then
+//! see), and the way on (back, next, end). It sits at the top of the controls, so the sliders
+//! the step points at are just below it; "Start the lesson" opens it.
+
+use super::{arg, lab_word, tr, tr_with};
+use crate::state::{AppState, Command, LessonCommand, ShareCommand, ViewCommand};
+use attlab::i18n::lesson_id;
+use attlab::model::{Lesson, Question};
+use egui::{RichText, Ui};
+
+/// The lesson's word `part` of step `n` (or of the lesson, `n` = `None`).
+fn word(app: &AppState, n: Option<usize>, part: &str, english: &str) -> String {
+    lab_word(app, &lesson_id(app.sim().lab().id(), n, part), english)
+}
+
+/// "Start the lesson" when the lab has one and none is open; the card when one is.
+pub(super) fn card(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let Some(lesson) = app.sim().lab().lesson() else {
+        return;
+    };
+    let Some(state) = app.lesson() else {
+        let title = word(app, None, "title", lesson.title);
+        if ui
+            .button(RichText::new(tr(app, "lesson-start")).strong())
+            .on_hover_text(title)
+            .clicked()
+        {
+            commands.push(LessonCommand::Start.into());
+        }
+        return;
+    };
+    let Some(step) = lesson.step(state.step) else {
+        return;
+    };
+    egui::Frame::group(ui.style())
+        .fill(ui.visuals().faint_bg_color)
+        .show(ui, |ui| {
+            heading(ui, app, lesson, state.step);
+            let n = Some(state.step);
+            ui.label(
+                RichText::new(word(app, n, "title", step.title))
+                    .strong()
+                    .size(ui.style().text_styles[&egui::TextStyle::Heading].size * 0.85),
+            );
+            ui.label(word(app, n, "text", step.text));
+            if let Some(q) = &step.question {
+                question(ui, app, q, state.step, state.answer(state.step), commands);
+            }
+            navigation(ui, app, lesson, state.step, commands);
+        });
+}
+
+/// "Lesson: title · step k of n".
+fn heading(ui: &mut Ui, app: &AppState, lesson: &Lesson, n: usize) {
+    let title = word(app, None, "title", lesson.title);
+    let of = tr_with(
+        app,
+        "lesson-step",
+        &[("n", arg(n)), ("count", arg(lesson.steps.len()))],
+    );
+    ui.label(RichText::new(format!("{title} · {of}")).small().weak());
+}
+
+/// The question, its answers as buttons, and, once the run has shown it, the answer.
+fn question(
+    ui: &mut Ui,
+    app: &AppState,
+    q: &Question,
+    n: usize,
+    chosen: Option<usize>,
+    commands: &mut Vec<Command>,
+) {
+    ui.add_space(4.0);
+    ui.label(RichText::new(word(app, Some(n), "ask", q.ask)).strong());
+    if chosen.is_none() {
+        ui.label(RichText::new(tr(app, "lesson-predict")).small().weak());
+    }
+    for (k, english) in q.answers.iter().enumerate() {
+        let text = word(app, Some(n), &format!("answer-{}", k + 1), english);
+        let letter = char::from(b'a' + k as u8);
+        let mut label = RichText::new(format!("{letter}) {text}"));
+        if app.lesson_revealed() && k == q.answer {
+            label = label.strong().color(ui.visuals().selection.stroke.color);
+        }
+        if ui.selectable_label(chosen == Some(k + 1), label).clicked() {
+            commands.push(LessonCommand::Answer(k + 1).into());
+        }
+    }
+    let Some(_) = chosen else {
+        return;
+    };
+    if app.lesson_revealed() {
+        let answer = word(
+            app,
+            Some(n),
+            &format!("answer-{}", q.answer + 1),
+            q.answers[q.answer],
+        );
+        let shows = tr_with(app, "lesson-shows", &[("answer", arg(answer))]);
+        ui.label(RichText::new(shows).strong());
+        ui.label(word(app, Some(n), "why", q.why));
+    } else if let Some(t) = app.run().pause_at_s {
+        ui.label(RichText::new(tr_with(app, "lesson-running", &[("t", arg(t))])).weak());
+    }
+}
+
+/// Back, next, the tools a lesson uses (share, the filter's cycle) and the way out.
+fn navigation(ui: &mut Ui, app: &AppState, lesson: &Lesson, n: usize, commands: &mut Vec<Command>) {
+    ui.horizontal_wrapped(|ui| {
+        if ui
+            .add_enabled(n > 1, egui::Button::new(tr(app, "lesson-back")))
+            .clicked()
+        {
+            commands.push(LessonCommand::Go(n - 1).into());
+        }
+        if ui
+            .add_enabled(
+                n < lesson.steps.len(),
+                egui::Button::new(tr(app, "lesson-next")),
+            )
+            .clicked()
+        {
+            commands.push(LessonCommand::Go(n + 1).into());
+        }
+        if ui.button(tr(app, "lesson-again")).clicked() {
+            commands.push(LessonCommand::Go(n).into());
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        if ui.small_button(tr(app, "share")).clicked() {
+            commands.push(ShareCommand::Open.into());
+        }
+        if app.sim().estimators().iter().any(|e| e.cycle().is_some())
+            && ui.small_button(tr(app, "cycle-open")).clicked()
+        {
+            commands.push(ViewCommand::SetCycle(!app.view().cycle_open).into());
+        }
+        if ui.small_button(tr(app, "lesson-end")).clicked() {
+            commands.push(LessonCommand::Close.into());
+        }
+    });
+}

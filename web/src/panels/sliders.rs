@@ -1,0 +1,80 @@
+//! The lab's sliders as the controls list them: the link's hidden controls left out, its
+//! locked ones disabled, the lesson step's own outlined; and the line naming the reset-only
+//! parameters that wait for Reset.
+
+use super::controls::param_widget;
+use super::{arg, tr, tr_with};
+use crate::state::{AppState, Command, RunCommand};
+use attlab::i18n;
+use egui::Ui;
+
+/// The lab's sliders (only `only`'s when given) less those the link hides; those it locks
+/// are shown disabled, and those the lesson step points at are outlined.
+pub(super) fn slider_rows(
+    ui: &mut Ui,
+    app: &AppState,
+    commands: &mut Vec<Command>,
+    only: Option<&[&str]>,
+) {
+    let highlight = app.lesson_step().map_or(&[][..], |s| s.highlight);
+    for spec in app.sim().lab().params() {
+        if app.view().hides(spec.key) || only.is_some_and(|keys| !keys.contains(&spec.key)) {
+            continue;
+        }
+        let value = app.sim().params().get(spec.key);
+        let active = !app.view().locks(spec.key)
+            && spec
+                .requires
+                .is_none_or(|k| app.sim().params().get(k) != 0.0);
+        let row = |ui: &mut Ui| {
+            ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
+                .inner
+        };
+        let changed = if highlight.contains(&spec.key) {
+            let stroke = egui::Stroke::new(2.0, ui.visuals().selection.stroke.color);
+            egui::Frame::new()
+                .stroke(stroke)
+                .inner_margin(3.0)
+                .corner_radius(4.0)
+                .show(ui, row)
+                .inner
+        } else {
+            row(ui)
+        };
+        if let Some(v) = changed {
+            commands.push(Command::from(RunCommand::SetParam(spec.key, v)));
+        }
+    }
+}
+
+/// A line naming the reset-only parameters that were moved and wait for Reset, with the
+/// button that applies them (until then the run goes on unchanged).
+pub(super) fn pending_reset(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let pending = app.sim().pending_reset();
+    if pending.is_empty() {
+        return;
+    }
+    let specs = app.sim().lab().params();
+    let labels: Vec<String> = pending
+        .iter()
+        .filter_map(|k| specs.iter().find(|s| s.key == *k))
+        .map(|s| {
+            let id = i18n::param_label_id(app.sim().lab().id(), s.key);
+            i18n::lab_text(app.view().lang(), &id, s.label)
+        })
+        .collect();
+    ui.horizontal_wrapped(|ui| {
+        ui.label(tr_with(
+            app,
+            "waiting-for-reset",
+            &[("names", arg(labels.join(", ")))],
+        ));
+        if ui
+            .small_button(tr(app, "reset-now"))
+            .on_hover_text(tr(app, "reset-now-hint"))
+            .clicked()
+        {
+            commands.push(Command::from(RunCommand::Reset));
+        }
+    });
+}
