@@ -4,7 +4,7 @@
 // (and refreshes the cache); without a network the last build seen is served. Only
 // same-origin GET requests are handled. The core files are cached at install, so the first
 // visit alone is enough.
-const CACHE = 'attitude-lab-v2';
+const CACHE = 'attitude-lab-v3';
 const CORE = [
   './',
   './index.html',
@@ -16,6 +16,7 @@ const CORE = [
   './assets/fonts/AttLabSans.ttf',
   './assets/fonts/AttLabMono.ttf',
   './assets/fonts/DejaVuSans-symbols.ttf',
+  './assets/locales/ru.ftl',
 ];
 
 self.addEventListener('install', (event) => {

@@ -292,7 +292,12 @@ mod tests {
         let png = encode(&ramp()).expect("encodes");
         let decoder = png::Decoder::new(std::io::Cursor::new(png.bytes));
         let mut reader = decoder.read_info().expect("a PNG");
-        let mut buf = vec![0; reader.output_buffer_size()];
+        let mut buf = vec![
+            0;
+            reader
+                .output_buffer_size()
+                .expect("the PNG's size fits in memory")
+        ];
         let info = reader.next_frame(&mut buf).expect("one frame");
         assert_eq!((info.width, info.height), (20, 10));
         let at = |x: usize, y: usize| &buf[(y * 20 + x) * 4..(y * 20 + x) * 4 + 4];

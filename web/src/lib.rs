@@ -20,7 +20,9 @@ pub mod state;
 pub use app::AttLabApp;
 
 /// Starts the app on the canvas with id `canvas_id` with the page's three fonts (sans,
-/// mono, symbols: `render::fonts::FILES`, fetched by `index.html` beside the wasm).
+/// mono, symbols: `render::fonts::FILES`) and its Russian catalogue (`assets/locales/ru.ftl`),
+/// all fetched by `index.html` beside the wasm. Without the catalogue (an empty string: the
+/// fetch failed) the page still runs, in English.
 #[cfg(target_arch = "wasm32")]
 #[wasm_bindgen::prelude::wasm_bindgen]
 pub async fn start(
@@ -28,6 +30,7 @@ pub async fn start(
     sans: Vec<u8>,
     mono: Vec<u8>,
     symbols: Vec<u8>,
+    russian: String,
 ) -> Result<(), wasm_bindgen::JsValue> {
     use wasm_bindgen::JsCast as _;
     let _ = eframe::WebLogger::init(log::LevelFilter::Info);
@@ -35,6 +38,11 @@ pub async fn start(
         return Err("a font file of assets/fonts/ arrived empty".into());
     }
     render::fonts::provide(sans, mono, symbols);
+    if russian.is_empty() {
+        log::warn!("the Russian catalogue (assets/locales/ru.ftl) did not arrive: English only");
+    } else {
+        attlab::i18n::provide_russian(russian);
+    }
     let document = web_sys::window()
         .and_then(|w| w.document())
         .ok_or("no document")?;

@@ -52,6 +52,7 @@ pub fn build(optimise: bool) -> Result<PathBuf> {
     if assets.is_dir() {
         copy_dir(&assets, &dist.join("assets"))?;
     }
+    join_russian(&dist.join("assets/locales/ru.ftl"))?;
     report_size(&bg)?;
     println!("xtask: site ready in {}", dist.display());
     Ok(dist)
@@ -204,6 +205,30 @@ fn human(bytes: usize) -> String {
 /// Reads a whole file, with the path in the error.
 fn read(path: &Path) -> Result<Vec<u8>> {
     fs::read(path).map_err(|e| format!("reading {}: {e}", path.display()).into())
+}
+
+/// Writes every `.ftl` file of `crate/locales/ru/`, in name order, into one file `to`: the
+/// Russian catalogue the page fetches beside its wasm (the native binary includes the same
+/// files; a test of `attlab::i18n` checks the two agree).
+fn join_russian(to: &Path) -> Result<()> {
+    let dir = cmd::root().join("crate/locales/ru");
+    let mut files: Vec<PathBuf> = fs::read_dir(&dir)
+        .map_err(|e| format!("reading {}: {e}", dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ftl"))
+        .collect();
+    files.sort();
+    let mut joined = String::new();
+    for file in &files {
+        let text =
+            fs::read_to_string(file).map_err(|e| format!("reading {}: {e}", file.display()))?;
+        joined.push_str(&text);
+        joined.push('\n');
+    }
+    if let Some(parent) = to.parent() {
+        fs::create_dir_all(parent).map_err(|e| format!("creating {}: {e}", parent.display()))?;
+    }
+    fs::write(to, joined).map_err(|e| format!("writing {}: {e}", to.display()).into())
 }
 
 /// Copies one file, creating the destination folder.

@@ -70,10 +70,14 @@ impl Lang {
                 include_str!("../../locales/en/page.ftl"),
                 include_str!("../../locales/en/series.ftl"),
             ],
+            #[cfg(not(target_arch = "wasm32"))]
             Self::Ru => &[
                 include_str!("../../locales/ru/page.ftl"),
                 include_str!("../../locales/ru/series.ftl"),
             ],
+            // The page fetches the Russian catalogue beside its wasm (see [`provide_russian`]).
+            #[cfg(target_arch = "wasm32")]
+            Self::Ru => RUSSIAN.get().map_or(&[], std::slice::from_ref),
         }
     }
 
@@ -81,6 +85,9 @@ impl Lang {
     fn lab_sources(self) -> &'static [&'static str] {
         match self {
             Self::En => &[include_str!("../../locales/en/units.ftl")],
+            #[cfg(target_arch = "wasm32")]
+            Self::Ru => &[],
+            #[cfg(not(target_arch = "wasm32"))]
             Self::Ru => &[
                 include_str!("../../locales/ru/units.ftl"),
                 include_str!("../../locales/ru/labs.ftl"),
@@ -96,6 +103,20 @@ impl Lang {
             ],
         }
     }
+}
+
+/// The Russian catalogue the page fetched: every file of `crate/locales/ru/` in one
+/// (`assets/locales/ru.ftl`, which `cargo xtask dist` writes). Natively the files are in the
+/// binary; in the page they stay beside the wasm, so a reader in English does not download
+/// them as code and a new release of the code need not send them again.
+#[cfg(target_arch = "wasm32")]
+static RUSSIAN: OnceLock<&'static str> = OnceLock::new();
+
+/// Hands the page's fetched Russian catalogue over, before the first message is looked up
+/// (the page's `start` does). Without it Russian falls back to English, message by message.
+#[cfg(target_arch = "wasm32")]
+pub fn provide_russian(text: String) {
+    let _ = RUSSIAN.set(Box::leak(text.into_boxed_str()));
 }
 
 /// A lab's own words in `lang`: the lab writes them in English (its code holds them), and a

@@ -168,3 +168,29 @@ fn one_quantity_key_has_one_label() {
     assert!(twice.is_empty(), "keys with two labels: {twice:#?}");
     assert!(labels.len() > 40, "{} quantities", labels.len());
 }
+
+#[test]
+fn the_binary_reads_every_russian_file_the_page_fetches() {
+    // `cargo xtask dist` joins every .ftl of locales/ru into the page's ru.ftl; natively
+    // the same files are included one by one. A file added to one must be in the other.
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("locales/ru");
+    let mut on_disk: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ftl"))
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect();
+    let mut included: Vec<String> = Lang::Ru
+        .sources()
+        .iter()
+        .chain(Lang::Ru.lab_sources())
+        .map(|s| s.to_string())
+        .collect();
+    on_disk.sort();
+    included.sort();
+    assert_eq!(on_disk.len(), included.len());
+    assert!(
+        on_disk == included,
+        "locales/ru and the included files differ"
+    );
+}

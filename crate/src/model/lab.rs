@@ -5,9 +5,12 @@ use super::estimate::{Estimator, Measurements};
 use super::lesson::Lesson;
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
+#[cfg(not(target_arch = "wasm32"))]
 use super::report::{ReproError, Reproduction};
 use super::series::{Extras, SeriesSpec};
-use super::study::{OutputFile, SweepSpec, TimingItem};
+#[cfg(not(target_arch = "wasm32"))]
+use super::study::TimingItem;
+use super::study::{OutputFile, SweepSpec};
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -187,13 +190,16 @@ pub trait Lab: Sync {
 /// What checks a lab against its paper: the reproduction, the sweeps, the timings and the
 /// paper's own output file.
 pub trait Study: Sync {
-    /// Runs the lab's anchor scenarios and compares with the paper.
+    /// Runs the lab's anchor scenarios and compares with the paper (natively: the page
+    /// never does, so its wasm leaves the reproductions out).
+    #[cfg(not(target_arch = "wasm32"))]
     fn reproduce(&self) -> Result<Reproduction, ReproError>;
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
     fn sweeps(&self) -> &'static [SweepSpec] {
         &[]
     }
-    /// Work whose cost the lab compares (timed by the CLI, never by tests).
+    /// Work whose cost the lab compares (timed by the CLI, never by tests; not in the wasm).
+    #[cfg(not(target_arch = "wasm32"))]
     fn timing_items(&self) -> Vec<TimingItem> {
         Vec::new()
     }
@@ -240,6 +246,7 @@ impl dyn Lab + '_ {
         self.spec().default_duration_s
     }
     /// The study's reproduction; an error for a lab without a study.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn reproduce(&self) -> Result<Reproduction, ReproError> {
         match self.study() {
             Some(s) => s.reproduce(),
@@ -254,6 +261,7 @@ impl dyn Lab + '_ {
         self.study().map_or(&[], |s| s.sweeps())
     }
     /// The study's timings (none without a study).
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn timing_items(&self) -> Vec<TimingItem> {
         self.study().map_or_else(Vec::new, |s| s.timing_items())
     }

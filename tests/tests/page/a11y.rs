@@ -220,7 +220,7 @@ fn diagram_index() -> usize {
 
 /// The pixels of `png` inside `[x, y, w, h]` (CSS pixels of a 1:1 screenshot).
 fn crop(png: &[u8], [x, y, w, h]: [f64; 4]) -> Result<Vec<[u8; 3]>, String> {
-    let width = png::Decoder::new(png)
+    let width = png::Decoder::new(std::io::Cursor::new(png))
         .read_info()
         .map_err(|e| e.to_string())?
         .info()

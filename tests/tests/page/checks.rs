@@ -36,10 +36,13 @@ pub(crate) fn console_problems(entries: &[Value]) -> Vec<String> {
 
 /// Decodes a PNG into 8-bit RGB pixels.
 pub(crate) fn rgb_pixels(png_bytes: &[u8]) -> Result<Vec<[u8; 3]>, String> {
-    let mut decoder = png::Decoder::new(png_bytes);
+    let mut decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
     decoder.set_transformations(png::Transformations::normalize_to_color8());
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
-    let mut buffer = vec![0; reader.output_buffer_size()];
+    let size = reader
+        .output_buffer_size()
+        .ok_or("the PNG is too large for memory")?;
+    let mut buffer = vec![0; size];
     let info = reader.next_frame(&mut buffer).map_err(|e| e.to_string())?;
     let channels = info.color_type.samples();
     let pixels = buffer[..info.buffer_size()]

@@ -21,6 +21,7 @@ mod a11y;
 mod checks;
 mod driver;
 mod fuzz;
+mod lessons;
 mod screens;
 mod server;
 mod soak;
@@ -127,6 +128,7 @@ fn page_renders_without_errors() {
     }
     problems.extend(a11y::keyboard_walk_problems(&session, &base));
     problems.extend(screens::screen_problems(&session, &base));
+    problems.extend(lessons::lesson_problems(&session, &base));
     problems.extend(png_export_problems(&session, &base));
     drop(session);
     assert!(

@@ -23,7 +23,13 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     };
     panel.show(ui, |ui| {
         egui::ScrollArea::vertical().show(ui, |ui| {
-            ui.heading(tr(app, "app-title"));
+            // A lesson under way comes first: its text and question beside the model.
+            if app.lesson().is_some() {
+                super::lesson::card(ui, app, commands);
+                ui.separator();
+            } else {
+                ui.heading(tr(app, "app-title"));
+            }
             lab_picker(ui, app, commands);
             ui.separator();
             run_controls(ui, app, commands);
@@ -36,7 +42,10 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// Everything of the controls below the run buttons: presets, parameters, tools, outputs,
 /// messages and the explanation (presenter mode: the presets, the rest behind one click).
 pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    super::lesson::card(ui, app, commands);
+    // "Start the lesson" (the card itself, once open, is at the top of the panel).
+    if app.lesson().is_none() {
+        super::lesson::card(ui, app, commands);
+    }
     if app.view().presenter {
         // For the projector: the presets (or the lesson step's own sliders) carry the
         // lesson; the other sliders wait behind one click.

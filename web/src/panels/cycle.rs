@@ -19,9 +19,12 @@ pub fn cycle_panel(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comma
     let mut open = true;
     egui::Window::new(tr(app, "cycle-title"))
         .open(&mut open)
-        .default_width(420.0)
+        .default_width(360.0)
+        .collapsible(true)
         .anchor(egui::Align2::RIGHT_BOTTOM, egui::vec2(-12.0, -40.0))
         .show(ctx, |ui| {
+            // Small type: the window sits over the plots and carries a dozen rows.
+            ui.style_mut().override_text_style = Some(egui::TextStyle::Small);
             ui.label(RichText::new(estimator_name(app, index)).strong());
             ui.label(tr_with(
                 app,
@@ -114,6 +117,7 @@ fn equations(ui: &mut Ui, app: &AppState, c: &KalmanCycle, terms: &[CycleTerm]) 
     );
     let rows = rows(c);
     let accent = ui.visuals().selection.stroke.color;
+    let small = ui.style().text_styles[&egui::TextStyle::Small].size;
     egui::Grid::new("cycle_rows")
         .num_columns(2)
         .striped(true)
@@ -126,7 +130,7 @@ fn equations(ui: &mut Ui, app: &AppState, c: &KalmanCycle, terms: &[CycleTerm]) 
                     RichText::new(lhs)
                 };
                 ui.label(lhs);
-                ui.label(RichText::new(value).monospace());
+                ui.label(RichText::new(value).monospace().size(small));
                 ui.end_row();
             }
         });

@@ -130,8 +130,17 @@ fn navigation(ui: &mut Ui, app: &AppState, lesson: &Lesson, n: usize, commands: 
         if ui.small_button(tr(app, "share")).clicked() {
             commands.push(ShareCommand::Open.into());
         }
+        // The step that talks about the filter's terms points at its cycle.
+        let talks = app.lesson_step().is_some_and(|s| !s.terms.is_empty());
+        let label = if talks {
+            RichText::new(tr(app, "cycle-open"))
+                .strong()
+                .color(ui.visuals().selection.stroke.color)
+        } else {
+            RichText::new(tr(app, "cycle-open"))
+        };
         if app.sim().estimators().iter().any(|e| e.cycle().is_some())
-            && ui.small_button(tr(app, "cycle-open")).clicked()
+            && ui.small_button(label).clicked()
         {
             commands.push(ViewCommand::SetCycle(!app.view().cycle_open).into());
         }

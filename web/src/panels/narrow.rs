@@ -79,6 +79,9 @@ pub fn sheet(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 }
             });
             egui::ScrollArea::vertical().show(ui, |ui| {
+                if app.lesson().is_some() {
+                    super::lesson::card(ui, app, commands);
+                }
                 ui.horizontal_wrapped(|ui| controls::mode_buttons(ui, app, commands));
                 controls::seed_and_speed(ui, app, commands);
                 ui.separator();

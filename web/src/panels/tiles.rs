@@ -22,9 +22,10 @@ pub fn tiles(ui: &mut Ui, app: &AppState) {
                 egui::Frame::group(ui.style()).show(ui, |ui| {
                     ui.vertical(|ui| {
                         let label = spec.map_or(name.clone(), |s| series_legend(app, s));
-                        ui.label(RichText::new(label).small());
+                        ui.label(RichText::new(super::elide(&label, 44)).small())
+                            .on_hover_text(label);
                         let text = value.map_or_else(|| tr(app, "tile-none"), super::cycle_num);
-                        ui.label(RichText::new(text).size(40.0).strong());
+                        ui.label(RichText::new(text).size(34.0).strong());
                     });
                 });
             }

@@ -128,9 +128,6 @@ impl AppState {
                 .map(|i| i + 1)
                 .collect()
         };
-        if !step.terms.is_empty() {
-            self.view.cycle_open = true;
-        }
         if let Some(speed) = step.speed {
             self.run.speed = speed;
         }

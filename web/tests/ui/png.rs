@@ -95,7 +95,7 @@ fn key_p_saves_every_plot_tab_stacked_in_one_png() {
     let mut reader = png::Decoder::new(std::io::Cursor::new(bytes))
         .read_info()
         .expect("a PNG");
-    let mut buf = vec![0; reader.output_buffer_size()];
+    let mut buf = vec![0; reader.output_buffer_size().expect("fits")];
     let info = reader.next_frame(&mut buf).expect("one frame");
     assert_eq!((info.width as usize, info.height as usize), (pw, ph));
     // One crop of the plot area per tab, stacked with gaps: taller than n crops of 100 px.

@@ -14,8 +14,7 @@ mod truth;
 use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
 use crate::model::{
-    Estimator, Lab, LabRun, LabSpec, Page, ParamValues, ReproError, Reproduction, SensorModel,
-    Study, TruthModel,
+    Estimator, Lab, LabRun, LabSpec, Page, ParamValues, SensorModel, Study, TruthModel,
 };
 use crate::sensors::{Gyro3, Gyro3Config};
 use rand_chacha::ChaCha8Rng;
@@ -106,7 +105,9 @@ impl Study for FreeRotation {
         ]
     }
 
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 }

@@ -13,8 +13,8 @@ use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
     Estimator, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec,
-    ParamValues, Preset, Quantity, ReproError, Reproduction, SINGLE_AXIS_VIEWS, SensorModel,
-    SeriesGroup, SeriesKey, SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
+    ParamValues, Preset, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
+    SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
@@ -344,7 +344,9 @@ impl Lab for SuspendedMockup {
 }
 
 impl Study for SuspendedMockup {
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 

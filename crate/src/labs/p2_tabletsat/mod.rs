@@ -11,13 +11,13 @@ pub mod sets;
 pub mod truth;
 
 use crate::estimators::mekf;
-use crate::estimators::{Mekf, MekfConfig, MekfTuning, SensorSet, StateSet, full_step_flops};
+use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
     AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
-    ParamValues, Preset, ReproError, Reproduction, SeriesKey, Study, SweepSpec, TimingItem, q,
+    ParamValues, Preset, SeriesKey, Study, SweepSpec, q,
 };
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
-use rand::{Rng, SeedableRng};
+use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use sensors::{FIELD_MODELS, STAR_READINGS, Sensors};
 use sets::FILTERS;
@@ -416,7 +416,9 @@ impl Lab for TabletSat {
 }
 
 impl Study for TabletSat {
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
@@ -436,56 +438,8 @@ impl Study for TabletSat {
         SWEEPS
     }
 
-    fn timing_items(&self) -> Vec<TimingItem> {
-        // Every sensor at the prediction rate, so every step carries all twelve rows.
-        let mut p = ParamValues::defaults(PARAMS);
-        for (k, v) in [
-            ("vector_rate_hz", 10.0),
-            ("gyro_rate_hz", 10.0),
-            ("star_rate_hz", 10.0),
-        ] {
-            // The keys and values are this lab's own and in range.
-            let _ = p.set(PARAMS, k, v);
-        }
-        let mut rng = ChaCha8Rng::seed_from_u64(1);
-        let mut run = self.build(&p, &mut rng);
-        let start = run.truth.state();
-        let dt = self.dt_s(&p);
-        let trace = run.measurement_trace(dt, 256, &mut rng);
-        let cfg = MekfConfig {
-            id: "bench",
-            label: "ST+Gyro+Mag+Sun [λ,ω,Δω]",
-            sensors: SensorSet {
-                star: true,
-                gyro: true,
-                mag: true,
-                sun: true,
-            },
-            states: StateSet::AttRateGyroBias,
-            disturbance: false,
-            constant_gain_after_s: None,
-            inertia_kg_m2: INERTIA_KG_M2,
-        };
-        let fresh = Mekf::<9>::new(
-            cfg,
-            tuning(&p, [1e-6, 1.2e-6, 1e-8]),
-            start.q_ref_from_body,
-            start.rate_body_rad_s,
-            p0(StateSet::AttRateGyroBias, 0.5f64.to_radians()),
-        );
-        let mut filter = fresh.clone();
-        let mut i = 0;
-        vec![TimingItem {
-            name: "MEKF step: 9 states, 12 rows",
-            flops: Some(full_step_flops(9, 12)),
-            run: Box::new(move || {
-                // The trace repeats: start the filter afresh with it.
-                if i % trace.len() == 0 {
-                    filter = fresh.clone();
-                }
-                filter.step(std::hint::black_box(&trace[i % trace.len()]), dt);
-                i += 1;
-            }),
-        }]
+    #[cfg(not(target_arch = "wasm32"))]
+    fn timing_items(&self) -> Vec<crate::model::TimingItem> {
+        reproduce::timing_items()
     }
 }

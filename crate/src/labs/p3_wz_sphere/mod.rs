@@ -20,7 +20,7 @@ use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
     Estimator, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec, ParamValues,
-    ReproError, Reproduction, SensorModel, SeriesKey, Study, TimingItem, TruthModel, TruthState, q,
+    SensorModel, SeriesKey, Study, TruthModel, TruthState, q,
 };
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
@@ -301,11 +301,14 @@ impl Study for WzSphere {
         &["gyro_noise_deg_s=0.05"]
     }
 
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
-    fn timing_items(&self) -> Vec<TimingItem> {
+    #[cfg(not(target_arch = "wasm32"))]
+    fn timing_items(&self) -> Vec<crate::model::TimingItem> {
         reproduce::timing_items()
     }
 }

@@ -14,7 +14,7 @@ use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
     Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, Page, ParamSpec, ParamValues, Preset,
-    ReproError, Reproduction, SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
+    SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -282,7 +282,9 @@ impl Lab for QuadrotorRoll {
 }
 
 impl Study for QuadrotorRoll {
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 

@@ -14,9 +14,7 @@ mod truth;
 
 use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
-use crate::model::{
-    Estimator, Lab, LabRun, LabSpec, OutputFile, Page, ParamValues, ReproError, Reproduction, Study,
-};
+use crate::model::{Estimator, Lab, LabRun, LabSpec, OutputFile, Page, ParamValues, Study};
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
 use sensors::Sensors;
@@ -116,7 +114,9 @@ impl Lab for SensitivityLab {
 }
 
 impl Study for SensitivityLab {
-    fn reproduce(&self) -> Result<Reproduction, ReproError> {
+    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 

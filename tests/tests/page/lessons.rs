@@ -1,0 +1,93 @@
+//! A step of every lab's lesson opened from the teacher's link on a projector's 1280×720 in
+//! presenter mode, its question answered in the link: the step opens, runs to its pause and
+//! stops there, with nothing in the console; a screenshot of each for the README
+//! (`target/page-test/screens/lesson-<lab>.png`).
+
+use super::*;
+
+/// The step of each lab's lesson the README shows: one that asks a question.
+pub(crate) const SHOTS: [(&str, usize); 6] = [
+    ("free-rotation", 5),
+    ("p1", 2),
+    ("p2", 4),
+    ("p3", 3),
+    ("p4", 2),
+    ("p5", 3),
+];
+
+/// How long a step may take to reach its pause (its own speed sets it: 10–15 s here).
+const PAUSE_TIMEOUT: Duration = Duration::from_secs(90);
+
+/// The link of step `n` of `lab`'s lesson with the answer the run shows chosen.
+fn link(base: &str, lab: &dyn attlab::model::Lab, n: usize) -> String {
+    let answer = lab
+        .lesson()
+        .and_then(|l| l.step(n))
+        .and_then(|s| s.question)
+        .map(|q| format!("&answers={n}{}", char::from(b'a' + q.answer as u8)))
+        .unwrap_or_default();
+    format!("{base}#lesson={}&step={n}{answer}&presenter=1", lab.id())
+}
+
+/// Polls the status until the run has paused at the step's pause.
+fn wait_for_pause(session: &Session<'_>) -> Value {
+    let start = Instant::now();
+    let mut status = Value::Null;
+    while start.elapsed() < PAUSE_TIMEOUT {
+        if let Ok(Value::String(text)) = session.execute(STATUS_SCRIPT) {
+            status = serde_json::from_str(&text).unwrap_or(Value::Null);
+        }
+        if status["playing"] == Value::Bool(false) {
+            break;
+        }
+        sleep(Duration::from_millis(250));
+    }
+    status
+}
+
+/// The problems of each lab's lesson step opened from its link.
+pub(crate) fn lesson_problems(session: &Session<'_>, base: &str) -> Vec<String> {
+    let mut problems = Vec::new();
+    if let Err(e) = session.set_viewport(Some((1280, 720)), false) {
+        return vec![format!("cannot emulate a projector: {e}")];
+    }
+    for (id, n) in SHOTS {
+        let Some(lab) = attlab::labs::find(id) else {
+            problems.push(format!("no lab {id}"));
+            continue;
+        };
+        let tag = format!("lesson {id} step {n}");
+        if let Err(e) = session.open(&link(base, lab, n)) {
+            problems.push(format!("{tag}: navigate failed: {e}"));
+            continue;
+        }
+        let status = wait_for_frames(session);
+        problems.extend(
+            status_problems(&status)
+                .into_iter()
+                .map(|p| format!("{tag}: {p}")),
+        );
+        let status = wait_for_pause(session);
+        println!("page test: {tag}: attlabStatus = {status}");
+        if status["lessonStep"].as_f64() != Some(n as f64) {
+            problems.push(format!(
+                "{tag}: the page shows step {:?}",
+                status["lessonStep"]
+            ));
+        }
+        if status["playing"] != Value::Bool(false) {
+            problems.push(format!(
+                "{tag}: not paused at its pause after {PAUSE_TIMEOUT:?}"
+            ));
+        }
+        problems.extend(console_and_screenshot(
+            session,
+            &tag,
+            &format!("screens/lesson-{id}.png"),
+        ));
+    }
+    if let Err(e) = session.set_viewport(None, false) {
+        problems.push(format!("cannot end the emulation: {e}"));
+    }
+    problems
+}
