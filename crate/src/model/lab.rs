@@ -5,10 +5,10 @@ use super::estimate::{Estimator, Measurements};
 use super::lesson::Lesson;
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
-#[cfg(not(target_arch = "wasm32"))]
+#[cfg(feature = "study")]
 use super::report::{ReproError, Reproduction};
 use super::series::{Extras, SeriesSpec};
-#[cfg(not(target_arch = "wasm32"))]
+#[cfg(feature = "study")]
 use super::study::TimingItem;
 use super::study::{OutputFile, SweepSpec};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -190,16 +190,16 @@ pub trait Lab: Sync {
 /// What checks a lab against its paper: the reproduction, the sweeps, the timings and the
 /// paper's own output file.
 pub trait Study: Sync {
-    /// Runs the lab's anchor scenarios and compares with the paper (natively: the page
-    /// never does, so its wasm leaves the reproductions out).
-    #[cfg(not(target_arch = "wasm32"))]
+    /// Runs the lab's anchor scenarios and compares with the paper (with the `study`
+    /// feature: the page never does, so its wasm leaves the reproductions out).
+    #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<Reproduction, ReproError>;
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
     fn sweeps(&self) -> &'static [SweepSpec] {
         &[]
     }
-    /// Work whose cost the lab compares (timed by the CLI, never by tests; not in the wasm).
-    #[cfg(not(target_arch = "wasm32"))]
+    /// Work whose cost the lab compares (timed by the CLI, never by tests; the `study` feature).
+    #[cfg(feature = "study")]
     fn timing_items(&self) -> Vec<TimingItem> {
         Vec::new()
     }
@@ -246,7 +246,7 @@ impl dyn Lab + '_ {
         self.spec().default_duration_s
     }
     /// The study's reproduction; an error for a lab without a study.
-    #[cfg(not(target_arch = "wasm32"))]
+    #[cfg(feature = "study")]
     pub fn reproduce(&self) -> Result<Reproduction, ReproError> {
         match self.study() {
             Some(s) => s.reproduce(),
@@ -261,7 +261,7 @@ impl dyn Lab + '_ {
         self.study().map_or(&[], |s| s.sweeps())
     }
     /// The study's timings (none without a study).
-    #[cfg(not(target_arch = "wasm32"))]
+    #[cfg(feature = "study")]
     pub fn timing_items(&self) -> Vec<TimingItem> {
         self.study().map_or_else(Vec::new, |s| s.timing_items())
     }

@@ -1,9 +1,9 @@
 //! The free-rotation lab's checks: no paper anchors, but the perfect model, the
 //! conservation laws, the chart switch and the bias drift against an independent
 //! first-order computation.
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::FreeRotation;
 use super::sensors::BIAS_PATTERN;

@@ -344,8 +344,8 @@ impl Lab for SuspendedMockup {
 }
 
 impl Study for SuspendedMockup {
-    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
-    #[cfg(not(target_arch = "wasm32"))]
+    // The page never reproduces a paper (the CLI and the tests do): the `study` feature.
+    #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }

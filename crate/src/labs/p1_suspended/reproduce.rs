@@ -3,9 +3,9 @@
 //! kinematically integrated angle φ_int, which is what its error panels, its output file and
 //! its laboratory runs have — beside the error against the truth, which no filter on a rate
 //! gyro alone can push below the integrated gyro noise σ√(t/f).
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::{SuspendedMockup, rates};
 use crate::analysis::scenario::{params_with, run_trace};

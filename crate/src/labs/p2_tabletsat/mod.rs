@@ -416,8 +416,8 @@ impl Lab for TabletSat {
 }
 
 impl Study for TabletSat {
-    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
-    #[cfg(not(target_arch = "wasm32"))]
+    // The page never reproduces a paper (the CLI and the tests do): the `study` feature.
+    #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
@@ -438,7 +438,7 @@ impl Study for TabletSat {
         SWEEPS
     }
 
-    #[cfg(not(target_arch = "wasm32"))]
+    #[cfg(feature = "study")]
     fn timing_items(&self) -> Vec<crate::model::TimingItem> {
         reproduce::timing_items()
     }

@@ -6,9 +6,9 @@
 //! the RMS over the last 60 s of 200 s of each axis' error against the truth (mean
 //! included), largest axis. The checks assert what the paper makes certain; single numbers
 //! whose exponents the OCR lost are reported, not asserted.
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::sensors::{GYRO_BIAS, MAG_BIAS};
 use super::sets::{FILTERS, FilterRow};

@@ -301,13 +301,13 @@ impl Study for WzSphere {
         &["gyro_noise_deg_s=0.05"]
     }
 
-    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
-    #[cfg(not(target_arch = "wasm32"))]
+    // The page never reproduces a paper (the CLI and the tests do): the `study` feature.
+    #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }
 
-    #[cfg(not(target_arch = "wasm32"))]
+    #[cfg(feature = "study")]
     fn timing_items(&self) -> Vec<crate::model::TimingItem> {
         reproduce::timing_items()
     }

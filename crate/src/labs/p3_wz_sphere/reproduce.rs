@@ -1,7 +1,7 @@
 //! `attlab reproduce p3`: the paper's scenario measured, and the lab's cost comparison.
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::WzSphere;
 use crate::analysis::scenario::{Trace, run_trace};

@@ -282,8 +282,8 @@ impl Lab for QuadrotorRoll {
 }
 
 impl Study for QuadrotorRoll {
-    // The page never reproduces a paper (the CLI and the tests do): not in the wasm.
-    #[cfg(not(target_arch = "wasm32"))]
+    // The page never reproduces a paper (the CLI and the tests do): the `study` feature.
+    #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
     }

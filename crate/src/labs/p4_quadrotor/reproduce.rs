@@ -8,9 +8,9 @@
 //! in deg² and (deg/s)²; t_tr = the time from the step until θ̂ stays within 5 % of the step
 //! of the new set-point, θ̂ averaged over ±50 ms (the rest of the run, 4 s, when it never
 //! does).
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::keys as roll_keys;
 use super::{QuadrotorRoll, tuning};

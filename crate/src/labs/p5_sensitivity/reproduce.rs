@@ -3,9 +3,9 @@
 //! the tolerance, the Δt that gives the paper's 2.36; method (9)'s oscillation (errors at
 //! successive updates, the eigenvalues of its linearised update); the re-integrating
 //! variant's convergence; the gyro-bias case (p → −b); and U against finite differences.
-// Only the CLI and the tests reproduce a paper: in the page, what only `reproduce` uses is
-// left out of the wasm.
-#![cfg_attr(target_arch = "wasm32", allow(dead_code, unused_imports))]
+// Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
+// `reproduce` uses is left out (the page's wasm).
+#![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::sensors::REFERENCE;
 use super::truth::ANGLES;
