@@ -282,3 +282,4 @@ cycle-states = States: { $names }
 cycle-no-update = No measurement this step: x̂⁺ = x̂⁻, P⁺ = P⁻.
 cycle-note-window = The adaptation window ended: P was replaced by the window's estimate (§2.6, Table 2.3).
 tile-none = —
+lesson-bar = Lesson · step { $n } of { $count }

@@ -284,3 +284,4 @@ cycle-states = Состояния: { $names }
 cycle-no-update = На этом шаге измерения нет: x̂⁺ = x̂⁻, P⁺ = P⁻.
 cycle-note-window = Окно адаптации закончилось: P заменена оценкой по окну (§2.6, табл. 2.3).
 tile-none = —
+lesson-bar = Урок · шаг { $n } из { $count }

@@ -33,6 +33,7 @@ pub fn bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             {
                 commands.push(Command::from(ViewCommand::SetSheet(!open)));
             }
+            lesson_button(ui, app, commands);
         });
         ui.horizontal_wrapped(|ui| {
             ui.label(tr(app, "view"));
@@ -47,6 +48,25 @@ pub fn bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             }
         });
     });
+}
+
+/// With a lesson open, "Lesson · step k of n": the card is at the top of the sheet it opens
+/// (a question step opens the sheet by itself; see `AppState::show_step`).
+fn lesson_button(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let (Some(lesson), Some(all)) = (app.lesson(), app.sim().lab().lesson()) else {
+        return;
+    };
+    let text = super::tr_with(
+        app,
+        "lesson-bar",
+        &[
+            ("n", super::arg(lesson.step)),
+            ("count", super::arg(all.steps.len())),
+        ],
+    );
+    if ui.button(egui::RichText::new(text).strong()).clicked() {
+        commands.push(Command::from(ViewCommand::SetSheet(true)));
+    }
 }
 
 /// What the switcher calls a view: a lab with a diagram of its own shows it where the w plane

@@ -139,6 +139,8 @@ impl AppState {
                 .as_ref()
                 .is_some_and(|l| l.answer(l.step).is_none());
         self.run.playing = !waiting;
+        // On a phone the card is in the controls' sheet: a question opens it to be answered.
+        self.view.sheet_open = waiting;
     }
 
     /// Records answer `k` to the current step's question and runs the step.
@@ -160,6 +162,8 @@ impl AppState {
         lesson.answers.push((n, k));
         lesson.answers.sort_unstable();
         self.run.playing = true;
+        // On a phone: the sheet gives the page back to the run that shows the answer.
+        self.view.sheet_open = false;
     }
 
     /// Opens the link's lesson step on the state the link built (its parameters are the

@@ -49,3 +49,40 @@ fn on_a_phone_every_button_is_a_finger_high() {
         assert!(rect.height() >= 31.9, "{label}: {} pt high", rect.height());
     }
 }
+
+#[test]
+fn a_phone_opened_on_a_question_step_shows_the_question_then_gives_the_page_to_the_run() {
+    let state = attlab_web::state::AppState::from_fragment("lesson=p4&step=3");
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(390.0, 844.0))
+        .with_context_setup(attlab_web::render::fonts::install)
+        .build_ui_state(
+            |ui, app: &mut AttLabApp| app.frame(ui),
+            AttLabApp::headless(state),
+        );
+    h.run_steps(6);
+    let s = &h.state().state;
+    assert!(
+        s.view().sheet_open && !s.run().playing,
+        "the question waits in the open sheet"
+    );
+    let q = labs::find("p4")
+        .unwrap()
+        .lesson()
+        .unwrap()
+        .step(3)
+        .unwrap()
+        .question
+        .unwrap();
+    h.get_by_label(&format!("b) {}", q.answers[1])).click();
+    h.run_steps(6);
+    let s = &h.state().state;
+    assert!(
+        !s.view().sheet_open && s.run().playing,
+        "the run shows the answer"
+    );
+    // The bar names the lesson and opens its card again.
+    h.get_by_label("Lesson · step 3 of 6").click();
+    h.run_steps(6);
+    assert!(h.state().state.view().sheet_open);
+}
