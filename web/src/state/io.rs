@@ -2,7 +2,7 @@
 //! its units, the lab's example log) and the exports (every sample as CSV, the paper's own
 //! output file, a Python snippet, PNGs).
 
-use super::{AppState, Effect, PngTarget, run::simulation};
+use super::{AppState, Effect, PngTarget};
 use crate::platform;
 use attlab::model::PlotTab;
 use attlab::model::{LogFormat, ParamValues};
@@ -71,17 +71,8 @@ impl AppState {
             IoCommand::LoadLog => platform::pick_text_file(&self.io.file_slot),
             IoCommand::TakePickedLog => self.take_picked_log(),
             IoCommand::EndReplay => {
-                self.io.replaying = None;
-                self.drop_jobs();
                 let (lab, params) = (self.sim.lab(), self.sim.params().clone());
-                self.sim.release_recorder();
-                self.sim = simulation(
-                    lab,
-                    params,
-                    self.run.seed,
-                    self.view.plots.tab,
-                    self.tiles(),
-                );
+                self.restart(lab, params);
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {

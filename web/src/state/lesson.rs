@@ -106,13 +106,10 @@ impl AppState {
     /// A fresh run of the current lab with `params`, shown as `step` says.
     fn restart_with(&mut self, params: ParamValues, step: &LessonStep) {
         let lab = self.sim.lab();
-        self.drop_jobs();
-        self.sim.release_recorder();
         self.run.sweep = None;
-        self.io.replaying = None;
-        let tab = step.tab.unwrap_or_else(|| default_tab(lab));
-        self.view.plots.tab = tab;
-        self.sim = simulation(lab, params, self.run.seed, tab, step.tiles);
+        self.view.plots.tab = step.tab.unwrap_or_else(|| default_tab(lab));
+        // The step is current, so the run records its tiles.
+        self.restart(lab, params);
         self.run.reset_clock();
         self.show_step(step);
     }

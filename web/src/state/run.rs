@@ -135,17 +135,7 @@ impl AppState {
             RunCommand::ApplyPreset(i) => self.apply_preset(i),
             RunCommand::RestoreDefaults => {
                 let lab = self.sim.lab();
-                let params = ParamValues::defaults(lab.params());
-                self.drop_jobs();
-                self.sim.release_recorder();
-                self.sim = simulation(
-                    lab,
-                    params,
-                    self.run.seed,
-                    self.view.plots.tab,
-                    self.tiles(),
-                );
-                self.io.replaying = None;
+                self.restart(lab, ParamValues::defaults(lab.params()));
             }
             RunCommand::SetPlaying(on) => self.run.playing = on,
             RunCommand::Reset => {
@@ -190,19 +180,19 @@ impl AppState {
             capturing: self.view.capturing,
             ..ViewState::for_lab(lab)
         };
+        self.run.sweep = None;
+        self.restart(lab, ParamValues::defaults(lab.params()));
+        self.run.step_debt = 0.0;
+    }
+
+    /// A fresh run of `lab` with `params`, recording the tab shown and the lesson step's
+    /// tiles; the jobs under way and a replayed log end with the old run.
+    pub(super) fn restart(&mut self, lab: &'static dyn Lab, params: ParamValues) {
         self.drop_jobs();
         self.sim.release_recorder();
-        self.run.sweep = None;
-        let params = ParamValues::defaults(lab.params());
-        self.sim = simulation(
-            lab,
-            params,
-            self.run.seed,
-            self.view.plots.tab,
-            self.tiles(),
-        );
+        let tab = self.view.plots.tab;
+        self.sim = simulation(lab, params, self.run.seed, tab, self.tiles());
         self.io.replaying = None;
-        self.run.step_debt = 0.0;
     }
 
     fn apply_preset(&mut self, i: usize) {
