@@ -180,9 +180,8 @@ fn bench() -> cmd::Result<()> {
         "--bench",
         "wasm_kinematics",
     ]);
-    wasm.env("CHROMEDRIVER", tools::CHROMEDRIVER);
     // The criterion run is one long synchronous call in the page (~10 s per item).
-    wasm.env("WASM_BINDGEN_TEST_TIMEOUT", "600");
+    tools::headless_test_env(&mut wasm, 600);
     cmd::run(&mut wasm)
 }
 

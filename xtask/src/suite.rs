@@ -213,10 +213,9 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
     ));
-    browser.env("CHROMEDRIVER", tools::CHROMEDRIVER);
     // Each lab's reproduction runs inside one test call; the default 20 s per call is too
     // short for the 600-s scenarios of paper 1 on a loaded 2-core machine.
-    browser.env("WASM_BINDGEN_TEST_TIMEOUT", "600");
+    tools::headless_test_env(&mut browser, 600);
     suite.tests("test (wasm, headless Chromium)", browser)?;
     let dist = suite.step("build site (dist/)", || site::build(true))?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;

@@ -15,6 +15,17 @@ pub const BINARYEN_VERSION: &str = "132";
 /// Where Debian's chromium-driver puts chromedriver.
 pub const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
 
+/// The environment of a `wasm-bindgen-test-runner` run in headless Chromium: our
+/// chromedriver, `call_s` seconds per test call, and two minutes for chromedriver to bind
+/// its port. The runner's default for that is 5 s, and on a loaded 2-core CI machine
+/// chromedriver once took longer: the runner killed it and failed a run whose tests had
+/// never started ("driver failed to bind port during startup").
+pub fn headless_test_env(command: &mut Command, call_s: u32) {
+    command.env("CHROMEDRIVER", CHROMEDRIVER);
+    command.env("WASM_BINDGEN_TEST_TIMEOUT", call_s.to_string());
+    command.env("WASM_BINDGEN_TEST_DRIVER_TIMEOUT", "120");
+}
+
 /// Folder (gitignored) holding npm-installed tools.
 fn tools_dir() -> PathBuf {
     cmd::root().join(".tools")

@@ -37,7 +37,8 @@ impl Driver {
             base: format!("http://127.0.0.1:{port}"),
             agent,
         };
-        let deadline = Instant::now() + Duration::from_secs(20);
+        // Generous: on a loaded 2-core CI machine chromedriver has taken over 5 s to start.
+        let deadline = Instant::now() + Duration::from_secs(120);
         loop {
             let ready = driver
                 .call("GET", "/status", None)
