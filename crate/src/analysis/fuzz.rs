@@ -234,10 +234,26 @@ pub fn fuzz_one(
 }
 
 /// Runs `config.sets` sets over every lab in `labs` in turn; `progress` is told each set.
+/// A set that panics is a failure with its reproduction line (the release profile unwinds
+/// for this), and the sets after it still run.
 pub fn run(
     labs: &[&'static dyn Lab],
     config: FuzzConfig,
+    progress: impl FnMut(usize, &str),
+) -> FuzzReport {
+    run_with(labs, config, progress, fuzz_one)
+}
+
+/// What one set runs: [`fuzz_one`]'s signature.
+type OneSet =
+    fn(&'static dyn Lab, ParamValues, u64, usize, &mut ChaCha8Rng) -> Result<(bool, usize), String>;
+
+/// [`run`] with `one` running each set.
+fn run_with(
+    labs: &[&'static dyn Lab],
+    config: FuzzConfig,
     mut progress: impl FnMut(usize, &str),
+    one: OneSet,
 ) -> FuzzReport {
     let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
     let mut report = FuzzReport {
@@ -253,7 +269,7 @@ pub fn run(
         progress(set, lab.id());
         let mut set_rng = ChaCha8Rng::seed_from_u64(rng.random());
         let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            fuzz_one(lab, params, seed, config.steps, &mut set_rng)
+            one(lab, params, seed, config.steps, &mut set_rng)
         }));
         report.sets_per_lab[which].1 += 1;
         let what = match outcome {
@@ -282,4 +298,49 @@ pub fn run(
         }
     }
     report
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A set runner with a bug: the third set panics.
+    fn panics_on_the_third_set(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        seed: u64,
+        steps: usize,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<(bool, usize), String> {
+        thread_local!(static CALLS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) });
+        let n = CALLS.with(|c| {
+            c.set(c.get() + 1);
+            c.get()
+        });
+        if n == 3 {
+            panic!("injected at set {n}");
+        }
+        fuzz_one(lab, params, seed, steps, rng)
+    }
+
+    #[test]
+    fn a_panicking_set_is_reported_with_its_reproduction_line_and_the_rest_still_run() {
+        let labs = crate::labs::all();
+        let config = FuzzConfig {
+            sets: 5,
+            steps: 20,
+            seed: 7,
+        };
+        let report = run_with(labs, config, |_, _| {}, panics_on_the_third_set);
+        assert_eq!(report.failures.len(), 1, "{:?}", report.failures);
+        let line = report.failures[0].to_string();
+        let lab = labs[2 % labs.len()].id();
+        assert!(line.contains("panicked: injected at set 3"), "{line}");
+        assert!(
+            line.contains(&format!("(reproduce: attlab run --lab {lab} --seed ")),
+            "{line}"
+        );
+        let ran: usize = report.sets_per_lab.iter().map(|(_, n)| n).sum();
+        assert_eq!(ran, 5, "the sets after the panic still ran");
+    }
 }

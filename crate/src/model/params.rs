@@ -382,6 +382,7 @@ fn choice_by_name(key: &str, options: &[&str], text: &str) -> Result<usize, Para
     let matches: Vec<usize> = options
         .iter()
         .enumerate()
+        .filter(|_| !wanted.is_empty())
         .filter(|(_, o)| {
             let label = o.to_lowercase();
             label == wanted
@@ -469,6 +470,12 @@ mod tests {
         assert_eq!(p.get("spin_axis"), 2.0);
         let err = p.set_text(AXES, "spin_axis", "stable").unwrap_err();
         assert!(err.to_string().contains("0 = x"), "{err}");
+        // An empty value names no option: an error listing them, the choice unchanged.
+        for blank in ["", "  "] {
+            let err = p.set_text(AXES, "spin_axis", blank).unwrap_err();
+            assert!(err.to_string().contains("2 = z"), "{err}");
+            assert_eq!(p.get("spin_axis"), 2.0);
+        }
     }
 
     #[test]

@@ -1,20 +1,22 @@
 //! Rows to CSV as they are made: a header of `name [unit]` cells, one row per step, and an
-//! empty cell where a sample is missing (a NaN: a value that does not exist at that step,
-//! such as (u, v) near the pole or an error during a replay without truth).
+//! empty cell where a sample is missing or not finite (a NaN: a value that does not exist at
+//! that step, such as (u, v) near the pole or an error during a replay without truth; an
+//! infinity: the condition number of a singular matrix). No cell ever reads `inf` or `NaN`.
 
 use crate::model::SeriesSpec;
 use std::io::Write;
 
 /// A CSV cell: the shortest representation that reads back to the same f64; empty when
-/// missing.
+/// missing or not finite.
 ///
 /// ```
 /// # use attlab::sim::csv_cell;
 /// assert_eq!(csv_cell(0.1), "0.1");
 /// assert_eq!(csv_cell(f64::NAN), "");
+/// assert_eq!(csv_cell(f64::NEG_INFINITY), "");
 /// ```
 pub fn csv_cell(v: f64) -> String {
-    if v.is_nan() {
+    if !v.is_finite() {
         String::new()
     } else {
         format!("{v}")

@@ -345,6 +345,11 @@ impl Estimator for SensitivityCorrection {
     }
 
     fn step(&mut self, m: &Measurements, dt_s: f64) {
+        // Diverged: frozen, as flagged. Stepping on would only grow the re-integration
+        // history, which no reference clears any more (it leaked ~3 kB per simulated second).
+        if matches!(self.status, EstimatorStatus::Diverged(_)) {
+            return;
+        }
         if let Some(w) = m.gyro_body_rad_s {
             self.last_rate = w;
         }

@@ -1,0 +1,79 @@
+//! Nothing grows without bound: the heap, counted by this test binary's allocator (`stats_alloc`), is
+//! flat after warm-up in a long run of every lab at its defaults, and after paper 5's
+//! method (9) diverges (it used to grow its re-integration history by ~3 kB per simulated
+//! second from then on).
+#![cfg(not(target_arch = "wasm32"))]
+
+use attlab::labs;
+use attlab::model::{EstimatorStatus, ParamValues};
+use attlab::sim::Simulation;
+use stats_alloc::{INSTRUMENTED_SYSTEM, Region, StatsAlloc};
+use std::alloc::System;
+use std::sync::Mutex;
+
+#[global_allocator]
+static GLOBAL: &StatsAlloc<System> = &INSTRUMENTED_SYSTEM;
+
+/// The counters are process-wide: the tests here take turns.
+static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
+/// Bytes allocated and not freed since `region` began.
+fn grown(region: &Region<'_, System>) -> isize {
+    let c = region.change();
+    c.bytes_allocated as isize - c.bytes_deallocated as isize + c.bytes_reallocated
+}
+
+/// Bytes a run may still allocate after warm-up (a message, a status text): far below what
+/// any per-step growth would add over the steps measured.
+const SLACK_BYTES: isize = 16 * 1024;
+
+#[test]
+fn every_lab_at_its_defaults_holds_its_heap_flat_after_warm_up() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    for lab in labs::all() {
+        let mut sim = Simulation::new(*lab, ParamValues::defaults(lab.params()), 1);
+        for _ in 0..20_000 {
+            sim.step();
+        }
+        let (region, t0) = (Region::new(GLOBAL), sim.t_s());
+        for _ in 0..20_000 {
+            sim.step();
+        }
+        let grown = grown(&region);
+        assert!(
+            grown <= SLACK_BYTES,
+            "{}: the heap grew by {grown} B from t = {t0:.0} s to {:.0} s",
+            lab.id(),
+            sim.t_s()
+        );
+    }
+}
+
+#[test]
+fn paper_5s_method_9_grows_nothing_after_it_diverges() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let lab = labs::find("p5").expect("p5");
+    let mut sim = Simulation::new(lab, ParamValues::defaults(lab.params()), 1);
+    let diverged = |sim: &Simulation| {
+        sim.statuses()
+            .iter()
+            .any(|s| matches!(s, EstimatorStatus::Diverged(_)))
+    };
+    while !diverged(&sim) {
+        assert!(
+            sim.t_s() < 3600.0,
+            "method (9) did not diverge within an hour"
+        );
+        sim.step();
+    }
+    let t_diverged = sim.t_s();
+    sim.run_for(100.0);
+    let region = Region::new(GLOBAL);
+    sim.run_for(1000.0);
+    let grown = grown(&region);
+    assert!(
+        grown <= SLACK_BYTES,
+        "the heap grew by {grown} B over the 1000 s after t = {:.0} s (diverged at {t_diverged:.0} s)",
+        t_diverged + 100.0
+    );
+}
