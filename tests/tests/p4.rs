@@ -121,11 +121,15 @@ fn a_corrupted_log_reports_its_bad_lines_by_number_and_keeps_the_rest() {
     lines[49] = "garbage from a loose wire".into(); // line 50
     lines[99] = "990,1,2".into(); // line 100: too few columns
     lines[199] = "1950,1,2,x,4,5,6".into(); // line 200
-    let log = parse_imu_log(&lines.join("\n"), ImuScales::default());
+    let log = parse_imu_log(lines.join("\n"), ImuScales::default());
     let bad: Vec<usize> = log.errors.iter().map(|e| e.line).collect();
     assert_eq!(bad, vec![1, 2, 3, 50, 100, 200]);
     assert_eq!(log.t_s.len(), 997);
-    assert!(log.errors[4].to_string().contains("seven columns"));
+    assert!(
+        log.errors[4]
+            .to_string()
+            .contains("expected 7 columns (time, ax, ay, az, gx, gy, gz), found 3")
+    );
 }
 
 /// The page's γ sweep (incremental, five seeds) against the same runs made one by one

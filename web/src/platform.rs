@@ -244,9 +244,10 @@ fn download(name: &str, mime: &str, contents: &[u8]) -> Result<(), wasm_bindgen:
     Ok(())
 }
 
-/// Where a picked file arrives: `(file name, text)` or an error message. The browser's picker
-/// is asynchronous, so the app polls this each frame.
-pub type FileSlot = std::rc::Rc<std::cell::RefCell<Option<Result<(String, String), String>>>>;
+/// Where a picked file arrives: `(file name, bytes)` or an error message. The browser's
+/// picker is asynchronous, so the app polls this each frame. Bytes, not text: the importer
+/// reports a line that is not UTF-8 by its number and keeps the others.
+pub type FileSlot = std::rc::Rc<std::cell::RefCell<Option<Result<(String, Vec<u8>), String>>>>;
 
 /// Asks the user for a text file (CSV) and puts it into `slot` when it arrives.
 pub fn pick_text_file(slot: &FileSlot) {
@@ -260,10 +261,7 @@ pub fn pick_text_file(slot: &FileSlot) {
                 .await;
             if let Some(file) = picked {
                 let bytes = file.read().await;
-                *slot.borrow_mut() = Some(Ok((
-                    file.file_name(),
-                    String::from_utf8_lossy(&bytes).into_owned(),
-                )));
+                *slot.borrow_mut() = Some(Ok((file.file_name(), bytes)));
             }
         });
     }
@@ -280,7 +278,7 @@ pub fn pick_text_file(slot: &FileSlot) {
             |n| n.to_string_lossy().into_owned(),
         );
         let result = std::fs::read(&path)
-            .map(|b| (name, String::from_utf8_lossy(&b).into_owned()))
+            .map(|b| (name, b))
             .map_err(|e| format!("cannot read {}: {e}", path.display()));
         *slot.borrow_mut() = Some(result);
     }

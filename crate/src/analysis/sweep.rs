@@ -159,10 +159,7 @@ impl Sweep {
 
     fn duration_s(&self) -> f64 {
         match &self.log {
-            Some(log) => match (log.t_s.first(), log.t_s.last()) {
-                (Some(a), Some(b)) => b - a,
-                _ => 0.0,
-            },
+            Some(log) => log.span_s(),
             None => self.spec.duration_s,
         }
     }

@@ -39,3 +39,60 @@ pub fn find(id: &str) -> Option<&'static dyn Lab> {
 pub fn ids() -> String {
     all().iter().map(|l| l.id()).collect::<Vec<_>>().join(", ")
 }
+
+/// Reads `bytes` as `lab`'s kind of recorded log with unit choices `units`, or says why
+/// it cannot be replayed: the lab reads no logs; fewer than two samples; or most lines of
+/// numbers have another width than the format's (a log of another lab's format: named,
+/// with the labs that read it), or the format's own check of the units fails.
+pub fn read_log(
+    lab: &dyn Lab,
+    bytes: &[u8],
+    units: &crate::model::ParamValues,
+) -> Result<crate::model::RateLog, String> {
+    let format = lab.page().log_format.ok_or_else(|| {
+        let replaying: Vec<&str> = all()
+            .iter()
+            .filter(|l| l.page().log_format.is_some())
+            .map(|l| l.id())
+            .collect();
+        format!(
+            "lab {} does not replay logs; these do: {}",
+            lab.id(),
+            replaying.join(", ")
+        )
+    })?;
+    let log = (format.parse)(bytes, units);
+    let own = log.widths.get(&format.columns).copied().unwrap_or(0);
+    let widest = log.widths.iter().max_by_key(|(_, n)| **n);
+    if let Some((&width, &n)) = widest.filter(|(w, n)| **w != format.columns && **n > own) {
+        let readers: Vec<String> = all()
+            .iter()
+            .filter_map(|l| l.page().log_format.map(|f| (l.id(), f)))
+            .filter(|(_, f)| f.columns == width)
+            .map(|(id, f)| format!("{} (read by lab {id})", f.name))
+            .collect();
+        let looks = match readers.first() {
+            Some(r) => format!(" It looks like {r}."),
+            None => String::new(),
+        };
+        return Err(format!(
+            "{n} lines have {width} numbers and {own} have {}: lab {} reads {}, {} numbers a line.{looks}",
+            format.columns,
+            lab.id(),
+            format.name,
+            format.columns
+        ));
+    }
+    if log.median_dt_s().is_none() {
+        let first = log
+            .errors
+            .first()
+            .map_or(String::new(), |e| format!("; first bad line: {e}"));
+        return Err(format!(
+            "the log needs at least two samples with increasing times ({}{first})",
+            log.counts
+        ));
+    }
+    (format.check)(&log, units)?;
+    Ok(log)
+}

@@ -17,33 +17,103 @@ pub struct LogLineError {
     pub reason: String,
 }
 
+/// Where a log's clock jumped or restarted, and the replay joined the two segments.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LogGap {
+    /// The line that starts the new segment.
+    pub line: usize,
+    /// The replay's time (s, the log's clock less its first time) of the last sample before.
+    pub from_s: f64,
+    /// The replay's time (s) of the first sample after: the join is shown, at most
+    /// max(10 periods, 1 s) long.
+    pub to_s: f64,
+    /// The logged time (s) of the last sample before.
+    pub logged_from_s: f64,
+    /// The logged time (s) of the first sample after (below `logged_from_s` for a reset).
+    pub logged_to_s: f64,
+}
+
+/// What became of every line of a log that counts (not blank, a comment or the header).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LogCounts {
+    /// Lines that count.
+    pub data_lines: usize,
+    /// Samples kept (each delivered once by a replay).
+    pub kept: usize,
+    /// Of those, how many were out of order and put in their place.
+    pub reordered: usize,
+    /// Lines merged into a sample at the same time.
+    pub merged: usize,
+    /// Lines rejected (each with its reason in [`RateLog::errors`]).
+    pub rejected: usize,
+}
+
+impl std::fmt::Display for LogCounts {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} samples kept of {} lines ({} reordered), {} merged, {} rejected",
+            self.kept, self.data_lines, self.reordered, self.merged, self.rejected
+        )
+    }
+}
+
 /// A parsed log: a gyro's rate, and an accelerometer's reading for an IMU log.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RateLog {
-    /// Sample times (s), strictly increasing.
+    /// Sample times (s), strictly increasing: the logged clock, with the segments after a
+    /// reset or a long gap joined (see [`RateLog::gaps`]).
     pub t_s: Vec<f64>,
     /// Rates (rad/s).
     pub rate_rad_s: Vec<f64>,
     /// Accelerometer readings (g), one per sample for an IMU log, empty for a rate log.
     pub accel_g: Vec<nalgebra::Vector3<f64>>,
-    /// Lines that were skipped, with the reason.
+    /// Lines that were rejected, with the reason.
     pub errors: Vec<LogLineError>,
+    /// Lines kept but moved or merged, with what was done.
+    pub notes: Vec<LogLineError>,
+    /// Where the clock jumped or restarted.
+    pub gaps: Vec<LogGap>,
+    /// The nominal sample period (s): the median positive step between lines; 0 with
+    /// fewer than two increasing times.
+    pub period_s: f64,
+    /// What became of every line.
+    pub counts: LogCounts,
+    /// How many lines of numbers had each column count (the format's own included).
+    pub widths: std::collections::BTreeMap<usize, usize>,
 }
 
 impl RateLog {
-    /// Median sample interval (s), if there are at least two samples.
+    /// The nominal sample period (s), if there are two samples with increasing times.
     pub fn median_dt_s(&self) -> Option<f64> {
-        let mut d: Vec<f64> = self.t_s.windows(2).map(|w| w[1] - w[0]).collect();
-        if d.is_empty() {
-            return None;
+        (self.t_s.len() >= 2 && self.period_s > 0.0).then_some(self.period_s)
+    }
+
+    /// The time (s) of sample `k` on a replay's clock: the log's, less its first time.
+    /// A replay starts one period earlier, at −P, so that its first step delivers sample 0.
+    pub fn replay_time_s(&self, k: usize) -> Option<f64> {
+        Some(self.t_s.get(k)? - self.t_s.first()?)
+    }
+
+    /// The replay's clock from its start to its last sample (s).
+    pub fn span_s(&self) -> f64 {
+        self.t_s
+            .last()
+            .zip(self.t_s.first())
+            .map_or(0.0, |(b, a)| b - a)
+    }
+
+    /// The length of a replay's step from time `now_s`: to the next sample, or one period
+    /// when the next sample is more than 1.5 periods away (a gap is stepped through
+    /// without samples, so it shows) or there is none.
+    pub fn step_after(&self, now_s: f64) -> f64 {
+        let p = self.period_s.max(f64::MIN_POSITIVE);
+        let t0 = self.t_s.first().copied().unwrap_or(0.0);
+        let next = self.t_s.partition_point(|t| t - t0 <= now_s + 1e-6 * p);
+        match self.replay_time_s(next) {
+            Some(t) if t - now_s <= 1.5 * p => t - now_s,
+            _ => p,
         }
-        d.sort_by(f64::total_cmp);
-        let n = d.len();
-        Some(if n % 2 == 1 {
-            d[n / 2]
-        } else {
-            0.5 * (d[n / 2 - 1] + d[n / 2])
-        })
     }
 }
 
@@ -65,8 +135,13 @@ pub struct LogFormat {
     pub load_label: &'static str,
     /// Unit choices of the columns.
     pub units: &'static [ParamSpec],
-    /// Reads a log's text with unit choices `units` (validated against [`Self::units`]).
-    pub parse: fn(&str, &ParamValues) -> RateLog,
+    /// Numbers per line.
+    pub columns: usize,
+    /// Reads a log's bytes with unit choices `units` (validated against [`Self::units`]).
+    pub parse: fn(&[u8], &ParamValues) -> RateLog,
+    /// Whether a parsed log fits the unit choices (e.g. an accelerometer near 1 g); the
+    /// message says which choice would fit.
+    pub check: fn(&RateLog, &ParamValues) -> Result<(), String>,
 }
 
 impl LogFormat {

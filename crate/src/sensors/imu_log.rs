@@ -1,18 +1,21 @@
 //! Recorded MPU-6050 logs from an Arduino (paper 4's rig): the usual serial-monitor CSV of
 //! `time, ax, ay, az, gx, gy, gz`, in raw 16-bit counts or in scaled units.
 //!
-//! * The delimiter (comma, semicolon, tab or spaces) is the one under which most lines
-//!   are samples; a line of words before the first sample is the header.
-//! * Lines a sketch prints before the data ("Initializing I2C devices…", "MPU6050
-//!   connection successful") are skipped and reported; so is every later line that is not
-//!   a sample, with its line number and what was wrong. Every good sample is kept.
+//! * The lines are read by the rules of [`super::log_lines`]: the delimiter is the one
+//!   under which most lines are samples; a line of words before the first sample is the
+//!   header; lines a sketch prints before the data ("Initializing I2C devices…", "MPU6050
+//!   connection successful") and every later line that is not a sample are reported with
+//!   their numbers and what was wrong.
+//! * The clock is repaired by the rules of [`super::timeline`] (reordered, merged,
+//!   glitches, gaps, a sketch's reset). Every good sample is kept.
 //! * Defaults are the chip's power-on ranges (±2 g, ±250 °/s) in counts and `millis()`
 //!   time, so a raw log replays with no flags.
 //!
 //! The roll axis is x: the rate is gx and the accelerometer angle atan2(ay, az).
 
+use super::log_lines::read_log;
 use super::rate_log::{TIME_UNIT_NAMES, TimeUnit, time_unit};
-use crate::model::{LogFormat, LogLineError, ParamSpec, ParamValues, RateLog};
+use crate::model::{LogFormat, ParamSpec, ParamValues, RateLog};
 use nalgebra::Vector3;
 
 /// Unit of the accelerometer columns.
@@ -139,27 +142,6 @@ impl GyroUnit {
     }
 }
 
-/// Columns of a sample line.
-const COLUMNS: usize = 7;
-
-fn number(s: &str) -> Option<f64> {
-    s.trim().parse::<f64>().ok().filter(|v| v.is_finite())
-}
-
-/// The fields of `line` split at `delimiter` (runs of spaces count as one).
-fn fields(line: &str, delimiter: char) -> Vec<&str> {
-    let parts = line.split(delimiter).map(str::trim);
-    if delimiter == ' ' {
-        parts.filter(|f| !f.is_empty()).collect()
-    } else {
-        parts.collect()
-    }
-}
-
-fn is_sample(f: &[&str]) -> bool {
-    f.len() >= COLUMNS && f[..COLUMNS].iter().all(|c| number(c).is_some())
-}
-
 /// Parses an Arduino MPU-6050 log (see the module documentation).
 ///
 /// ```
@@ -171,64 +153,19 @@ fn is_sample(f: &[&str]) -> bool {
 /// assert_eq!(log.accel_g[1].y, 1.0);
 /// assert_eq!(log.errors.iter().map(|e| e.line).collect::<Vec<_>>(), vec![1, 4]);
 /// ```
-pub fn parse_imu_log(text: &str, scales: ImuScales) -> RateLog {
-    let sample: Vec<&str> = text.lines().take(200).collect();
-    let delimiter = [',', ';', '\t', ' ']
-        .into_iter()
-        .max_by_key(|d| {
-            let n = sample.iter().filter(|l| is_sample(&fields(l, *d))).count();
-            // Prefer the earlier delimiter on a tie.
-            (
-                n,
-                std::cmp::Reverse([',', ';', '\t', ' '].iter().position(|x| x == d)),
-            )
-        })
-        .unwrap_or(',');
+pub fn parse_imu_log(bytes: impl AsRef<[u8]>, scales: ImuScales) -> RateLog {
     let time_scale = match scales.time {
         TimeUnit::Seconds => 1.0,
         TimeUnit::Milliseconds => 1e-3,
     };
     let (ka, kg) = (scales.accel.to_g(), scales.gyro.to_rad_s());
-    let mut log = RateLog::default();
-    let mut header_seen = false;
-    for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        let trimmed = raw.trim();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
-            continue;
-        }
-        let f = fields(trimmed, delimiter);
-        let err = |reason: &str| LogLineError {
-            line,
-            text: trimmed.chars().take(80).collect(),
-            reason: reason.to_string(),
-        };
-        if !is_sample(&f) {
-            let words = f.len() >= 2 && f.iter().all(|c| !c.is_empty() && number(c).is_none());
-            if log.t_s.is_empty() && !header_seen && words && f.len() >= COLUMNS {
-                header_seen = true;
-                continue;
-            }
-            log.errors.push(err(if log.t_s.is_empty() && !header_seen {
-                "before the data (a sketch's banner?)"
-            } else if f.len() < COLUMNS {
-                "expected seven columns: time, ax, ay, az, gx, gy, gz"
-            } else {
-                "not a number"
-            }));
-            continue;
-        }
-        let v: Vec<f64> = f[..COLUMNS].iter().filter_map(|c| number(c)).collect();
-        let t = v[0] * time_scale;
-        if log.t_s.last().is_some_and(|last| t <= *last) {
-            log.errors.push(err("time does not increase"));
-            continue;
-        }
-        log.t_s.push(t);
-        log.accel_g.push(Vector3::new(v[1], v[2], v[3]) * ka);
-        log.rate_rad_s.push(v[4] * kg);
-    }
-    log
+    read_log(
+        bytes.as_ref(),
+        7,
+        "time, ax, ay, az, gx, gy, gz",
+        time_scale,
+        |v| (v[4] * kg, Some(Vector3::new(v[1], v[2], v[3]) * ka)),
+    )
 }
 
 /// Names of the accelerometer units, as [`AccelUnit::ALL`] orders them (`--accel-unit`).
@@ -251,9 +188,12 @@ pub const IMU_LOG: LogFormat = LogFormat {
     title: "Real data: an Arduino MPU-6050 log",
     help: "CSV lines `time, ax, ay, az, gx, gy, gz` (comma, semicolon, tab or space separated) \
            as a sketch prints them; banner lines before the header and bad lines are listed \
-           with their numbers and skipped. The roll axis is x: rate gx, angle atan2(ay, az). \
+           with their numbers and skipped. Every good sample is replayed once: times out of \
+           order are put in place, equal times merged, a glitched time rejected, and a sketch's \
+           reset joined after a short gap. The roll axis is x: rate gx, angle atan2(ay, az). \
            Defaults: the chip's power-on ranges in counts, time in ms.",
     load_label: "Load MPU-6050 log…",
+    columns: 7,
     units: &[
         ParamSpec::choice("accel_unit", "accel", ACCEL_UNIT_NAMES, 0).help(
             "Accelerometer columns: raw counts of a ±2/4/8/16 g range (power-on: ±2 g), g or m/s².",
@@ -265,10 +205,47 @@ pub const IMU_LOG: LogFormat = LogFormat {
             .help("Time column: seconds, or milliseconds (Arduino millis())."),
     ],
     parse: parse_imu_with,
+    check: check_accel_unit,
 };
 
+/// The median magnitude of the accelerometer readings (g), if any.
+fn median_accel_g(log: &RateLog) -> Option<f64> {
+    let mut m: Vec<f64> = log.accel_g.iter().map(|a| a.norm()).collect();
+    m.sort_by(f64::total_cmp);
+    m.get(m.len() / 2).copied()
+}
+
+/// A rig that mostly holds still or swings reads about 1 g; a median outside 0.5–2 g means
+/// the accelerometer unit is wrong (counts read as g, or the wrong range). The message
+/// names the unit that would give the closest to 1 g.
+fn check_accel_unit(log: &RateLog, units: &ParamValues) -> Result<(), String> {
+    let Some(g) = median_accel_g(log) else {
+        return Ok(());
+    };
+    if (0.5..=2.0).contains(&g) {
+        return Ok(());
+    }
+    let chosen = AccelUnit::ALL
+        .get(units.index("accel_unit"))
+        .map_or(ImuScales::default().accel, |(u, _)| *u);
+    let raw = g / chosen.to_g();
+    let (best, name) = AccelUnit::ALL
+        .iter()
+        .min_by(|a, b| {
+            let off = |u: &AccelUnit| (raw * u.to_g()).ln().abs();
+            off(&a.0).total_cmp(&off(&b.0))
+        })
+        .copied()
+        .unwrap_or((chosen, "counts2"));
+    Err(format!(
+        "the accelerometer reads a median of {g:.3e} g where about 1 g is expected: its unit \
+         does not fit (the unit `{name}` gives {:.2} g)",
+        raw * best.to_g()
+    ))
+}
+
 /// [`parse_imu_log`] with the unit choices of [`IMU_LOG`].
-fn parse_imu_with(text: &str, units: &ParamValues) -> RateLog {
+fn parse_imu_with(text: &[u8], units: &ParamValues) -> RateLog {
     let defaults = ImuScales::default();
     let scales = ImuScales {
         time: time_unit(units, "time_unit"),
@@ -295,7 +272,7 @@ mod tests {
         }
         // The defaults are the chip's power-on ranges in counts and Arduino millis().
         let units = IMU_LOG.default_units();
-        let log = (IMU_LOG.parse)("1000,0,0,16384,131,0,0\n1010,0,0,16384,131,0,0\n", &units);
+        let log = (IMU_LOG.parse)(b"1000,0,0,16384,131,0,0\n1010,0,0,16384,131,0,0\n", &units);
         assert_eq!(log.t_s, vec![1.0, 1.01]);
         // ±250 °/s over 16 bits: 131 counts are 131·250/32768 ≈ 0.9995 °/s.
         let expected = (131.0 * 250.0 / 32768.0f64).to_radians();
@@ -321,6 +298,6 @@ mod tests {
         assert!((log.rate_rad_s[1] - 10f64.to_radians()).abs() < 1e-12);
         assert_eq!(log.errors.len(), 1);
         assert_eq!(log.errors[0].line, 4);
-        assert!(log.errors[0].reason.contains("seven columns"));
+        assert!(log.errors[0].reason.contains("expected 7 columns"));
     }
 }

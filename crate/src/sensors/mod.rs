@@ -2,10 +2,12 @@
 
 mod gyro;
 mod imu_log;
+pub mod log_lines;
 mod noise;
 mod rate_log;
+pub mod timeline;
 
-pub use crate::model::{LogFormat, LogLineError, RateLog};
+pub use crate::model::{LogCounts, LogFormat, LogGap, LogLineError, RateLog};
 pub use gyro::{Gyro3, Gyro3Config};
 pub use imu_log::{AccelUnit, GyroUnit, IMU_LOG, ImuScales, parse_imu_log};
 pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};

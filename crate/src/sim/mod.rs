@@ -174,9 +174,10 @@ impl Simulation {
     }
 
     /// Runs `lab`'s estimators on a recorded gyro log instead of simulated truth and sensors
-    /// (paper 1's laboratory mode). The step is the log's median sample interval; each step
-    /// delivers the newest logged sample not yet delivered. There is no truth, so every error
-    /// series is missing.
+    /// (paper 1's laboratory mode). The clock is the log's (less its first time), starting
+    /// one period P before the first sample; each step goes to the next sample and delivers
+    /// it, so every sample is delivered once (a gap is stepped through at P, without
+    /// samples). There is no truth, so every error series is missing.
     pub fn replay(
         lab: &'static dyn Lab,
         params: ParamValues,
@@ -243,6 +244,7 @@ impl Simulation {
             journal: Journal::default(),
         };
         let truth = sim.run.truth.state();
+        sim.t_s = truth.t_s;
         sim.record(&truth);
         sim
     }
@@ -411,9 +413,12 @@ impl Simulation {
         }
     }
 
-    /// One fixed step.
+    /// One step: the lab's fixed one, or a replay's to its next sample.
     pub fn step(&mut self) {
-        let dt_s = self.dt_s;
+        let dt_s = match &self.replay {
+            Some(log) => log.step_after(self.t_s),
+            None => self.dt_s,
+        };
         self.run.truth.draw_noise(&mut self.rng);
         self.run.truth.step(dt_s);
         let truth = self.run.truth.state();

@@ -16,42 +16,50 @@ const LOGGED_GYRO_DEG_S: Quantity = Quantity::new("gyro_deg_s", "logged gyro rea
 const LOGGED_ACCEL_ANGLE_DEG: Quantity =
     Quantity::new("accel_angle_deg", "logged accelerometer angle θ_acc", "deg");
 
-/// "Truth" of a replay: time runs, the logged rate stands in for the true rate, the angle is
-/// unknown (so every error is missing).
+/// "Truth" of a replay: time runs on the log's clock (from one period before its first
+/// sample), the logged rate stands in for the true rate, the angle is unknown (so every
+/// error is missing).
 pub struct LogTruth {
     log: Arc<RateLog>,
     t_s: f64,
-    index: usize,
+    index: Option<usize>,
 }
 
 impl LogTruth {
-    /// Starts at the log's first sample.
+    /// Starts one period before the log's first sample.
     pub fn new(log: Arc<RateLog>) -> Self {
         Self {
+            t_s: -log.period_s,
             log,
-            t_s: 0.0,
-            index: 0,
+            index: None,
         }
     }
 }
+
+/// Times closer than this many periods are one time (a step lands on its sample exactly).
+const SNAP_PERIODS: f64 = 1e-6;
 
 impl TruthModel for LogTruth {
     fn apply_params(&mut self, _params: &ParamValues) {}
 
     fn step(&mut self, dt_s: f64) {
         self.t_s += dt_s;
-        while self.index + 1 < self.log.t_s.len()
-            && self.log.t_s[self.index + 1] - self.log.t_s[0] <= self.t_s + 1e-9
-        {
-            self.index += 1;
+        let tol = SNAP_PERIODS * self.log.period_s;
+        let next = self.index.map_or(0, |k| k + 1);
+        if let Some(t) = self.log.replay_time_s(next) {
+            if (t - self.t_s).abs() <= tol {
+                self.t_s = t;
+            }
+            if t <= self.t_s + tol {
+                self.index = Some(next);
+            }
         }
     }
 
     fn state(&self) -> TruthState {
         let rate = self
-            .log
-            .rate_rad_s
-            .get(self.index)
+            .index
+            .and_then(|k| self.log.rate_rad_s.get(k))
             .copied()
             .unwrap_or(f64::NAN);
         TruthState {
@@ -64,14 +72,17 @@ impl TruthModel for LogTruth {
     }
 }
 
-/// Delivers each logged sample once, at the first step at or after its time.
+/// Delivers each logged sample once, in order, at the step that lands on its time (the
+/// replay's steps go from sample to sample; see [`RateLog::step_after`]). Two samples are
+/// never delivered in one step, so none is overwritten.
 ///
-/// Its own series are what was logged: the gyro rate and, for an IMU log, the roll the
-/// accelerometer gives, atan2(a_y, a_z) (the latest sample delivered).
+/// Its own series are what was logged at this step: the gyro rate and, for an IMU log, the
+/// roll the accelerometer gives, atan2(a_y, a_z); missing at a step without a sample (a
+/// gap shows as a break).
 pub struct LogSensor {
     log: Arc<RateLog>,
     next: usize,
-    last: Option<usize>,
+    current: Option<usize>,
 }
 
 impl LogSensor {
@@ -80,7 +91,7 @@ impl LogSensor {
         Self {
             log,
             next: 0,
-            last: None,
+            current: None,
         }
     }
 }
@@ -89,19 +100,19 @@ impl SensorModel for LogSensor {
     fn apply_params(&mut self, _params: &ParamValues) {}
 
     fn sample(&mut self, truth: &TruthState, _dt_s: f64, _rng: &mut ChaCha8Rng) -> Measurements {
-        let t0 = self.log.t_s.first().copied().unwrap_or(0.0);
-        let mut latest = None;
-        while self.next < self.log.t_s.len() && self.log.t_s[self.next] - t0 <= truth.t_s + 1e-9 {
-            latest = Some(self.next);
+        let tol = SNAP_PERIODS * self.log.period_s;
+        self.current = self
+            .log
+            .replay_time_s(self.next)
+            .filter(|t| *t <= truth.t_s + tol)
+            .map(|_| self.next);
+        if self.current.is_some() {
             self.next += 1;
-        }
-        if latest.is_some() {
-            self.last = latest;
         }
         Measurements {
             t_s: truth.t_s,
-            gyro_axis_rad_s: latest.map(|k| self.log.rate_rad_s[k]),
-            accel_body_g: latest.and_then(|k| self.log.accel_g.get(k).copied()),
+            gyro_axis_rad_s: self.current.map(|k| self.log.rate_rad_s[k]),
+            accel_body_g: self.current.and_then(|k| self.log.accel_g.get(k).copied()),
             ..Default::default()
         }
     }
@@ -121,7 +132,7 @@ impl SensorModel for LogSensor {
     }
 
     fn extra_values(&self, out: &mut Extras<'_>) {
-        let k = self.last;
+        let k = self.current;
         let rate = k.and_then(|k| self.log.rate_rad_s.get(k));
         out.put(
             &LOGGED_GYRO_DEG_S,

@@ -76,7 +76,7 @@ impl AppState {
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {
-                Some(log) => self.start_replay(log.name.into(), log.text),
+                Some(log) => self.start_replay(log.name.into(), log.text.as_bytes()),
                 None => self.warn("msg-no-example-log", &[]),
             },
             IoCommand::CopyPython => {
@@ -96,7 +96,7 @@ impl AppState {
             return;
         };
         match picked {
-            Ok((name, text)) => self.start_replay(name, &text),
+            Ok((name, bytes)) => self.start_replay(name, &bytes),
             Err(e) => self.error(e),
         }
     }
@@ -116,12 +116,26 @@ impl AppState {
         }
     }
 
-    /// Parses `text` as the lab's kind of log and replays it.
-    fn start_replay(&mut self, name: String, text: &str) {
-        let Some(format) = self.sim.lab().page().log_format else {
+    /// Parses `bytes` as the lab's kind of log and replays it: every bad line is listed
+    /// (the first dozen as messages), the counts and the clock's gaps are said.
+    fn start_replay(&mut self, name: String, bytes: &[u8]) {
+        let lab = self.sim.lab();
+        let Some(format) = lab.page().log_format else {
             return self.warn("msg-no-logs-named", &[("name", name.as_str().into())]);
         };
-        let log = (format.parse)(text, &self.io.units_for(format));
+        let failed = |why: String| {
+            (
+                "msg-log-failed",
+                vec![("name", name.as_str().into()), ("why", why.into())],
+            )
+        };
+        let log = match attlab::labs::read_log(lab, bytes, &self.io.units_for(format)) {
+            Ok(log) => log,
+            Err(why) => {
+                let (id, args) = failed(why);
+                return self.warn(id, &args);
+            }
+        };
         const SHOWN: usize = 12;
         for e in log.errors.iter().take(SHOWN) {
             self.warn(
@@ -139,26 +153,30 @@ impl AppState {
                 &[("name", name.as_str().into()), ("n", more.into())],
             );
         }
-        let samples = log.t_s.len();
-        let (lab, params) = (self.sim.lab(), self.sim.params().clone());
-        match Simulation::replay(lab, params, log, SimOptions::default()) {
+        let (counts, gaps) = (log.counts, log.gaps.len());
+        match Simulation::replay(lab, self.sim.params().clone(), log, SimOptions::default()) {
             Ok(sim) => {
                 self.drop_jobs();
                 self.sim = sim;
                 self.run.sweep = None;
                 self.say(
                     "msg-log-replaying",
-                    &[("name", name.as_str().into()), ("n", samples.into())],
+                    &[
+                        ("name", name.as_str().into()),
+                        ("n", counts.kept.into()),
+                        ("lines", counts.data_lines.into()),
+                        ("reordered", counts.reordered.into()),
+                        ("merged", counts.merged.into()),
+                        ("rejected", counts.rejected.into()),
+                        ("gaps", gaps.into()),
+                    ],
                 );
-                self.io.replaying = Some((name, samples));
+                self.io.replaying = Some((name, counts.kept));
             }
-            Err(e) => self.warn(
-                "msg-log-failed",
-                &[
-                    ("name", name.as_str().into()),
-                    ("why", e.to_string().into()),
-                ],
-            ),
+            Err(why) => {
+                let (id, args) = failed(why);
+                self.warn(id, &args);
+            }
         }
     }
 

@@ -13,7 +13,7 @@ mod bench;
 mod run;
 
 use bench::{bench, print_timings};
-use run::{LogUnits, replay, run};
+use run::{LogUnits, Output, replay, run};
 
 /// Attitude Lab, headless: reproduce the papers, run a lab to CSV, time the estimators.
 #[derive(Parser, Debug)]
@@ -82,6 +82,10 @@ enum Command {
         /// Write every series even for a lab whose paper defines its own output file.
         #[arg(long)]
         all_series: bool,
+        /// Refuse a run whose CSV would exceed this many megabytes (estimated before it
+        /// starts from a short probe run).
+        #[arg(long, default_value_t = 2000.0)]
+        max_csv_mb: f64,
     },
     /// Run a lab's estimators on a recorded log and write the series: a gyro log (CSV: time,
     /// rate; p1) or an Arduino MPU-6050 log (CSV: time, ax, ay, az, gx, gy, gz; p4).
@@ -113,6 +117,10 @@ enum Command {
         /// Parameter override `key=value` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// Refuse a run whose CSV would exceed this many megabytes (estimated before it
+        /// starts from a short probe run).
+        #[arg(long, default_value_t = 2000.0)]
+        max_csv_mb: f64,
     },
     /// Time one simulation step of every lab and one step of every estimator.
     Bench {
@@ -151,11 +159,12 @@ pub fn main() -> ExitCode {
             set,
             preset,
             all_series,
+            max_csv_mb,
         } => run(
             &lab,
             seed,
             duration,
-            &csv,
+            Output::new(&csv, max_csv_mb),
             preset.as_deref(),
             &set,
             all_series,
@@ -170,6 +179,7 @@ pub fn main() -> ExitCode {
             gyro_unit,
             csv,
             set,
+            max_csv_mb,
         } => replay(
             &lab,
             &log,
@@ -179,7 +189,7 @@ pub fn main() -> ExitCode {
                 accel: accel_unit.as_deref(),
                 gyro: gyro_unit.as_deref(),
             },
-            &csv,
+            Output::new(&csv, max_csv_mb),
             &set,
         )
         .map(|()| true),

@@ -3,14 +3,58 @@
 
 use super::find_lab;
 use attlab::model::{Lab, ParamValues};
-use attlab::sim::{CsvSink, Selection, SimOptions, Simulation};
+use attlab::sim::{CsvSink, Selection, SimOptions, Simulation, csv_cell};
 use std::path::Path;
+
+/// Where a run's CSV goes, and how large it may get.
+pub(super) struct Output<'a> {
+    csv: &'a Path,
+    max_bytes: f64,
+}
+
+impl<'a> Output<'a> {
+    pub(super) fn new(csv: &'a Path, max_csv_mb: f64) -> Self {
+        Self {
+            csv,
+            max_bytes: max_csv_mb * 1e6,
+        }
+    }
+
+    /// Refuses `what` if `rows` rows of `cells` cells (at the mean cell size of a probe
+    /// run, `probe`) would exceed the limit; the message gives the estimate.
+    fn check(
+        &self,
+        what: &str,
+        mut probe: Simulation,
+        rows: f64,
+        cells: usize,
+    ) -> Result<(), String> {
+        let (mut bytes, mut n) = (0usize, 0usize);
+        for _ in 0..200 {
+            probe.step();
+            let row = probe.last_row();
+            bytes += row.iter().map(|v| csv_cell(*v).len() + 1).sum::<usize>();
+            n += row.len();
+        }
+        let estimate = rows * cells as f64 * bytes as f64 / n.max(1) as f64;
+        if estimate <= self.max_bytes {
+            return Ok(());
+        }
+        Err(format!(
+            "{what} would write about {:.1} GB of CSV ({rows:.3e} rows × {cells} columns) to {}; \
+             the limit is {:.0} MB: shorten it, or raise the limit with --max-csv-mb",
+            estimate / 1e9,
+            self.csv.display(),
+            self.max_bytes / 1e6
+        ))
+    }
+}
 
 pub(super) fn run(
     lab_id: &str,
     seed: u64,
     duration: Option<f64>,
-    csv_path: &Path,
+    output: Output<'_>,
     preset: Option<&str>,
     set: &[String],
     every_series: bool,
@@ -23,6 +67,15 @@ pub(super) fn run(
             "--duration must be a number of seconds in (0, 1e6], got {duration_s}"
         ));
     }
+    let csv_path = output.csv;
+    let probe = Simulation::with_options(lab, params.clone(), seed, all_series())
+        .map_err(|e| e.to_string())?;
+    let rows = (duration_s / probe.dt_s()).ceil() + 1.0;
+    let cells = match (every_series, lab.output_file(&params)) {
+        (false, Some(file)) => file.headers.len(),
+        _ => probe.specs().len(),
+    };
+    output.check(&format!("--duration {duration_s} s"), probe, rows, cells)?;
     if let (false, Some(file)) = (every_series, lab.output_file(&params)) {
         let out = std::fs::File::create(csv_path)
             .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
@@ -49,6 +102,26 @@ pub(super) fn run(
     let mut sim = Simulation::with_options(lab, params.clone(), seed, all_series())
         .map_err(|e| e.to_string())?;
     let rows = stream_csv(&mut sim, duration_s, csv_path)?;
+    let sidecar = write_sidecar(&sim, &params, seed, duration_s, rows, csv_path)?;
+    println!(
+        "wrote {rows} rows × {} series to {} and parameters to {}",
+        sim.specs().len(),
+        csv_path.display(),
+        sidecar.display()
+    );
+    Ok(())
+}
+
+/// Writes the JSON sidecar of a run beside its CSV; returns its path.
+fn write_sidecar(
+    sim: &Simulation,
+    params: &ParamValues,
+    seed: u64,
+    duration_s: f64,
+    rows: u64,
+    csv_path: &Path,
+) -> Result<std::path::PathBuf, String> {
+    let lab = sim.lab();
     let sidecar = csv_path.with_extension("json");
     let meta = serde_json::json!({
         "attlab_version": env!("CARGO_PKG_VERSION"),
@@ -70,13 +143,7 @@ pub(super) fn run(
     let text = serde_json::to_string_pretty(&meta).map_err(|e| e.to_string())?;
     std::fs::write(&sidecar, text)
         .map_err(|e| format!("cannot write {}: {e}", sidecar.display()))?;
-    println!(
-        "wrote {rows} rows × {} series to {} and parameters to {}",
-        sim.specs().len(),
-        csv_path.display(),
-        sidecar.display()
-    );
-    Ok(())
+    Ok(sidecar)
 }
 
 /// The unit flags of `attlab replay`.
@@ -93,37 +160,53 @@ pub(super) fn replay(
     lab_id: &str,
     log_path: &Path,
     units: LogUnits<'_>,
-    csv_path: &Path,
+    output: Output<'_>,
     set: &[String],
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
-    let format = lab.page().log_format.ok_or_else(|| {
-        let replaying: Vec<&str> = attlab::labs::all()
-            .iter()
-            .filter(|l| l.page().log_format.is_some())
-            .map(|l| l.id())
-            .collect();
-        format!(
-            "lab {lab_id} does not replay logs; these do: {}",
-            replaying.join(", ")
-        )
-    })?;
+    let Some(format) = lab.page().log_format else {
+        return attlab::labs::read_log(lab, &[], &ParamValues::defaults(&[])).map(|_| ());
+    };
     let unit_values = log_units(format, &units)?;
-    let text = std::fs::read_to_string(log_path)
-        .map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
-    let log = (format.parse)(&text, &unit_values);
+    let bytes =
+        std::fs::read(log_path).map_err(|e| format!("cannot read {}: {e}", log_path.display()))?;
+    let name = log_path.display();
+    let log =
+        attlab::labs::read_log(lab, &bytes, &unit_values).map_err(|e| format!("{name}: {e}"))?;
     for e in &log.errors {
-        eprintln!("attlab: {}: skipped {e}", log_path.display());
+        eprintln!("attlab: {name}: skipped {e}");
+    }
+    for e in &log.notes {
+        eprintln!("attlab: {name}: kept {e}");
+    }
+    for g in &log.gaps {
+        eprintln!(
+            "attlab: {name}: line {}: the clock {} from {} s to {} s; joined after {:.3} s",
+            g.line,
+            if g.logged_to_s < g.logged_from_s {
+                "restarted"
+            } else {
+                "jumped"
+            },
+            g.logged_from_s,
+            g.logged_to_s,
+            g.to_s - g.from_s
+        );
     }
     let params = params_from(lab, None, set)?;
-    let (samples, skipped) = (log.t_s.len(), log.errors.len());
-    let duration = log.t_s.last().copied().unwrap_or(0.0) - log.t_s.first().copied().unwrap_or(0.0);
-    let mut sim = Simulation::replay(lab, params, log, all_series())
-        .map_err(|e| format!("{}: {e}", log_path.display()))?;
-    stream_csv(&mut sim, duration, csv_path)?;
+    let (counts, gaps, span) = (log.counts, log.gaps.len(), log.span_s());
+    let rows = span / log.period_s + 2.0;
+    let probe = Simulation::replay(lab, params.clone(), log.clone(), all_series())
+        .map_err(|e| format!("{name}: {e}"))?;
+    let cells = probe.specs().len();
+    output.check(&format!("replaying {name}"), probe, rows, cells)?;
+    let mut sim =
+        Simulation::replay(lab, params, log, all_series()).map_err(|e| format!("{name}: {e}"))?;
+    stream_csv(&mut sim, span, output.csv)?;
     println!(
-        "replayed {samples} samples ({skipped} lines skipped) over {duration:.2} s into {}",
-        csv_path.display()
+        "replayed {name}: {counts}, {gaps} clock {}, over {span:.2} s into {}",
+        if gaps == 1 { "gap" } else { "gaps" },
+        output.csv.display()
     );
     Ok(())
 }

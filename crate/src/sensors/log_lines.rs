@@ -1,0 +1,260 @@
+//! The lines of a recorded log, format-blind: bytes in, numeric rows of the expected width
+//! out, and every other line accounted for by its number and reason. Both importers (the
+//! one-axis gyro log and the MPU-6050 IMU log) read through here, with the `csv` crate.
+//!
+//! * A UTF-8 byte-order mark is stripped before anything else.
+//! * The delimiter (comma, semicolon, tab or spaces) is the one under which most of the
+//!   first 200 lines are all numbers.
+//! * Blank lines and lines starting with `#` are skipped silently; so is the header: the
+//!   first line before the data whose fields are all words, as many as the columns.
+//! * A line with invalid UTF-8 is a bad line, reported with its line and column; the rest
+//!   of the log is read.
+//! * A row of numbers of another width is reported with both widths ("two lines merged?"
+//!   when it is exactly twice as wide); the widths seen are counted, so the caller can
+//!   tell a log of another format from a few bad lines.
+
+use super::timeline;
+use crate::model::{LogCounts, LogLineError, RateLog};
+use nalgebra::Vector3;
+use std::collections::BTreeMap;
+
+/// Delimiters a log may use, in order of preference when several fit equally well.
+const DELIMITERS: [u8; 4] = [b',', b';', b'\t', b' '];
+
+/// One row of numbers of the expected width, with its 1-based line number.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Row {
+    /// Line number in the file.
+    pub line: usize,
+    /// The numbers, as many as the columns.
+    pub values: Vec<f64>,
+    /// The line as read (shortened), for messages about it.
+    pub text: String,
+}
+
+/// What [`read_rows`] found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Rows {
+    /// Rows of the expected width, in file order.
+    pub rows: Vec<Row>,
+    /// Lines that are not rows (a banner, words, too few or too many columns, bad bytes).
+    pub errors: Vec<LogLineError>,
+    /// Lines that count: every line but blank ones, comments and the header.
+    pub data_lines: usize,
+    /// How many lines of numbers had each width (the expected one included).
+    pub widths: BTreeMap<usize, usize>,
+}
+
+/// A finite number, or `None`.
+pub(crate) fn number(s: &str) -> Option<f64> {
+    s.trim().parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+/// The fields of `line` at `delimiter`: trimmed; whitespace runs count as one delimiter;
+/// one trailing empty field (a delimiter at the end of the line) is dropped.
+fn fields(line: &str, delimiter: u8) -> Vec<&str> {
+    let parts = line.split(char::from(delimiter)).map(str::trim);
+    let mut f: Vec<&str> = if delimiter.is_ascii_whitespace() {
+        parts.filter(|f| !f.is_empty()).collect()
+    } else {
+        parts.collect()
+    };
+    if f.len() > 1 && f.last() == Some(&"") {
+        f.pop();
+    }
+    f
+}
+
+fn all_numbers(f: &[&str]) -> bool {
+    f.len() >= 2 && f.iter().all(|c| number(c).is_some())
+}
+
+/// The delimiter under which most of the first lines are rows of numbers.
+fn sniff_delimiter(text: &str) -> u8 {
+    let sample: Vec<&str> = text.lines().take(200).collect();
+    let score = |d: u8| sample.iter().filter(|l| all_numbers(&fields(l, d))).count();
+    DELIMITERS
+        .iter()
+        .copied()
+        .max_by_key(|d| {
+            (
+                score(*d),
+                std::cmp::Reverse(DELIMITERS.iter().position(|x| x == d)),
+            )
+        })
+        .unwrap_or(b',')
+}
+
+/// `bytes` without a leading UTF-8 byte-order mark.
+fn without_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
+}
+
+/// Reads `bytes` as rows of `columns` numbers (`names` says which, for the messages: "time,
+/// rate"). See the module documentation for the rules.
+pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &str) -> Rows {
+    let bytes = without_bom(bytes);
+    let delimiter = sniff_delimiter(&String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 16)]));
+    // One record per line: no quoting (a stray quote must not swallow the lines after it),
+    // only '\n' ends a record (so the line numbers are the editor's).
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .quoting(false)
+        .delimiter(delimiter)
+        .terminator(csv::Terminator::Any(b'\n'))
+        .from_reader(bytes);
+    let mut out = Rows::default();
+    let mut header_seen = false;
+    for record in reader.byte_records().filter_map(Result::ok) {
+        let Some(position) = record.position() else {
+            continue;
+        };
+        let line = position.line() as usize;
+        let start = (position.byte() as usize).min(bytes.len());
+        let raw = bytes[start..].split(|b| *b == b'\n').next().unwrap_or(&[]);
+        let text = match std::str::from_utf8(raw) {
+            Ok(text) => text.trim(),
+            Err(e) => {
+                out.data_lines += 1;
+                out.errors.push(bad_bytes(line, raw, e.valid_up_to()));
+                continue;
+            }
+        };
+        if text.is_empty() || text.starts_with('#') {
+            continue;
+        }
+        let f = fields(text, delimiter);
+        let words = f.iter().all(|c| !c.is_empty() && number(c).is_none());
+        if out.rows.is_empty() && !header_seen && words && f.len() == columns {
+            header_seen = true;
+            continue;
+        }
+        out.data_lines += 1;
+        let err = |reason: String| LogLineError {
+            line,
+            text: text.chars().take(80).collect(),
+            reason,
+        };
+        if all_numbers(&f) {
+            *out.widths.entry(f.len()).or_default() += 1;
+            if f.len() == columns {
+                let values = f.iter().filter_map(|c| number(c)).collect();
+                let text = text.chars().take(80).collect();
+                out.rows.push(Row { line, values, text });
+            } else {
+                let merged = if f.len() == 2 * columns {
+                    " (two lines merged?)"
+                } else {
+                    ""
+                };
+                out.errors.push(err(format!(
+                    "expected {columns} columns ({names}), found {}{merged}",
+                    f.len()
+                )));
+            }
+            continue;
+        }
+        out.errors.push(err(if out.rows.is_empty() && !header_seen {
+            "before the data (a sketch's banner?)".to_string()
+        } else if f.len() != columns {
+            format!("expected {columns} columns ({names}), found {}", f.len())
+        } else {
+            let bad = f.iter().find(|c| number(c).is_none()).unwrap_or(&"");
+            format!("not a number: `{bad}`")
+        }));
+    }
+    out
+}
+
+/// Reads `bytes` as a log of `columns` numbers per line (`names` says which), time first
+/// in units of `time_scale` s, its clock repaired ([`timeline`]); `sample` turns one row's
+/// numbers (time first) into a rate (rad/s) and, for an IMU log, an acceleration (g).
+pub(crate) fn read_log(
+    bytes: &[u8],
+    columns: usize,
+    names: &str,
+    time_scale: f64,
+    sample: impl Fn(&[f64]) -> (f64, Option<Vector3<f64>>),
+) -> RateLog {
+    let Rows {
+        rows,
+        mut errors,
+        data_lines,
+        widths,
+    } = read_rows(bytes, columns, names);
+    let timeline = timeline::order(rows, time_scale, &mut errors);
+    errors.sort_by_key(|e| e.line);
+    let mut log = RateLog {
+        period_s: timeline.period_s.unwrap_or(0.0),
+        gaps: timeline.gaps,
+        notes: timeline.notes,
+        widths,
+        ..RateLog::default()
+    };
+    for s in &timeline.samples {
+        let (rate, accel) = sample(&s.row.values);
+        log.t_s.push(s.t_s);
+        log.rate_rad_s.push(rate);
+        log.accel_g.extend(accel);
+    }
+    log.counts = LogCounts {
+        data_lines,
+        kept: log.t_s.len(),
+        reordered: timeline.reordered,
+        merged: timeline.merged,
+        rejected: errors.len(),
+    };
+    log.errors = errors;
+    log
+}
+
+/// The error for line `line` whose bytes `raw` are valid UTF-8 up to `valid`.
+fn bad_bytes(line: usize, raw: &[u8], valid: usize) -> LogLineError {
+    let good = String::from_utf8_lossy(&raw[..valid]);
+    let byte = raw.get(valid).copied().unwrap_or(0);
+    LogLineError {
+        line,
+        text: String::from_utf8_lossy(raw).chars().take(80).collect(),
+        reason: format!(
+            "not UTF-8 text: byte 0x{byte:02X} at column {}",
+            good.chars().count() + 1
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bom_a_bad_byte_and_merged_lines_are_each_one_line_of_their_own() {
+        let mut bytes = b"\xEF\xBB\xBF0,1\n0.1,2\n0.2,\xFF3\n0.3,4,0.4,5\n0.5,6,\n".to_vec();
+        bytes.extend_from_slice(b"\n# note\n0.6;7\n");
+        let r = read_rows(&bytes, 2, "time, rate");
+        let lines: Vec<usize> = r.rows.iter().map(|r| r.line).collect();
+        assert_eq!(
+            lines,
+            vec![1, 2, 5],
+            "the BOM line is data; a trailing comma is fine"
+        );
+        let bad: Vec<(usize, &str)> = r
+            .errors
+            .iter()
+            .map(|e| (e.line, e.reason.as_str()))
+            .collect();
+        assert_eq!(
+            bad,
+            vec![
+                (3, "not UTF-8 text: byte 0xFF at column 5"),
+                (
+                    4,
+                    "expected 2 columns (time, rate), found 4 (two lines merged?)"
+                ),
+                (8, "expected 2 columns (time, rate), found 1"),
+            ]
+        );
+        assert_eq!(r.data_lines, 6);
+        assert_eq!(r.widths.get(&4), Some(&1));
+    }
+}
