@@ -1,7 +1,8 @@
-//! Nothing grows without bound: the heap, counted by this test binary's allocator (`stats_alloc`), is
-//! flat after warm-up in a long run of every lab at its defaults, and after paper 5's
-//! method (9) diverges (it used to grow its re-integration history by ~3 kB per simulated
-//! second from then on).
+//! Nothing grows without bound: the heap, counted by this test binary's allocator
+//! (`stats_alloc`), is flat after warm-up in long runs of every lab at its defaults and with
+//! the fuzzer's random sets, and after paper 5's method (9) diverges (it used to grow its
+//! re-integration history by ~3 kB per simulated second from then on); and the fuzzer,
+//! given the count, checks each set's whole heap.
 #![cfg(not(target_arch = "wasm32"))]
 
 use attlab::labs;
@@ -75,5 +76,58 @@ fn paper_5s_method_9_grows_nothing_after_it_diverges() {
         grown <= SLACK_BYTES,
         "the heap grew by {grown} B over the 1000 s after t = {:.0} s (diverged at {t_diverged:.0} s)",
         t_diverged + 100.0
+    );
+}
+
+#[test]
+fn the_fuzzers_random_sets_hold_their_heap_flat_after_warm_up() {
+    use rand::SeedableRng;
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(25);
+    for lab in labs::all() {
+        for _ in 0..2 {
+            let params = attlab::analysis::fuzz::random_params(*lab, &mut rng);
+            let described = format!("{params:?}");
+            let mut sim = Simulation::new(*lab, params, 1);
+            // Longer than the largest adaptation window (5 000 samples) fills.
+            for _ in 0..20_000 {
+                sim.step();
+            }
+            let region = Region::new(GLOBAL);
+            for _ in 0..20_000 {
+                sim.step();
+            }
+            let grown = grown(&region);
+            assert!(
+                grown <= SLACK_BYTES,
+                "{}: the heap grew by {grown} B over 20 000 steps after warm-up with {described}",
+                lab.id()
+            );
+        }
+    }
+}
+
+#[test]
+fn the_fuzzer_counts_each_sets_heap_where_the_binary_counts_it() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    fn live() -> usize {
+        let s = INSTRUMENTED_SYSTEM.stats();
+        (s.bytes_allocated as isize - s.bytes_deallocated as isize + s.bytes_reallocated).max(0)
+            as usize
+    }
+    attlab::analysis::fuzz::count_heap_with(live);
+    let config = attlab::analysis::fuzz::FuzzConfig {
+        sets: 12,
+        steps: 1000,
+        seed: 3,
+    };
+    let report = attlab::analysis::fuzz::run(labs::all(), config, |_, _| {});
+    assert!(report.failures.is_empty(), "{:?}", report.failures);
+    let heap = report.max_heap_bytes.expect("the heap was counted");
+    // Every set builds a recorder of the default budget: the heap grows at least by it.
+    assert!(
+        heap >= report.max_memory_bytes && heap <= report.max_memory_bytes + (16 << 20),
+        "heap {heap} B, recorder {} B",
+        report.max_memory_bytes
     );
 }

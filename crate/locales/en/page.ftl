@@ -68,6 +68,7 @@ more-with = More: { $title }
 log10 = log10
 bands = ±3σ bands
 outages = shade outages
+replay-gaps = no logged sample (a gap or a restart of the log's clock)
 outages-hint = Shade the intervals where a sensor gives nothing (every plot)
 axis-time = t [s]
 axis-mixed-units = mixed units (see the legend)

@@ -66,6 +66,7 @@ q-accel_angle_deg = угол по акселерометру θ_acc = atan2(a_y,
 q-accel_deg_s2 = угловое ускорение θ̈
 q-gyro_bias_deg_s = смещение нуля гироскопа b
 q-gyro_deg_s = показание гироскопа ω
+q-log_sample = отсчёт записи на этом шаге
 q-innov_angle_rad = невязка угла по акселерометру θ_acc
 q-innov_rate_rad_s = невязка угловой скорости по гироскопу ω
 q-setpoint_deg = уставка θ_ref

@@ -2,7 +2,9 @@
 //! (log-uniform where the slider is logarithmic, both ends included), random seeds, a live
 //! change half-way, a few thousand steps. It asserts what must hold for any input: no panic;
 //! every estimate finite unless its status says why not; every covariance symmetric and
-//! positive semi-definite; the recorder's memory fixed within its budget.
+//! positive semi-definite; the recorder's memory fixed within its budget; and, where the
+//! binary counts its heap ([`count_heap_with`]: the CLI does), a set's whole heap within
+//! its recorder's budget and [`HEAP_ALLOWANCE_BYTES`].
 //! `cargo xtask test` runs it over 1 000 sets, `attlab fuzz --sets N` for longer.
 
 use crate::model::{Lab, ParamKind, ParamSpec, ParamValues, Scale};
@@ -10,6 +12,20 @@ use crate::sim::{SimOptions, Simulation};
 use nalgebra::DMatrix;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::sync::OnceLock;
+
+/// The heap a set may use beyond its recorder's budget (estimators, windows, messages).
+pub const HEAP_ALLOWANCE_BYTES: usize = 16 << 20;
+
+/// How the process counts its live heap bytes, if it does.
+static LIVE_HEAP: OnceLock<fn() -> usize> = OnceLock::new();
+
+/// Makes every later set measure the process's heap with `live_bytes` (the bytes allocated
+/// and not freed, from a counting global allocator). Only a single-threaded run should: the
+/// count is process-wide.
+pub fn count_heap_with(live_bytes: fn() -> usize) {
+    let _ = LIVE_HEAP.set(live_bytes);
+}
 
 /// How long and how many.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,6 +92,8 @@ pub struct FuzzReport {
     pub failures: Vec<FuzzFailure>,
     /// Largest recorder memory seen (bytes) and the budget.
     pub max_memory_bytes: usize,
+    /// Largest heap a set grew by (bytes), where the heap is counted.
+    pub max_heap_bytes: Option<usize>,
 }
 
 /// A random value of `spec`: an end of the range with probability 1/10 each, otherwise
@@ -196,15 +214,28 @@ fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64])
     None
 }
 
-/// Runs one set: the first rule it breaks, or whether an estimator flagged itself
-/// (diverged, unobservable) and the recorder's memory.
+/// What one set used and said.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SetOutcome {
+    /// Some estimator flagged itself (diverged, unobservable).
+    pub flagged: bool,
+    /// The recorder's memory (bytes).
+    pub recorder_bytes: usize,
+    /// How far the heap grew during the set (bytes), where it is counted.
+    pub heap_bytes: Option<usize>,
+}
+
+/// Runs one set: the first rule it breaks, or what it used and said.
 pub fn fuzz_one(
     lab: &'static dyn Lab,
     params: ParamValues,
     seed: u64,
     steps: usize,
     rng: &mut ChaCha8Rng,
-) -> Result<(bool, usize), String> {
+) -> Result<SetOutcome, String> {
+    let live_heap = LIVE_HEAP.get().copied();
+    let heap0 = live_heap.map(|f| f());
+    let mut heap_peak = heap0;
     let options = SimOptions::default();
     let budget = options.budget_bytes;
     let mut sim =
@@ -229,8 +260,24 @@ pub fn fuzz_one(
                 steps / 2
             ));
         }
+        if let Some(f) = live_heap.filter(|_| k % 64 == 63 || k + 1 == steps) {
+            heap_peak = heap_peak.max(Some(f()));
+        }
     }
-    Ok((sim.statuses().iter().any(|s| !s.is_ok()), memory0))
+    let heap_bytes = heap0.zip(heap_peak).map(|(a, b)| b.saturating_sub(a));
+    if let Some(grown) = heap_bytes.filter(|g| *g > budget + HEAP_ALLOWANCE_BYTES) {
+        return Err(format!(
+            "the heap grew by {:.1} MiB in {steps} steps, beyond the recorder's {:.1} MiB and {:.0} MiB for the rest",
+            grown as f64 / f64::from(1 << 20),
+            budget as f64 / f64::from(1 << 20),
+            HEAP_ALLOWANCE_BYTES as f64 / f64::from(1 << 20)
+        ));
+    }
+    Ok(SetOutcome {
+        flagged: sim.statuses().iter().any(|s| !s.is_ok()),
+        recorder_bytes: memory0,
+        heap_bytes,
+    })
 }
 
 /// Runs `config.sets` sets over every lab in `labs` in turn; `progress` is told each set.
@@ -246,7 +293,7 @@ pub fn run(
 
 /// What one set runs: [`fuzz_one`]'s signature.
 type OneSet =
-    fn(&'static dyn Lab, ParamValues, u64, usize, &mut ChaCha8Rng) -> Result<(bool, usize), String>;
+    fn(&'static dyn Lab, ParamValues, u64, usize, &mut ChaCha8Rng) -> Result<SetOutcome, String>;
 
 /// [`run`] with `one` running each set.
 fn run_with(
@@ -273,9 +320,10 @@ fn run_with(
         }));
         report.sets_per_lab[which].1 += 1;
         let what = match outcome {
-            Ok(Ok((flagged, memory))) => {
-                report.flagged += usize::from(flagged);
-                report.max_memory_bytes = report.max_memory_bytes.max(memory);
+            Ok(Ok(outcome)) => {
+                report.flagged += usize::from(outcome.flagged);
+                report.max_memory_bytes = report.max_memory_bytes.max(outcome.recorder_bytes);
+                report.max_heap_bytes = report.max_heap_bytes.max(outcome.heap_bytes);
                 None
             }
             Ok(Err(rule)) => Some(rule),
@@ -311,7 +359,7 @@ mod tests {
         seed: u64,
         steps: usize,
         rng: &mut ChaCha8Rng,
-    ) -> Result<(bool, usize), String> {
+    ) -> Result<SetOutcome, String> {
         thread_local!(static CALLS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) });
         let n = CALLS.with(|c| {
             c.set(c.get() + 1);

@@ -38,6 +38,21 @@ pub fn lab_series_words(lab: &'static dyn Lab) -> Vec<(String, &'static str)> {
         settings.push(p);
     }
     let mut out = Vec::new();
+    // A replay's own series (what was logged), where the lab reads logs: a two-line log of
+    // its format.
+    if let Some(format) = lab.page().log_format {
+        let zeros = vec!["0"; format.columns.saturating_sub(1)].join(",");
+        let text = format!("0,{zeros}\n1,{zeros}\n");
+        let log = (format.parse)(text.as_bytes(), &format.default_units());
+        let options = crate::sim::SimOptions::default();
+        if let Ok(sim) = Simulation::replay(lab, settings[0].clone(), log, options) {
+            for spec in sim.available_specs() {
+                if let Some(Measure::Quantity(q)) = spec.key.map(|k| k.measure) {
+                    out.push((quantity_id(q.key), q.label));
+                }
+            }
+        }
+    }
     for params in settings {
         let mut sim = Simulation::new(lab, params, 1);
         // The scene's directions exist from the first step on.

@@ -2,8 +2,21 @@
 //! samples with the lines that could not be used, and the formats a lab reads (each with
 //! the unit choices a user makes, as parameter specs, and its parser).
 
+use super::page::Outage;
 use super::params::{ParamSpec, ParamValues};
+use super::{Quantity, SeriesKey};
 use thiserror::Error;
+
+/// 1 at a replay's step that delivered a logged sample, 0 at one that did not (a dropped
+/// sample, or the join of a gap or a restart).
+pub const LOGGED_SAMPLE: Quantity = Quantity::new("log_sample", "logged sample at this step", "");
+
+/// What a replay's plots shade: the steps without a logged sample.
+pub const REPLAY_GAPS: Outage = Outage {
+    series: SeriesKey::sensors(&LOGGED_SAMPLE),
+    out_when: 0.0,
+    label: "no logged sample (a gap or a restart of the log's clock)",
+};
 
 /// One line that could not be used.
 #[derive(Clone, Debug, Error, PartialEq)]

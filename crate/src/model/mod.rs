@@ -31,7 +31,7 @@ pub use lab::{
     AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
 };
 pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
-pub use log::{LogCounts, LogFormat, LogGap, LogLineError, RateLog};
+pub use log::{LOGGED_SAMPLE, LogCounts, LogFormat, LogGap, LogLineError, REPLAY_GAPS, RateLog};
 pub use page::{
     BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,
     SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,

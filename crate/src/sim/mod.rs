@@ -92,11 +92,19 @@ pub fn default_tab(lab: &dyn Lab) -> PlotTab {
 /// The column layout of `run` for `options.selection` (with the series `lab`'s figures
 /// draw, and the sphere's where the lab has one).
 fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout, UnknownSeries> {
+    // The standard selection keeps what the figures draw and what the plots shade (the
+    // lab's outages, a replay's gaps).
+    let shaded = lab
+        .page()
+        .outages
+        .iter()
+        .chain([&crate::model::REPLAY_GAPS]);
     let figure_series: Vec<SeriesKey> = lab
         .page()
         .figures
         .iter()
         .flat_map(|f| f.series.iter().copied())
+        .chain(shaded.map(|o| o.series))
         .collect();
     Layout::new(
         lab.id(),

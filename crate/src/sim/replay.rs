@@ -2,19 +2,23 @@
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
 use crate::model::{
-    Extras, LabData, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey,
-    SeriesSpec, TruthModel, TruthState,
+    Extras, LOGGED_SAMPLE, LabData, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup,
+    SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
 use std::sync::Arc;
 
-/// The logged gyro reading (deg/s), a series of the replayed sensors.
-const LOGGED_GYRO_DEG_S: Quantity = Quantity::new("gyro_deg_s", "logged gyro reading ω", "deg/s");
+/// The logged gyro reading (deg/s), a series of the replayed sensors (labelled as paper
+/// 4's simulated MPU-6050 labels its own: one key, one label, one translation).
+const LOGGED_GYRO_DEG_S: Quantity = Quantity::new("gyro_deg_s", "gyro reading ω", "deg/s");
 /// The logged accelerometer's angle (deg), where the log has an accelerometer.
-const LOGGED_ACCEL_ANGLE_DEG: Quantity =
-    Quantity::new("accel_angle_deg", "logged accelerometer angle θ_acc", "deg");
+const LOGGED_ACCEL_ANGLE_DEG: Quantity = Quantity::new(
+    "accel_angle_deg",
+    "accelerometer angle θ_acc = atan2(a_y, a_z)",
+    "deg",
+);
 
 /// "Truth" of a replay: time runs on the log's clock (from one period before its first
 /// sample), the logged rate stands in for the true rate, the angle is unknown (so every
@@ -118,10 +122,10 @@ impl SensorModel for LogSensor {
     }
 
     fn extra_series(&self) -> Vec<SeriesSpec> {
-        let mut s = vec![SeriesSpec::of(
-            SeriesKey::sensors(&LOGGED_GYRO_DEG_S),
-            SeriesGroup::Rate,
-        )];
+        let mut s = vec![
+            SeriesSpec::of(SeriesKey::sensors(&LOGGED_GYRO_DEG_S), SeriesGroup::Rate),
+            SeriesSpec::of(SeriesKey::sensors(&LOGGED_SAMPLE), SeriesGroup::Lab),
+        ];
         if !self.log.accel_g.is_empty() {
             s.push(SeriesSpec::of(
                 SeriesKey::sensors(&LOGGED_ACCEL_ANGLE_DEG),
@@ -138,6 +142,7 @@ impl SensorModel for LogSensor {
             &LOGGED_GYRO_DEG_S,
             rate.map_or(f64::NAN, |w| w.to_degrees()),
         );
+        out.put(&LOGGED_SAMPLE, if k.is_some() { 1.0 } else { 0.0 });
         if !self.log.accel_g.is_empty() {
             let angle = k
                 .and_then(|k| self.log.accel_g.get(k))

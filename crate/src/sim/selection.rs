@@ -48,11 +48,12 @@ impl Selection {
                 .filter(|s| s.group == SeriesGroup::Sphere && !s.name.ends_with(".z_deg"))
                 .map(|s| s.name.clone()),
         );
-        // Outages are shaded on every tab.
+        // Outages are shaded on every tab (a replay's gaps too).
         names.extend(
             lab.page()
                 .outages
                 .iter()
+                .chain([&crate::model::REPLAY_GAPS])
                 .filter(|o| available.iter().any(|s| o.series.is(&s.name)))
                 .map(|o| o.series.name()),
         );

@@ -149,7 +149,7 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
         ui,
         app.sim().recorder(),
         app.sim().lab().page().figures,
-        app.sim().lab().page().outages,
+        &super::outages(app),
         &app.view().plots,
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,

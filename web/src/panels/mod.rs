@@ -94,17 +94,33 @@ pub(crate) fn series_legend(app: &AppState, spec: &attlab::model::SeriesSpec) ->
 /// The words the plot draws, in the reader's language.
 pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
     let lab = app.sim().lab();
-    let outages = lab.page().outages.iter().enumerate();
+    let mut outage_words: Vec<String> = lab
+        .page()
+        .outages
+        .iter()
+        .enumerate()
+        .map(|(k, o)| lab_word(app, &i18n::outage_id(lab.id(), k), o.label))
+        .collect();
+    if app.sim().replay_log().is_some() {
+        outage_words.push(tr(app, "replay-gaps"));
+    }
     crate::render::plots::PlotWords {
         legend: Box::new(move |spec| series_legend(app, spec)),
         time_axis: tr(app, "axis-time"),
         mixed_units: tr(app, "axis-mixed-units"),
         bands: tr(app, "bands-legend"),
         reset: tr(app, "plot-reset-hint"),
-        outages: outages
-            .map(|(k, o)| lab_word(app, &i18n::outage_id(lab.id(), k), o.label))
-            .collect(),
+        outages: outage_words,
     }
+}
+
+/// The outages the plots shade: the lab's, and a replay's steps without a logged sample.
+pub(crate) fn outages(app: &AppState) -> Vec<attlab::model::Outage> {
+    let mut all = app.sim().lab().page().outages.to_vec();
+    if app.sim().replay_log().is_some() {
+        all.push(attlab::model::REPLAY_GAPS);
+    }
+    all
 }
 
 /// The bad items of the link the page opened with, at the top of the page in the warning

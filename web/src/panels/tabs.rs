@@ -177,7 +177,7 @@ fn tab_options(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             }
         }
     }
-    if !app.sim().lab().page().outages.is_empty() {
+    if !super::outages(app).is_empty() {
         let mut on = app.view().plots.show_outages;
         if ui
             .checkbox(&mut on, tr(app, "outages"))

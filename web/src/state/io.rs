@@ -55,6 +55,9 @@ pub enum IoCommand {
     SetLogUnit(&'static str, f64),
     /// Replay the log the lab ships.
     LoadExampleLog,
+    /// Replay these bytes as the lab's kind of log, under this name (what the file picker
+    /// delivers; tests and scripts give a log directly).
+    ReplayLog(String, Vec<u8>),
     /// Copy a pandas snippet that loads the exported CSV and draws the current plot tab.
     CopyPython,
     /// Save a PNG of a view or of every plot tab (taken by the app over the next frames).
@@ -75,6 +78,7 @@ impl AppState {
                 self.restart(lab, params);
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
+            IoCommand::ReplayLog(name, bytes) => self.start_replay(name, &bytes),
             IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {
                 Some(log) => self.start_replay(log.name.into(), log.text.as_bytes()),
                 None => self.warn("msg-no-example-log", &[]),

@@ -16,6 +16,7 @@ mod keyboard;
 mod lessons;
 mod narrow;
 mod png;
+mod replay;
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
@@ -458,39 +459,4 @@ fn a_tab_that_needs_a_rerun_is_a_job_with_its_progress() {
         .expect("the rates are recorded now");
     let first = sim.recorder().plot_points(i, 10);
     assert_eq!(first.first().map(|p| p[0]), Some(0.0), "from t = 0");
-}
-
-/// Paper 4's example log from its button: every line accounted for in the message, and the
-/// replay's first step delivers the first sample.
-#[test]
-fn the_example_log_replays_and_says_what_became_of_every_line() {
-    let mut h = harness("p4");
-    h.get_by_label("Real data: an Arduino MPU-6050 log")
-        .scroll_to_me();
-    h.run();
-    h.get_by_label("Real data: an Arduino MPU-6050 log").click();
-    h.run_steps(3);
-    h.get_by_label("Replay the example log").scroll_to_me();
-    h.run();
-    h.get_by_label("Replay the example log").click();
-    h.run();
-    let said = h.state().state.messages().iter().any(|m| {
-        !m.is_error
-            && m.text.contains("replaying 1000 samples of 1003 lines")
-            && m.text.contains("3 rejected")
-    });
-    assert!(said, "{:?}", h.state().state.messages());
-    let sim = h.state().state.sim();
-    assert!(
-        sim.replay_log().is_some() && sim.t_s() < 0.0,
-        "starts before sample 0"
-    );
-    h.state_mut().apply(RunCommand::StepOnce.into());
-    let sim = h.state().state.sim();
-    let gyro = sim.value("sensors.gyro_deg_s").expect("the logged gyro");
-    let first = sim.replay_log().expect("a replay").rate_rad_s[0].to_degrees();
-    assert!(
-        sim.t_s().abs() < 1e-12 && (gyro - first).abs() < 1e-9,
-        "{gyro} vs {first}"
-    );
 }

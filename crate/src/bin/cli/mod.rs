@@ -310,7 +310,15 @@ fn reproduce(
     Ok(failures.is_empty())
 }
 
+/// The heap's live bytes, from the binary's counting allocator.
+fn live_heap() -> usize {
+    let s = stats_alloc::INSTRUMENTED_SYSTEM.stats();
+    (s.bytes_allocated as isize - s.bytes_deallocated as isize + s.bytes_reallocated).max(0)
+        as usize
+}
+
 fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
+    fuzz::count_heap_with(live_heap);
     let config = FuzzConfig { sets, steps, seed };
     let report = fuzz::run(labs::all(), config, |i, lab| {
         if i % 100 == 0 {
@@ -321,10 +329,11 @@ fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
         println!("{lab:<16} {n} sets");
     }
     println!(
-        "{} sets, {} with an estimator flagging itself (diverged/unobservable), largest recorder {:.1} MiB, {} failures",
+        "{} sets, {} with an estimator flagging itself (diverged/unobservable), largest recorder {:.1} MiB, largest heap growth of a set {:.1} MiB, {} failures",
         sets,
         report.flagged,
         report.max_memory_bytes as f64 / (1 << 20) as f64,
+        report.max_heap_bytes.unwrap_or(0) as f64 / (1 << 20) as f64,
         report.failures.len()
     );
     for f in &report.failures {
