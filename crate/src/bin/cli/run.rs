@@ -20,8 +20,8 @@ impl<'a> Output<'a> {
         }
     }
 
-    /// Refuses `what` if `rows` rows of `cells` cells (at the mean cell size of a probe
-    /// run, `probe`) would exceed the limit; the message gives the estimate.
+    /// Refuses `what` if `rows` rows of `cells` cells (at the mean cell size of steps
+    /// 300–400 of a probe run, `probe`) would exceed the limit; the message gives the estimate.
     fn check(
         &self,
         what: &str,
@@ -29,21 +29,28 @@ impl<'a> Output<'a> {
         rows: f64,
         cells: usize,
     ) -> Result<(), String> {
+        // The first steps write short cells (zeros, round numbers): measure the later ones.
         let (mut bytes, mut n) = (0usize, 0usize);
-        for _ in 0..200 {
+        for k in 0..400 {
             probe.step();
-            let row = probe.last_row();
-            bytes += row.iter().map(|v| csv_cell(*v).len() + 1).sum::<usize>();
-            n += row.len();
+            if k >= 300 {
+                let row = probe.last_row();
+                bytes += row.iter().map(|v| csv_cell(*v).len() + 1).sum::<usize>();
+                n += row.len();
+            }
         }
         let estimate = rows * cells as f64 * bytes as f64 / n.max(1) as f64;
         if estimate <= self.max_bytes {
             return Ok(());
         }
+        let size = if estimate >= 1e9 {
+            format!("{:.1} GB", estimate / 1e9)
+        } else {
+            format!("{:.1} MB", estimate / 1e6)
+        };
         Err(format!(
-            "{what} would write about {:.1} GB of CSV ({rows:.3e} rows × {cells} columns) to {}; \
-             the limit is {:.0} MB: shorten it, or raise the limit with --max-csv-mb",
-            estimate / 1e9,
+            "{what} would write about {size} of CSV ({rows:.3e} rows × {cells} columns) to {}; \
+             the limit is {} MB: shorten it, or raise the limit with --max-csv-mb",
             self.csv.display(),
             self.max_bytes / 1e6
         ))
@@ -344,5 +351,51 @@ mod tests {
             1,
             "an IMU log's time is in ms by default"
         );
+    }
+
+    #[test]
+    fn a_run_or_replay_that_would_write_too_much_is_refused_before_writing() {
+        let dir = std::env::temp_dir().join(format!("attlab-bounds-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let csv = dir.join("out.csv");
+        let err = run(
+            "p1",
+            1,
+            Some(1e6),
+            Output::new(&csv, 2000.0),
+            None,
+            &[],
+            true,
+        )
+        .unwrap_err();
+        assert!(
+            err.contains("--duration 1000000 s would write about")
+                && err.contains("GB of CSV (1.000e8 rows")
+                && err.contains("--max-csv-mb"),
+            "{err}"
+        );
+        assert!(!csv.exists(), "nothing written");
+        // A log whose clock jumps by 4.29e9 ms half-way: a gap joined after 1 s, not a
+        // 49-day replay.
+        let log = dir.join("jump.csv");
+        let lines: Vec<String> = (0..1000u64)
+            .map(|k| {
+                let t = 10 * k + if k >= 500 { 4_294_967_295 } else { 0 };
+                format!("{t},0,0,16384,131,0,0")
+            })
+            .collect();
+        std::fs::write(&log, lines.join("\n")).unwrap();
+        replay(
+            "p4",
+            &log,
+            units(None, None),
+            Output::new(&csv, 2000.0),
+            &[],
+        )
+        .unwrap();
+        let rows = std::fs::read_to_string(&csv).unwrap().lines().count();
+        // 1 000 samples, 99 steps of the join, the row before sample 0 and the header.
+        assert_eq!(rows, 1000 + 99 + 1 + 1);
+        std::fs::remove_dir_all(&dir).ok();
     }
 }
