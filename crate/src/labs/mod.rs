@@ -62,9 +62,15 @@ pub fn read_log(
         )
     })?;
     let log = (format.parse)(bytes, units);
-    let own = log.widths.get(&format.columns).copied().unwrap_or(0);
-    let widest = log.widths.iter().max_by_key(|(_, n)| **n);
-    if let Some((&width, &n)) = widest.filter(|(w, n)| **w != format.columns && **n > own) {
+    let count = |width: usize| {
+        log.widths
+            .iter()
+            .find(|(w, _)| *w == width)
+            .map_or(0, |(_, n)| *n)
+    };
+    let own = count(format.columns);
+    let widest = log.widths.iter().max_by_key(|(_, n)| *n);
+    if let Some(&(width, n)) = widest.filter(|(w, n)| *w != format.columns && *n > own) {
         let readers: Vec<String> = all()
             .iter()
             .filter_map(|l| l.page().log_format.map(|f| (l.id(), f)))

@@ -92,8 +92,9 @@ pub struct RateLog {
     pub period_s: f64,
     /// What became of every line.
     pub counts: LogCounts,
-    /// How many lines of numbers had each column count (the format's own included).
-    pub widths: std::collections::BTreeMap<usize, usize>,
+    /// How many lines of numbers had each column count (the format's own included), as
+    /// `(columns, lines)`.
+    pub widths: Vec<(usize, usize)>,
 }
 
 impl RateLog {

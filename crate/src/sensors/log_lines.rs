@@ -16,7 +16,6 @@
 use super::timeline;
 use crate::model::{LogCounts, LogLineError, RateLog};
 use nalgebra::Vector3;
-use std::collections::BTreeMap;
 
 /// Delimiters a log may use, in order of preference when several fit equally well.
 const DELIMITERS: [u8; 4] = [b',', b';', b'\t', b' '];
@@ -41,8 +40,9 @@ pub(crate) struct Rows {
     pub errors: Vec<LogLineError>,
     /// Lines that count: every line but blank ones, comments and the header.
     pub data_lines: usize,
-    /// How many lines of numbers had each width (the expected one included).
-    pub widths: BTreeMap<usize, usize>,
+    /// How many lines of numbers had each width (the expected one included), as
+    /// `(width, lines)` in the order first seen.
+    pub widths: Vec<(usize, usize)>,
 }
 
 /// A finite number, or `None`.
@@ -137,7 +137,10 @@ pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &str) -> Rows {
             reason,
         };
         if all_numbers(&f) {
-            *out.widths.entry(f.len()).or_default() += 1;
+            match out.widths.iter_mut().find(|(w, _)| *w == f.len()) {
+                Some((_, n)) => *n += 1,
+                None => out.widths.push((f.len(), 1)),
+            }
             if f.len() == columns {
                 let values = f.iter().filter_map(|c| number(c)).collect();
                 let text = text.chars().take(80).collect();
@@ -179,12 +182,13 @@ pub(crate) fn read_log(
 ) -> RateLog {
     let Rows {
         rows,
-        mut errors,
+        errors,
         data_lines,
         widths,
     } = read_rows(bytes, columns, names);
-    let timeline = timeline::order(rows, time_scale, &mut errors);
-    errors.sort_by_key(|e| e.line);
+    let mut glitches = Vec::new();
+    let timeline = timeline::order(rows, time_scale, &mut glitches);
+    let errors = merge_by_line(errors, glitches);
     let mut log = RateLog {
         period_s: timeline.period_s.unwrap_or(0.0),
         gaps: timeline.gaps,
@@ -207,6 +211,21 @@ pub(crate) fn read_log(
     };
     log.errors = errors;
     log
+}
+
+/// Two lists of line errors, each in line order, as one in line order.
+fn merge_by_line(a: Vec<LogLineError>, b: Vec<LogLineError>) -> Vec<LogLineError> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut a, mut b) = (a.into_iter().peekable(), b.into_iter().peekable());
+    loop {
+        let take_a = match (a.peek(), b.peek()) {
+            (Some(x), Some(y)) => x.line <= y.line,
+            (Some(_), None) => true,
+            (None, Some(_)) => false,
+            (None, None) => return out,
+        };
+        out.extend(if take_a { a.next() } else { b.next() });
+    }
 }
 
 /// The error for line `line` whose bytes `raw` are valid UTF-8 up to `valid`.
@@ -255,6 +274,6 @@ mod tests {
             ]
         );
         assert_eq!(r.data_lines, 6);
-        assert_eq!(r.widths.get(&4), Some(&1));
+        assert_eq!(r.widths, vec![(2, 3), (4, 1)]);
     }
 }
