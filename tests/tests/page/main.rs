@@ -22,6 +22,7 @@ mod checks;
 mod driver;
 mod fuzz;
 mod lessons;
+mod replay;
 mod screens;
 mod server;
 mod soak;
