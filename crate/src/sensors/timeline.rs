@@ -82,18 +82,9 @@ pub(crate) fn order(rows: Vec<Row>, time_scale: f64, errors: &mut Vec<LogLineErr
         period_s: nominal_period(&times),
         ..Timeline::default()
     };
-    let Some(p) = out.period_s else {
-        out.samples = rows
-            .into_iter()
-            .zip(&times)
-            .map(|(row, t)| Timed {
-                t_s: *t,
-                row,
-                weight: 1.0,
-            })
-            .collect();
-        return out;
-    };
+    // Without a step forward there is no period: equal times still merge, and every step
+    // back is a reset, so the kept times still increase.
+    let p = out.period_s.unwrap_or(f64::MIN_POSITIVE);
     let mut segment: Vec<Timed> = Vec::new();
     // Offset from the logged clock to the joined one, for the current segment.
     let mut shift = 0.0;
@@ -233,6 +224,15 @@ mod tests {
         assert_eq!((t.reordered, t.merged), (1, 1));
         // Line 7 (value 6) averaged into line 6 (value 5).
         assert_eq!(t.samples[5].row.values[1], 5.5);
+    }
+
+    #[test]
+    fn without_a_step_forward_equal_times_merge_and_a_step_back_is_a_reset() {
+        let mut errors = Vec::new();
+        let t = order(rows(&[5.0, 5.0, 3.0, 3.0]), 1.0, &mut errors);
+        assert_eq!(t.period_s, None);
+        assert_eq!((kept_lines(&t), t.merged, t.gaps.len()), (vec![1, 3], 2, 1));
+        assert!(t.samples[0].t_s < t.samples[1].t_s);
     }
 
     #[test]
