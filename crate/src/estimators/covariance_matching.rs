@@ -31,7 +31,7 @@
 //! listening to the gyro (Figs. 5.3–5.4).
 
 use super::kf::{KalmanState, KfError};
-use nalgebra::{Matrix1x2, Matrix2, Vector2};
+use nalgebra::{Matrix2, Vector2};
 
 /// What the window's sum is built from and how it enters the filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,11 +133,8 @@ impl AdaptiveKf {
         self.innovation = z - self.kf.x[1];
         let prior = self.kf;
         let before = self.kf.x;
-        self.kf.update_scalar(
-            self.innovation,
-            &Matrix1x2::new(0.0, 1.0),
-            self.r.max(1e-16),
-        )?;
+        self.kf
+            .update_scalar(self.innovation, &Vector2::new(0.0, 1.0), self.r.max(1e-16))?;
         self.last_update = Some((prior, self.kf));
         let q = match self.adaptation.mode {
             AdaptMode::SawTooth | AdaptMode::SawToothDiagonal => {

@@ -23,7 +23,7 @@
 //! scalar row at a time with [`KalmanState::update_scalar`] (no matrix inverse, any number
 //! of rows, no heap).
 
-use crate::math::symmetrize;
+use crate::math::{all_finite, joseph_update_scalar, symmetrize};
 use nalgebra::{SMatrix, SVector};
 use thiserror::Error;
 
@@ -147,7 +147,7 @@ impl<const N: usize> KalmanState<N> {
         let x = self.x + k * residual;
         let i_kh = SMatrix::<f64, N, N>::identity() - k * h;
         let p = symmetrize(&(i_kh * self.p * i_kh.transpose() + k * r * k.transpose()));
-        if !(x.iter().all(|v| v.is_finite()) && p.iter().all(|v| v.is_finite())) {
+        if !(all_finite(x.as_slice()) && all_finite(p.as_slice())) {
             return Err(KfError::NotFinite);
         }
         self.x = x;
@@ -155,21 +155,59 @@ impl<const N: usize> KalmanState<N> {
         Ok(Innovation { residual, s, nis })
     }
 
-    /// One scalar measurement row (independent noise of variance `r`): the same update with
-    /// no matrix inverse. Returns the normalised innovation squared.
+    /// One scalar measurement row (independent noise of variance `r`), in O(n²): v = P⁻h
+    /// from h's non-zero entries, s = hᵀv + r, k = v/s, x⁺ = x⁻ + k·residual and the
+    /// expanded scalar Joseph form of [`joseph_update_scalar`] (no matrix inverse, no heap).
+    /// On error nothing changes.
     pub fn update_scalar(
         &mut self,
         residual: f64,
-        h: &SMatrix<f64, 1, N>,
+        h: &SVector<f64, N>,
         r: f64,
-    ) -> Result<f64, KfError> {
-        let inn = self.update_with(
-            SVector::<f64, 1>::new(residual),
-            h,
-            &SMatrix::<f64, 1, 1>::new(r),
-        )?;
-        Ok(inn.nis)
+    ) -> Result<ScalarInnovation<N>, KfError> {
+        if !residual.is_finite() {
+            return Err(KfError::NotFinite);
+        }
+        let mut v = SVector::<f64, N>::zeros();
+        let mut s = r;
+        for (k, hk) in h.iter().enumerate() {
+            if *hk != 0.0 {
+                v.axpy(*hk, &self.p.column(k), 1.0);
+            }
+        }
+        for (k, hk) in h.iter().enumerate() {
+            if *hk != 0.0 {
+                s += hk * v[k];
+            }
+        }
+        if !(s > 0.0 && s.is_finite()) {
+            return Err(KfError::SingularInnovation);
+        }
+        let gain = v / s;
+        let x = self.x + gain * residual;
+        let p = joseph_update_scalar(&self.p, &gain, &v, s);
+        if !(all_finite(x.as_slice()) && all_finite(p.as_slice())) {
+            return Err(KfError::NotFinite);
+        }
+        self.x = x;
+        self.p = p;
+        Ok(ScalarInnovation {
+            s,
+            gain,
+            nis: residual * residual / s,
+        })
     }
+}
+
+/// What one scalar row did: its innovation variance, the gain it applied and the NIS.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScalarInnovation<const N: usize> {
+    /// s = hᵀ P⁻ h + r.
+    pub s: f64,
+    /// k = P⁻ h / s.
+    pub gain: SVector<f64, N>,
+    /// residual² / s.
+    pub nis: f64,
 }
 
 #[cfg(test)]
@@ -189,6 +227,48 @@ mod tests {
         let expected = p0 - k * p0.row(1);
         assert!((kf.p - expected).amax() < 1e-12, "{} vs {expected}", kf.p);
         assert!((inn.nis - 0.25 / s).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_scalar_update_equals_the_dense_joseph_update() {
+        use nalgebra::{Matrix4, RowVector4, Vector4};
+        let a = Matrix4::new(
+            2.0, 0.3, -0.1, 0.0, 0.1, 1.5, 0.2, -0.4, 0.0, 0.7, 1.1, 0.3, -0.2, 0.0, 0.5, 0.9,
+        );
+        let p0 = a * a.transpose();
+        let h = Vector4::new(0.0, 2.0, -1.0, 0.0);
+        let (mut scalar, mut dense) = (
+            KalmanState::new(Vector4::new(1.0, -1.0, 0.5, 2.0), p0),
+            KalmanState::new(Vector4::new(1.0, -1.0, 0.5, 2.0), p0),
+        );
+        let inn = scalar.update_scalar(0.8, &h, 0.3).unwrap();
+        let full = dense
+            .update_with(
+                Vector1::new(0.8),
+                &RowVector4::from(h.transpose()),
+                &Matrix1::new(0.3),
+            )
+            .unwrap();
+        assert!(
+            (scalar.p - dense.p).amax() < 1e-13 * p0.amax(),
+            "{} vs {}",
+            scalar.p,
+            dense.p
+        );
+        assert!((scalar.x - dense.x).amax() < 1e-13);
+        assert!((inn.nis - full.nis).abs() < 1e-13 && (inn.s - full.s[(0, 0)]).abs() < 1e-13);
+        assert_eq!(scalar.p, scalar.p.transpose(), "exactly symmetric");
+        let mut degenerate = KalmanState::new(Vector4::zeros(), Matrix4::zeros());
+        let before = degenerate;
+        assert_eq!(
+            degenerate.update_scalar(1.0, &h, 0.0),
+            Err(KfError::SingularInnovation)
+        );
+        assert_eq!(
+            degenerate.update_scalar(f64::NAN, &h, 1.0),
+            Err(KfError::NotFinite)
+        );
+        assert_eq!(degenerate, before);
     }
 
     #[test]

@@ -22,7 +22,10 @@ mod krylov;
 mod rotation;
 mod wz;
 
-pub use covariance::{is_symmetric_positive_definite, joseph_update, nees, symmetrize};
+pub use covariance::{
+    all_finite, is_symmetric_positive_definite, joseph_update, joseph_update_scalar, nees,
+    propagate_first_order, sparse_mul, symmetrize,
+};
 pub use euler::EulerYpr;
 pub use integrate::{
     RateSegment, quaternion_derivative, rk4_step, step_quaternion_rk4, step_uvz_rk4, uv_derivative,

@@ -35,9 +35,9 @@ pub struct LogLineError {
 pub struct LogGap {
     /// The line that starts the new segment.
     pub line: usize,
-    /// The replay's time (s, the log's clock less its first time) of the last sample before.
+    /// The joined clock's time (s, as in `RateLog::t_s`) of the last sample before.
     pub from_s: f64,
-    /// The replay's time (s) of the first sample after: the join is shown, at most
+    /// The joined clock's time (s) of the first sample after: the join is shown, at most
     /// max(10 periods, 1 s) long.
     pub to_s: f64,
     /// The logged time (s) of the last sample before.

@@ -2,6 +2,7 @@
 //! into "diverged" when its state or covariance is no longer finite, and a numeric code per
 //! estimator for the recorded `status` series.
 
+use crate::math::all_finite;
 use crate::model::{Estimate, Estimator, EstimatorStatus};
 
 /// The health of every estimator of a run, by position.
@@ -50,7 +51,5 @@ impl Health {
 
 /// State, rate and covariance are all finite.
 fn finite(est: &Estimate, e: &dyn Estimator) -> bool {
-    est.is_finite()
-        && e.covariance()
-            .is_none_or(|c| c.matrix.iter().all(|v| v.is_finite()))
+    est.is_finite() && e.covariance().is_none_or(|c| all_finite(c.matrix))
 }

@@ -22,7 +22,7 @@
 //! * Q = diag(q_Λ²·E, q_ω²·E, q_bias²·E) per prediction step, the paper's tuning knobs.
 
 use super::kf::KalmanState;
-use crate::math::symmetrize;
+use crate::math::{all_finite, propagate_first_order, sparse_mul, symmetrize};
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues,
     Quantity, StateInfo,
@@ -77,6 +77,16 @@ pub struct SensorSet {
     pub mag: bool,
     /// Sun sensors.
     pub sun: bool,
+}
+
+impl SensorSet {
+    /// All four: star tracker, gyro, magnetometer and sun sensors.
+    pub const ALL: Self = Self {
+        star: true,
+        gyro: true,
+        mag: true,
+        sun: true,
+    };
 }
 
 /// What the state holds (Table 2's x).
@@ -167,22 +177,32 @@ type Rows<const N: usize> = [(f64, SVector<f64, N>, f64); MAX_ROWS];
 pub type Retune = fn(&ParamValues, [f64; 3]) -> MekfTuning;
 
 /// Floating-point operations of one [`Mekf`] step with `n` states that processes `rows`
-/// scalar measurement rows, counted from the code (a multiply-add is two; a square root or
-/// division one):
-/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 367, Φ = E + F·dt 2n², ΦPΦᵀ
-///   2(2n³ − n²), + Q and symmetrise 3n²: 1207 + 4n³ + 3n²;
-/// * each scalar row — the gain and innovation variance in the filter (4n² + 3n) and the
-///   Joseph update of [`KalmanState::update_scalar`] (PHᵀ 2n² − n, S and K 4n, x 2n,
-///   E − KH 2n², (E − KH)P(E − KH)ᵀ 2(2n³ − n²), KRKᵀ + add 2n² + n, symmetrise 2n²):
-///   4n³ + 10n² + 9n + 2;
+/// scalar measurement rows whose H rows hold `h_nonzeros` non-zero entries in all, with a
+/// Jacobian F of `f_nonzeros` non-zero entries; counted from the code (a multiply-add is
+/// two; a square root or division one):
+/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 367, Φ P Φᵀ by
+///   [`propagate_first_order`] (F P and F (F P)ᵀ 2n per non-zero of F each, the upper
+///   triangle 5n(n + 1)/2), the diagonal Q n: 1207 + 4n·f + 5n(n + 1)/2 + n;
+/// * each scalar row — the residual at the corrected prior 2n, v = P h 2n per non-zero of
+///   h, s 2 per non-zero, k n, x 2n, the expanded Joseph form of [`crate::math::joseph_update_scalar`]
+///   3n(n + 1) + n, the NIS 2: 3n² + 9n + 2 + (2n + 2) per non-zero of h;
 /// * assembling the rows ≈ 200, folding the correction ≈ 55, publishing P 2n², the
 ///   positive-definiteness check (scaling 3n² + 2n, Cholesky ≈ n³/3).
-pub const fn full_step_flops(n: u64, rows: u64) -> u64 {
-    let predict = 1207 + 4 * n * n * n + 3 * n * n;
-    let row = 4 * n * n * n + 10 * n * n + 9 * n + 2;
+pub const fn full_step_flops(n: u64, rows: u64, h_nonzeros: u64, f_nonzeros: u64) -> u64 {
+    let predict = 1207 + 4 * n * f_nonzeros + 5 * n * (n + 1) / 2 + n;
+    let updates = rows * (3 * n * n + 9 * n + 2) + (2 * n + 2) * h_nonzeros;
     let tail = 200 + 55 + 2 * n * n + 3 * n * n + 2 * n + n * n * n / 3;
-    predict + rows * row + tail
+    predict + updates + tail
 }
+
+/// Non-zero entries of F for [λ, ω, Δω] (the bias columns are zero when ω is a state):
+/// −[ω×] 6, ½E 3, the gravity-gradient block 9 and the gyroscopic block 9.
+pub const FULL_F_NONZEROS: u64 = 27;
+
+/// Non-zero entries of the twelve H rows of a filter with all four sensors and a gyro bias:
+/// star 1 a row, gyro 2 (ω and its bias), magnetometer and sun 2 (a row of [m×] is zero on
+/// the diagonal).
+pub const FULL_H_NONZEROS: u64 = 21;
 
 /// `[v×]`.
 fn skew(v: &Vector3<f64>) -> Matrix3<f64> {
@@ -358,13 +378,9 @@ impl<const N: usize> Estimator for Mekf<N> {
         }
         self.update(m, &ob);
         self.publish();
-        let finite = self
-            .q
-            .coords
-            .iter()
-            .chain(self.omega.iter())
-            .chain(self.p.iter())
-            .all(|v| v.is_finite());
+        let finite = all_finite(self.q.coords.as_slice())
+            && all_finite(self.omega.as_slice())
+            && all_finite(self.p.as_slice());
         let att_sigma = 2.0
             * (0..3)
                 .map(|i| self.p[(i, i)])

@@ -53,20 +53,19 @@ impl<const N: usize> Mekf<N> {
             return; // constant gain: no covariance propagation (§3.3)
         }
         let f = self.jacobian(&w0, ob);
-        let phi = SMatrix::<f64, N, N>::identity() + f * dt;
         let t = self.tuning;
-        let mut q = SMatrix::<f64, N, N>::zeros();
+        let mut q = SVector::<f64, N>::zeros();
         let gyro_att = if has_omega {
             0.0
         } else {
             (t.gyro_sigma_rad_s * dt / 2.0).powi(2)
         };
         for i in 0..3 {
-            q[(i, i)] = t.q_att * t.q_att + gyro_att;
+            q[i] = t.q_att * t.q_att + gyro_att;
         }
         if let Some(o) = self.cfg.states.omega() {
             for i in 0..3 {
-                q[(o + i, o + i)] = t.q_rate * t.q_rate;
+                q[o + i] = t.q_rate * t.q_rate;
             }
         }
         for b in [self.cfg.states.gyro_bias(), self.cfg.states.mag_bias()]
@@ -74,10 +73,14 @@ impl<const N: usize> Mekf<N> {
             .flatten()
         {
             for i in 0..3 {
-                q[(b + i, b + i)] = t.q_bias * t.q_bias;
+                q[b + i] = t.q_bias * t.q_bias;
             }
         }
-        self.p = symmetrize(&(phi * self.p * phi.transpose() + q));
+        // Φ P Φᵀ for Φ = E + F·dt from F's block structure, then the diagonal Q.
+        self.p = propagate_first_order(&self.p, &f, dt);
+        for i in 0..N {
+            self.p[(i, i)] += q[i];
+        }
         if self.dist.is_some() {
             // A constant d moves δω by d·dt and δλ (half angle) by d·dt²/4 per step.
             let mut gamma = SMatrix::<f64, N, 3>::zeros();
@@ -87,7 +90,7 @@ impl<const N: usize> Mekf<N> {
                     gamma[(o + i, i)] = dt;
                 }
             }
-            self.dist_sens = phi * self.dist_sens + gamma;
+            self.dist_sens += sparse_mul(&f, &self.dist_sens) * dt + gamma;
         }
     }
 

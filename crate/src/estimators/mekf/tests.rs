@@ -117,3 +117,36 @@ fn a_degenerate_geometry_is_said_not_hidden() {
     );
     assert!(f.estimate().is_finite());
 }
+
+#[test]
+fn the_flop_count_uses_the_full_filters_real_structure() {
+    let cfg = MekfConfig {
+        id: "full",
+        label: "full",
+        sensors: SensorSet::ALL,
+        states: StateSet::AttRateGyroBias,
+        ..filter().cfg
+    };
+    let f = Mekf::<9>::new(
+        cfg,
+        filter().tuning,
+        UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5),
+        Vector3::new(0.01, -0.02, 0.015),
+        SMatrix::identity() * 1e-6,
+    );
+    let ob = onboard();
+    let nonzero = |v: &mut dyn Iterator<Item = &f64>| v.filter(|x| **x != 0.0).count() as u64;
+    let jac = f.jacobian(&f.rate(), &ob);
+    assert_eq!(nonzero(&mut jac.iter()), FULL_F_NONZEROS);
+    let m = Measurements {
+        star_q_ref_from_body: Some(f.q),
+        gyro_body_rad_s: Some(Vector3::new(0.01, -0.02, 0.015)),
+        mag_body_nt: Some(f.q.inverse_transform_vector(&ob.mag_ref_orbit_nt)),
+        sun_body: Some(f.q.inverse_transform_vector(&ob.sun_ref_orbit)),
+        ..Measurements::default()
+    };
+    let (rows, present) = f.rows(&m, &ob);
+    assert!(present.iter().all(|p| *p), "all twelve rows");
+    let h: u64 = rows.iter().map(|(_, h, _)| nonzero(&mut h.iter())).sum();
+    assert_eq!(h, FULL_H_NONZEROS);
+}

@@ -127,18 +127,16 @@ impl<const N: usize> Mekf<N> {
                 }
                 continue;
             }
-            let s = (h.transpose() * err.p * h)[(0, 0)] + var;
-            let gain = err.p * h / s;
-            if let Some(d) = &mut self.dist {
-                let hd = self.dist_sens.transpose() * h;
-                disturbance_update(d, residual, &hd, s * self.tuning.rd_scale);
-                self.dist_sens -= gain * hd.transpose();
-            }
-            match err.update_scalar(residual, &h.transpose(), *var) {
-                Ok(n) => {
-                    nis += n;
+            match err.update_scalar(residual, h, *var) {
+                Ok(inn) => {
+                    if let Some(d) = &mut self.dist {
+                        let hd = self.dist_sens.transpose() * h;
+                        disturbance_update(d, residual, &hd, inn.s * self.tuning.rd_scale);
+                        self.dist_sens -= inn.gain * hd.transpose();
+                    }
+                    nis += inn.nis;
                     dof += 1.0;
-                    new_gains[k] = Some(gain);
+                    new_gains[k] = Some(inn.gain);
                 }
                 Err(e) => {
                     self.status = EstimatorStatus::Diverged(format!(

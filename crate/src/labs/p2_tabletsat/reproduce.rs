@@ -17,7 +17,9 @@ use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::mekf;
-use crate::estimators::{Mekf, MekfConfig, SensorSet, StateSet, full_step_flops};
+use crate::estimators::{
+    FULL_F_NONZEROS, FULL_H_NONZEROS, Mekf, MekfConfig, SensorSet, StateSet, full_step_flops,
+};
 use crate::model::{
     Estimator, Expectation, Lab, ParamValues, Quantity, Reproduction, Row, SeriesKey, StateInfo,
     TimingItem, q,
@@ -443,12 +445,7 @@ pub(super) fn timing_items() -> Vec<TimingItem> {
     let cfg = MekfConfig {
         id: "bench",
         label: "ST+Gyro+Mag+Sun [λ,ω,Δω]",
-        sensors: SensorSet {
-            star: true,
-            gyro: true,
-            mag: true,
-            sun: true,
-        },
+        sensors: SensorSet::ALL,
         states: StateSet::AttRateGyroBias,
         disturbance: false,
         constant_gain_after_s: None,
@@ -465,7 +462,7 @@ pub(super) fn timing_items() -> Vec<TimingItem> {
     let mut i = 0;
     vec![TimingItem {
         name: "MEKF step: 9 states, 12 rows",
-        flops: Some(full_step_flops(9, 12)),
+        flops: Some(full_step_flops(9, 12, FULL_H_NONZEROS, FULL_F_NONZEROS)),
         run: Box::new(move || {
             // The trace repeats: start the filter afresh with it.
             if i % trace.len() == 0 {
