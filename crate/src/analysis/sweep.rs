@@ -9,6 +9,9 @@ use crate::model::{Lab, ParamValues, SeriesKey, SeriesSpec, SweepScoring, SweepS
 use crate::sensors::RateLog;
 use crate::sim::{SimOptions, Simulation};
 
+#[cfg(not(target_arch = "wasm32"))]
+mod parallel;
+
 /// Statistics of each series for one value (one cell of a grid).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepPoint {
@@ -64,6 +67,9 @@ pub struct Sweep {
     values: Vec<f64>,
     log: Option<RateLog>,
     next_run: usize,
+    /// The run after the last one this sweep makes (all of them unless it is one point of a
+    /// parallel sweep).
+    runs_end: Option<usize>,
     current: Option<Running>,
     gathered: Gathered,
     /// What a legend calls each of the spec's series (from the first run's catalogue).
@@ -85,6 +91,7 @@ impl Sweep {
             values: spec.values.to_vec(),
             log: None,
             next_run: 0,
+            runs_end: None,
             current: None,
             gathered: Gathered::default(),
             legends: Vec::new(),
@@ -155,6 +162,10 @@ impl Sweep {
 
     fn total_runs(&self) -> usize {
         self.values.len() * self.grid_len() * self.seeds()
+    }
+
+    fn runs_end(&self) -> usize {
+        self.runs_end.unwrap_or_else(|| self.total_runs())
     }
 
     fn duration_s(&self) -> f64 {
@@ -302,7 +313,7 @@ impl Sweep {
 
     fn start_next(&mut self) -> bool {
         let seeds = self.seeds();
-        while self.next_run < self.total_runs() {
+        while self.next_run < self.runs_end() {
             let point = self.next_run / seeds;
             let Some((value, grid_value)) = self.point_values(point) else {
                 return false;
@@ -396,7 +407,7 @@ impl Sweep {
 
     /// All values done.
     pub fn is_done(&self) -> bool {
-        self.current.is_none() && self.next_run >= self.total_runs()
+        self.current.is_none() && self.next_run >= self.runs_end()
     }
 
     /// Fraction done, 0…1.
@@ -427,8 +438,19 @@ impl Sweep {
             .min_by(|a, b| a.objectives[index].total_cmp(&b.objectives[index]))
     }
 
-    /// Runs the sweep to its end.
-    pub fn run_to_end(mut self) -> Self {
+    /// Runs the sweep to its end: natively its points on every core (rayon; each point runs
+    /// its seeds in order in a sweep of its own, so every number is the same in any number
+    /// of threads and in the page's slices), in the page in one go.
+    pub fn run_to_end(self) -> Self {
+        #[cfg(not(target_arch = "wasm32"))]
+        if self.next_run == 0 && self.current.is_none() {
+            return self.run_points_in_parallel();
+        }
+        self.run_in_order()
+    }
+
+    /// Runs the rest of the sweep on this thread, point after point.
+    pub fn run_in_order(mut self) -> Self {
         while !self.advance(100_000) {}
         self
     }

@@ -8,9 +8,6 @@ use super::AppState;
 use attlab::sim::{CsvSink, RerunJob, Selection};
 use web_time::{Duration, Instant};
 
-/// Steps a job takes between looks at the clock.
-const CHUNK_STEPS: u64 = 32;
-
 /// What a job is for.
 enum Purpose {
     /// Record what the plot tab on screen draws (the run's new selection).
@@ -128,19 +125,24 @@ impl AppState {
         }
     }
 
-    /// Moves the job on for at most `budget` of wall time, in chunks of [`CHUNK_STEPS`].
+    /// Moves the job on for at most `budget` of wall time, in chunks sized by the measured
+    /// cost of a step ([`super::slicer::Slicer`]).
     pub(super) fn advance_job(&mut self, budget: Duration) {
         let Some(job) = self.run.jobs.first_mut() else {
             return;
         };
+        let slicer = &mut self.run.job_slicer;
         let start = Instant::now();
         let outcome = loop {
+            let steps = slicer.chunk(budget.saturating_sub(start.elapsed()));
+            let t0 = Instant::now();
             let stepped = match &mut job.purpose {
-                Purpose::Reselect => job.rerun.advance(CHUNK_STEPS, |_| Ok::<(), String>(())),
-                Purpose::ExportCsv { sink, .. } => job.rerun.advance(CHUNK_STEPS, |s| {
+                Purpose::Reselect => job.rerun.advance(steps as u64, |_| Ok::<(), String>(())),
+                Purpose::ExportCsv { sink, .. } => job.rerun.advance(steps as u64, |s| {
                     sink.row(s.last_row()).map_err(|e| e.to_string())
                 }),
             };
+            slicer.measured(steps, t0.elapsed());
             match stepped {
                 Ok(false) if start.elapsed() < budget => continue,
                 Ok(false) => return,

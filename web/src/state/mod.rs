@@ -17,6 +17,7 @@ mod lesson;
 mod link_words;
 mod run;
 mod share;
+mod slicer;
 mod url;
 mod view;
 

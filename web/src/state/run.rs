@@ -2,6 +2,7 @@
 //! background. It owns the commands that choose the lab, set parameters, reset, step and
 //! sweep, and the frame loop's ticks.
 
+use super::slicer::Slicer;
 use super::{AppState, ViewState, jobs::Job};
 use attlab::analysis::sweep::Sweep;
 use attlab::model::{Lab, ParamValues, PlotTab, SeriesKey};
@@ -41,8 +42,12 @@ pub struct RunState {
     pub stats: Stats,
     /// A parameter sweep running in the background (index into the lab's sweeps, sweep).
     pub sweep: Option<(usize, Sweep)>,
+    /// How many sweep steps fit in a frame's budget, from their measured cost.
+    sweep_slicer: Slicer,
     /// Re-runs and exports under way, the first one advancing.
     pub(super) jobs: Vec<Job>,
+    /// How many job steps fit in a frame's budget.
+    pub(super) job_slicer: Slicer,
     /// The run pauses on reaching this time (s): a lesson step's picture.
     pub pause_at_s: Option<f64>,
     last_frame: Option<Instant>,
@@ -58,7 +63,9 @@ impl RunState {
             speed,
             stats: Stats::default(),
             sweep: None,
+            sweep_slicer: Slicer::default(),
             jobs: Vec::new(),
+            job_slicer: Slicer::default(),
             pause_at_s: None,
             last_frame: None,
             step_debt: 0.0,
@@ -236,9 +243,14 @@ impl AppState {
         let Some((_, sweep)) = self.run.sweep.as_mut() else {
             return;
         };
+        let slicer = &mut self.run.sweep_slicer;
         let start = Instant::now();
-        while start.elapsed() < budget {
-            if sweep.advance(1000) {
+        while let Some(left) = budget.checked_sub(start.elapsed()) {
+            let steps = slicer.chunk(left);
+            let t0 = Instant::now();
+            let done = sweep.advance(steps);
+            slicer.measured(steps, t0.elapsed());
+            if done {
                 break;
             }
         }

@@ -2,6 +2,7 @@
 //! loop against its estimators alone (measured here, never in tests).
 
 use super::run::all_series;
+use attlab::analysis::sweep::Sweep;
 use attlab::labs;
 use attlab::model::{Lab, ParamValues};
 use attlab::sim::{SimOptions, Simulation};
@@ -69,7 +70,37 @@ pub(super) fn bench(steps: usize, only: Option<&'static dyn Lab>) {
         bench_lab(*lab, steps);
         print_timings(*lab, steps * 10);
     }
+    bench_sweeps(&selected);
     let _ = std::io::stdout().flush();
+}
+
+/// Each lab's sweeps to their end in one thread and on every core (the same numbers: see
+/// `tests/tests/sweeps.rs`), and the speed-up.
+fn bench_sweeps(selected: &[&'static dyn Lab]) {
+    let cores = rayon::current_num_threads();
+    println!("sweeps (native, release build; wall time, measured, not a test):");
+    for lab in selected {
+        for spec in lab.sweeps() {
+            let run = |threads: usize| {
+                let sweep = Sweep::new(*lab, *spec, ParamValues::defaults(lab.params()), 1);
+                let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
+                let t0 = Instant::now();
+                let points = match pool {
+                    Ok(pool) => pool.install(|| sweep.run_to_end()).points.len(),
+                    Err(_) => sweep.run_in_order().points.len(),
+                };
+                (t0.elapsed().as_secs_f64(), points)
+            };
+            let (one, points) = run(1);
+            let (all, _) = run(cores);
+            println!(
+                "  {:<6} {:<66} {points:>4} points  1 thread {one:>6.2} s  {cores} threads {all:>6.2} s  ×{:.2}",
+                lab.id(),
+                spec.title,
+                one / all
+            );
+        }
+    }
 }
 
 /// Nanoseconds per step of `lab`'s simulation recording `options`, best of five chunks

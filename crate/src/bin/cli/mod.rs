@@ -6,6 +6,7 @@ use attlab::i18n::{self, Lang};
 use attlab::labs;
 use attlab::model::{Lab, ParamKind, Reproduction};
 use clap::{Parser, Subcommand};
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -276,11 +277,19 @@ fn reproduce(
     } else {
         vec![find_lab(which)?]
     };
+    // Every lab's reproduction on every core (each is deterministic, so the order of the
+    // threads changes nothing); printed in the registry's order, the timings afterwards one
+    // at a time so that they are not measured beside a busy core.
+    let computed: Vec<Result<Reproduction, String>> = selected
+        .par_iter()
+        .map(|lab| {
+            lab.reproduce()
+                .map_err(|e| format!("{}: the reproduction could not be computed: {e}", lab.id()))
+        })
+        .collect();
     let mut reports: Vec<Reproduction> = Vec::new();
-    for lab in selected {
-        let rep = lab
-            .reproduce()
-            .map_err(|e| format!("{}: the reproduction could not be computed: {e}", lab.id()))?;
+    for (lab, rep) in selected.into_iter().zip(computed) {
+        let rep = rep?;
         if markdown {
             println!("### {}\n\n{}", rep.lab, rep.to_markdown());
         } else {
