@@ -20,8 +20,7 @@ static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
 /// Bytes allocated and not freed since `region` began.
 fn grown(region: &Region<'_, System>) -> isize {
-    let c = region.change();
-    c.bytes_allocated as isize - c.bytes_deallocated as isize + c.bytes_reallocated
+    attlab::analysis::fuzz::live_bytes(&region.change())
 }
 
 /// Bytes a run may still allocate after warm-up (a message, a status text): far below what

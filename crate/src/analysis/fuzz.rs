@@ -27,6 +27,13 @@ pub fn count_heap_with(live_bytes: fn() -> usize) {
     let _ = LIVE_HEAP.set(live_bytes);
 }
 
+/// Live bytes from `stats_alloc`'s counts (of a process or of a region): allocated less
+/// freed, plus what reallocations added (its `bytes_reallocated` is already net, signed).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn live_bytes(s: &stats_alloc::Stats) -> isize {
+    s.bytes_allocated as isize - s.bytes_deallocated as isize + s.bytes_reallocated
+}
+
 /// How long and how many.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FuzzConfig {

@@ -90,12 +90,19 @@ mod tests {
     fn the_slicer_follows_a_step_that_grows_dearer_at_once() {
         let mut slicer = Slicer::default();
         slicer.measured(1000, Duration::from_millis(2));
-        assert_eq!(slicer.chunk(Duration::from_millis(10)), 384, "a cheaper step: halfway");
+        assert_eq!(
+            slicer.chunk(Duration::from_millis(10)),
+            384,
+            "a cheaper step: halfway"
+        );
         for _ in 0..30 {
             slicer.measured(1000, Duration::from_millis(2));
         }
         let settled = slicer.chunk(Duration::from_millis(10));
-        assert!((4999..=5000).contains(&settled), "{settled} steps of 2 µs in 10 ms");
+        assert!(
+            (4999..=5000).contains(&settled),
+            "{settled} steps of 2 µs in 10 ms"
+        );
         slicer.measured(10, Duration::from_millis(1));
         assert_eq!(slicer.chunk(Duration::from_millis(10)), 100);
     }

@@ -321,9 +321,7 @@ fn reproduce(
 
 /// The heap's live bytes, from the binary's counting allocator.
 fn live_heap() -> usize {
-    let s = stats_alloc::INSTRUMENTED_SYSTEM.stats();
-    (s.bytes_allocated as isize - s.bytes_deallocated as isize + s.bytes_reallocated).max(0)
-        as usize
+    fuzz::live_bytes(&stats_alloc::INSTRUMENTED_SYSTEM.stats()).max(0) as usize
 }
 
 fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
