@@ -6,7 +6,7 @@
 
 use attlab::analysis::readme;
 use attlab::labs;
-use attlab::model::Lab;
+use attlab::model::{Lab, Outcome, Row};
 
 const README: &str = include_str!("../../README.md");
 
@@ -27,6 +27,9 @@ fn reproduction_problem(lab: &dyn Lab) -> Option<String> {
             rep.failures().join("\n")
         ));
     }
+    if let Some(problem) = unpaired_calibration(&rep.rows) {
+        return Some(format!("{id}: {problem}"));
+    }
     let Some(shown) = readme::block(README, id) else {
         return Some(format!("README has no <!-- reproduce:{id} --> block"));
     };
@@ -36,6 +39,44 @@ fn reproduction_problem(lab: &dyn Lab) -> Option<String> {
              `cargo run -p attlab --release -- reproduce all --readme README.md`"
         )
     })
+}
+
+/// A match after calibration must be followed by the same quantity at the setting −50 % and
+/// +50 % (measurements): what is wrong, if anything.
+fn unpaired_calibration(rows: &[Row]) -> Option<String> {
+    for (k, row) in rows.iter().enumerate() {
+        if !matches!(row.outcome(), Outcome::MatchesAfterCalibration(_)) {
+            continue;
+        }
+        for (offset, tag) in [(1, "(−50 %)"), (2, "(+50 %)")] {
+            let beside = rows.get(k + offset);
+            let paired = beside.is_some_and(|b| {
+                b.outcome() == Outcome::Measurement
+                    && b.quantity.starts_with(&row.quantity)
+                    && b.quantity.ends_with(tag)
+                    && b.unit == row.unit
+            });
+            if !paired {
+                return Some(format!(
+                    "the calibrated row `{}` has no {tag} row beside it",
+                    row.quantity
+                ));
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn a_calibrated_row_without_its_sensitivity_rows_is_caught() {
+    use attlab::model::{Calibration, Expectation};
+    let check = Row::check("σ", "1", 1.0, "deg", Expectation::below(2.0));
+    let setting = Calibration::new("rate", 1.0, "Hz");
+    let rows = setting.rows(check.clone(), Ok::<_, ()>).unwrap();
+    assert_eq!(unpaired_calibration(&rows), None);
+    let alone = vec![check.calibrated_by("rate = 1 Hz")];
+    assert!(unpaired_calibration(&alone).is_some());
+    assert!(unpaired_calibration(&rows[..2]).is_some());
 }
 
 #[test]

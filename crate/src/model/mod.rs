@@ -37,7 +37,10 @@ pub use page::{
     SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
-pub use report::{Expectation, Outcome, ReproError, Reproduction, Row, RowKind, fmt_sig};
+pub use report::{
+    Calibration, Expectation, Outcome, ReproError, Reproduction, Row, RowKind, SENSITIVITY_FACTORS,
+    fmt_sig,
+};
 pub use series::{Extras, PlotTab, Quantity, SeriesGroup, SeriesSpec, display_unit};
 pub use study::{
     ExampleLog, OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem,

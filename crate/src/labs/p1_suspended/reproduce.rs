@@ -7,12 +7,12 @@
 // `reproduce` uses is left out (the page's wasm).
 #![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
-use super::{SuspendedMockup, rates};
+use super::{SuspendedMockup, rates, true_period_s};
 use crate::analysis::scenario::{params_with, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::one_axis_kf;
-use crate::model::{Expectation, Lab, Reproduction, Row, SeriesKey, q};
+use crate::model::{Calibration, Expectation, Lab, Reproduction, Row, SeriesKey, q};
 
 /// Seeds over which the window rows take their median.
 const SEEDS: [u64; 5] = [1, 2, 3, 4, 5];
@@ -196,7 +196,13 @@ fn panel_rows(r: &Windows) -> Result<Vec<Row>, AnalysisError> {
             factor: 2.0,
         },
     ));
-    rows.push(Row::check(
+    let defaults = params_with(&SuspendedMockup, &[])?;
+    let inertia = defaults.get("inertia_kg_m2");
+    let period = Calibration {
+        how: "through the body's inertia (T ∝ √I; string 1 m × 0.35 mm)",
+        ..Calibration::new("torsion period T", true_period_s(&defaults).round(), "s")
+    };
+    let n1000 = Row::check(
         "N = 1000: angle-error panel vs φ_int (larger KF max |φ̂ − φ_int|, 200 s)",
         "±0.3–0.4° (Fig. 5.5)",
         panel(&r.at(1000)),
@@ -206,7 +212,11 @@ fn panel_rows(r: &Windows) -> Result<Vec<Row>, AnalysisError> {
             hi: 0.4,
             factor: 2.0,
         },
-    ));
+    );
+    rows.extend(period.rows(n1000, |factor| {
+        let set = format!("inertia_kg_m2={}", inertia * factor * factor);
+        Ok::<_, AnalysisError>(panel(&median_stats(&["kf_window=1000", &set], 200.0)?))
+    })?);
     let long = median_stats(
         &["kf_window=1000", "string_length_m=2", "inertia_kg_m2=0.5"],
         200.0,
@@ -223,13 +233,19 @@ fn panel_rows(r: &Windows) -> Result<Vec<Row>, AnalysisError> {
             "the period the paper's rate axis suggests: the rotation model lags less behind the smaller accelerations (∝ 1/T²); the default T ≈ 400 s matches",
         ),
     );
-    rows.push(Row::check(
+    let zeta = defaults.get("damping_ratio");
+    let damping = Calibration::new("damping ratio ζ", zeta, "");
+    let q0 = Row::check(
         "Q = 0: torsional KF max |φ̂ − φ_int| (600 s)",
         "angle-error axis of the order of ±100° (Fig. 5.3)",
         r.q0[1].max_vs_int_deg,
         "deg",
         Expectation::within_factor_of(100.0, 2.0),
-    ));
+    );
+    rows.extend(damping.rows(q0, |factor| {
+        let set = format!("damping_ratio={}", zeta * factor);
+        Ok::<_, AnalysisError>(median_stats(&["kf_window=0", &set], 600.0)?[1].max_vs_int_deg)
+    })?);
     rows.push(Row::measurement(
         "Q = 0: rotation KF max |φ̂ − φ_int| (600 s)",
         "\"fairly good\" (Fig. 5.3)",

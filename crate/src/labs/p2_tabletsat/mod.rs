@@ -8,6 +8,7 @@ mod lesson;
 mod reproduce;
 pub mod sensors;
 pub mod sets;
+mod timing;
 pub mod truth;
 
 use crate::estimators::mekf;
@@ -440,6 +441,6 @@ impl Study for TabletSat {
 
     #[cfg(feature = "study")]
     fn timing_items(&self) -> Vec<crate::model::TimingItem> {
-        reproduce::timing_items()
+        timing::timing_items()
     }
 }

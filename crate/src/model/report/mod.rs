@@ -2,10 +2,15 @@
 //! expectation is an interval computed from the paper, a closed form or an independent
 //! computation — never a literal verdict. A check the paper's number does not meet is
 //! declared with its reason and prints as "differs"; if it starts to match, or an undeclared
-//! check stops matching, the row fails.
+//! check stops matching, the row fails. A check that holds only because this project chose a
+//! setting the paper does not give prints as "matches after calibration", naming the setting,
+//! with the same quantity at the setting ±50 % beside it ([`Calibration`]).
 
 use serde::Serialize;
 use thiserror::Error;
+
+mod calibration;
+pub use calibration::{Calibration, SENSITIVITY_FACTORS};
 
 /// What a check expects of its measured value.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,6 +116,8 @@ pub enum RowKind {
         expect: Expectation,
         /// Declared when the paper's number is known not to be met here: why (one line).
         differs_because: Option<String>,
+        /// The setting the paper does not give that was chosen here so that this check holds.
+        calibrated_by: Option<String>,
     },
 }
 
@@ -121,6 +128,8 @@ pub enum Outcome {
     Measurement,
     /// The check holds.
     Matches,
+    /// The check holds at a setting chosen here so that it would (the setting).
+    MatchesAfterCalibration(String),
     /// The check does not hold, as declared, for this reason.
     Differs(String),
     /// Something is wrong: an undeclared mismatch, a declared mismatch that now matches, or
@@ -134,20 +143,22 @@ impl Outcome {
         !matches!(self, Self::Fails(_))
     }
 
-    /// One word: `measurement`, `matches`, `differs`, `FAILS`.
+    /// The verdict in words: `measurement`, `matches`, `matches after calibration`,
+    /// `differs`, `FAILS`.
     pub fn word(&self) -> &'static str {
         match self {
             Self::Measurement => "measurement",
             Self::Matches => "matches",
+            Self::MatchesAfterCalibration(_) => "matches after calibration",
             Self::Differs(_) => "differs",
             Self::Fails(_) => "FAILS",
         }
     }
 
-    /// The reason, for `differs` and `FAILS`.
+    /// The reason, for `differs` and `FAILS`; the setting, for a calibrated match.
     pub fn reason(&self) -> Option<&str> {
         match self {
-            Self::Differs(r) | Self::Fails(r) => Some(r),
+            Self::Differs(r) | Self::Fails(r) | Self::MatchesAfterCalibration(r) => Some(r),
             _ => None,
         }
     }
@@ -197,6 +208,7 @@ impl Row {
             kind: RowKind::Check {
                 expect,
                 differs_because: None,
+                calibrated_by: None,
             },
             ..Self::measurement(quantity, paper, measured, unit)
         }
@@ -213,6 +225,16 @@ impl Row {
         self
     }
 
+    /// Declares that this check holds only at `setting`, which the paper does not give and
+    /// which was chosen here so that it would (e.g. "gyro rate = 10 Hz"). Use
+    /// [`Calibration::rows`] to put the same quantity at the setting ±50 % beside it.
+    pub fn calibrated_by(mut self, setting: impl Into<String>) -> Self {
+        if let RowKind::Check { calibrated_by, .. } = &mut self.kind {
+            *calibrated_by = Some(setting.into());
+        }
+        self
+    }
+
     /// The verdict.
     pub fn outcome(&self) -> Outcome {
         if self.measured.is_nan() {
@@ -223,8 +245,12 @@ impl Row {
             RowKind::Check {
                 expect,
                 differs_because,
+                calibrated_by,
             } => match (expect.holds(self.measured), differs_because) {
-                (true, None) => Outcome::Matches,
+                (true, None) => match calibrated_by {
+                    Some(setting) => Outcome::MatchesAfterCalibration(setting.clone()),
+                    None => Outcome::Matches,
+                },
                 (false, Some(reason)) => Outcome::Differs(reason.clone()),
                 (false, None) => Outcome::Fails(format!("expected {}", expect.describe())),
                 (true, Some(reason)) => Outcome::Fails(format!(
