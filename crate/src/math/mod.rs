@@ -20,6 +20,7 @@ mod euler;
 mod integrate;
 mod krylov;
 mod rotation;
+mod runge_kutta;
 mod wz;
 
 pub use covariance::{
@@ -38,6 +39,7 @@ pub use rotation::{
     dcm_from_quaternion, pitch_roll_of_vertical, quaternion_from_dcm, rot_x, rot_y, rot_z,
     rotation_angle_between, small_angle_error_body, vertical_in_body, wrap_pi,
 };
+pub use runge_kutta::{EULER, ExplicitRk, MIDPOINT, RK_METHOD_NAMES, RK_METHODS, RK4};
 pub use wz::{
     CHART_SWITCH_MODULUS, WzAttitude, WzChart, a_of_w, better_chart, chart_coords_of_vertical,
     other_chart,

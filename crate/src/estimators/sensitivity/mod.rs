@@ -21,7 +21,7 @@
 //! eigenvalues on the unit circle — it oscillates (period 6 intervals at ε = 0) and never
 //! settles. Re-integrating makes it eₖ₊₁ = (1 − k)(eₖ + qₖ): at ε = 0 a dead-beat update.
 
-use crate::math::{sequence_from_quaternion, symmetrize, wrap_pi};
+use crate::math::{ExplicitRk, RK4, sequence_from_quaternion, symmetrize, wrap_pi};
 use crate::model::{
     Attitude, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
     Tuner,
@@ -96,6 +96,8 @@ pub struct SensitivitySettings {
     pub axes: [usize; 3],
     /// Tolerance per angle (rad) of "within tolerance of the reference".
     pub tolerance_rad: f64,
+    /// How (Λ, U) are integrated between samples (the paper makes it a setting).
+    pub integrator: &'static ExplicitRk,
 }
 
 /// What the last update found.
@@ -109,33 +111,36 @@ pub struct UpdateInfo {
     pub step: f64,
 }
 
-/// Integrates (Λ, U) over `dt` with the rate `w` held constant (RK4).
+/// Integrates (Λ, U) over `dt` with the rate `w` held constant, by `method`. The pair is
+/// one 4×4 state: Λ in the first column, U in the other three.
 fn integrate(
+    method: &ExplicitRk,
     q: &Quaternion<f64>,
     u: &SMatrix<f64, 4, 3>,
     w: &Vector3<f64>,
     dt: f64,
 ) -> (Quaternion<f64>, SMatrix<f64, 4, 3>) {
     let wq = Quaternion::from_imag(*w);
-    let f = |q: &Quaternion<f64>, u: &SMatrix<f64, 4, 3>| {
-        let qd = q * wq * 0.5;
-        let mut ud = SMatrix::<f64, 4, 3>::zeros();
+    let mut x = Matrix4::zeros();
+    x.set_column(0, &as_vec(q));
+    x.fixed_view_mut::<4, 3>(0, 1).copy_from(u);
+    let f = |x: &Matrix4<f64>| {
+        let column = |j: usize| Quaternion::new(x[(0, j)], x[(1, j)], x[(2, j)], x[(3, j)]);
+        let q = column(0);
+        let mut d = Matrix4::zeros();
+        d.set_column(0, &as_vec(&(q * wq * 0.5)));
         for j in 0..3 {
-            let uj = Quaternion::new(u[(0, j)], u[(1, j)], u[(2, j)], u[(3, j)]);
             let mut e = Vector3::zeros();
             e[j] = 1.0;
-            let d = uj * wq * 0.5 + q * Quaternion::from_imag(e) * 0.5;
-            ud.set_column(j, &Vector4::new(d.w, d.i, d.j, d.k));
+            let dj = column(j + 1) * wq * 0.5 + q * Quaternion::from_imag(e) * 0.5;
+            d.set_column(j + 1, &as_vec(&dj));
         }
-        (qd, ud)
+        d
     };
-    let (k1q, k1u) = f(q, u);
-    let (k2q, k2u) = f(&(q + k1q * (dt / 2.0)), &(u + k1u * (dt / 2.0)));
-    let (k3q, k3u) = f(&(q + k2q * (dt / 2.0)), &(u + k2u * (dt / 2.0)));
-    let (k4q, k4u) = f(&(q + k3q * dt), &(u + k3u * dt));
+    let x = method.step(&x, dt, f);
     (
-        q + (k1q + k2q * 2.0 + k3q * 2.0 + k4q) * (dt / 6.0),
-        u + (k1u + k2u * 2.0 + k3u * 2.0 + k4u) * (dt / 6.0),
+        Quaternion::new(x[(0, 0)], x[(1, 0)], x[(2, 0)], x[(3, 0)]),
+        x.fixed_view::<4, 3>(0, 1).into_owned(),
     )
 }
 
@@ -230,7 +235,7 @@ impl SensitivityCorrection {
         let mut q = self.start;
         let u = SMatrix::<f64, 4, 3>::zeros();
         for (w, dt) in &self.history {
-            q = integrate(&q, &u, &(w + p), *dt).0;
+            q = integrate(self.settings.integrator, &q, &u, &(w + p), *dt).0;
             if self.settings.renormalise {
                 q = q.normalize();
             }
@@ -353,7 +358,13 @@ impl Estimator for SensitivityCorrection {
         if let Some(w) = m.gyro_body_rad_s {
             self.last_rate = w;
         }
-        let (q, u) = integrate(&self.q, &self.u, &(self.last_rate + self.p), dt_s);
+        let (q, u) = integrate(
+            self.settings.integrator,
+            &self.q,
+            &self.u,
+            &(self.last_rate + self.p),
+            dt_s,
+        );
         self.q = if self.settings.renormalise {
             q.normalize()
         } else {
@@ -446,7 +457,7 @@ pub fn sensitivity_finite_difference_check() -> f64 {
     let run = |p: &Vector3<f64>| {
         let (mut q, mut u) = (q0, SMatrix::<f64, 4, 3>::zeros());
         for k in 0..120 {
-            (q, u) = integrate(&q, &u, &(rate(k) + p), 0.01);
+            (q, u) = integrate(&RK4, &q, &u, &(rate(k) + p), 0.01);
         }
         (q, u)
     };

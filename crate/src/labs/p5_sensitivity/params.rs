@@ -2,7 +2,7 @@
 //! interval, each method's settings; the estimators the lab runs; its presets.
 
 use crate::estimators::{Method, SensitivitySettings};
-use crate::math::ANGLE_SEQUENCES;
+use crate::math::{ANGLE_SEQUENCES, RK_METHOD_NAMES, RK_METHODS, RK4};
 use crate::model::{ParamSpec, ParamValues, Preset};
 
 const PROFILES: &[&str] = &[
@@ -58,6 +58,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("ref_3_rad", "Reference angle 3", "rad", -3.0, 3.0, 0.01).on_reset(),
     ParamSpec::real("interval_s", "Reference interval Δt", "s", 0.05, 5.0, 1.0).log().help("Not given in the paper; method (9) first meets the tolerance just after 2Δt (2.36 near Δt = 1.17)."),
     ParamSpec::real("step_s", "Integration step", "s", 0.001, 0.1, 0.01).log().on_reset(),
+    ParamSpec::choice("integration", "Integration method", &RK_METHOD_NAMES, 0).help("How Λ and U are integrated between gyro samples (the paper makes it a setting and does not say which it used). Euler is a quarter of RK4's work and first order: at a coarse step its drift becomes the error the references must correct."),
     ParamSpec::real("eps", "Regularisation ε", "", 0.0, 10.0, 0.1).log().help("Methods (10) and (11): (UᵀQU + εI)⁻¹. Method (9) and the re-integrating variant use ε = 0."),
     ParamSpec::real("q_weight_0", "Weight Q₀₀ (λ₀)", "", 0.01, 100.0, 1.0).log(),
     ParamSpec::real("q_weight_1", "Weight Q₁₁ (λ₁)", "", 0.01, 100.0, 1.0).log(),
@@ -130,5 +131,9 @@ pub(super) fn settings_of(p: &ParamValues) -> SensitivitySettings {
         renormalise: p.flag("renormalise"),
         axes: axes_of(p),
         tolerance_rad: p.get("tolerance_rad"),
+        integrator: RK_METHODS
+            .get(p.index("integration"))
+            .copied()
+            .unwrap_or(&RK4),
     }
 }
