@@ -284,3 +284,7 @@ cycle-no-update = No measurement this step: x̂⁺ = x̂⁻, P⁺ = P⁻.
 cycle-note-window = The adaptation window ended: P was replaced by the window's estimate (§2.6, Table 2.3).
 tile-none = —
 lesson-bar = Lesson · step { $n } of { $count }
+note-string-holds = This string holds { $mass } kg with a safety factor of { $factor } (§3.1 asks for { $required }: d ≥ { $dmin } mm).
+note-string-too-thin = Too thin for { $mass } kg: a safety factor of { $factor }, below the { $required } §3.1 asks for (d ≥ { $dmin } mm).
+note-string-period = The string and the body give T = { $period } s.
+note-p0-limited = P₀ would not be positive semi-definite (b₀² > a₀c₀): the filters use b₀ = ±{ $limit } deg²/s.

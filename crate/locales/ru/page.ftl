@@ -286,3 +286,7 @@ cycle-no-update = На этом шаге измерения нет: x̂⁺ = x̂
 cycle-note-window = Окно адаптации закончилось: P заменена оценкой по окну (§2.6, табл. 2.3).
 tile-none = —
 lesson-bar = Урок · шаг { $n } из { $count }
+note-string-holds = Эта нить держит { $mass } кг с запасом прочности { $factor } (§3.1 требует { $required }: d ≥ { $dmin } мм).
+note-string-too-thin = Слишком тонкая для { $mass } кг: запас прочности { $factor }, меньше требуемого в §3.1 { $required } (d ≥ { $dmin } мм).
+note-string-period = Нить и тело дают T = { $period } с.
+note-p0-limited = P₀ не была бы неотрицательно определённой (b₀² > a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с.

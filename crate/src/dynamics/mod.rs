@@ -15,4 +15,7 @@ pub use orbit::{
 };
 pub use prescribed::{AngleProfile, EulerMotion};
 pub use rigid_body::{RigidBody, RigidBodyState};
-pub use torsion::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
+pub use torsion::{
+    STRING_MATERIALS, StringMaterial, TorsionPendulum, min_string_diameter_m, string_safety_factor,
+    string_stiffness_n_m_per_rad,
+};

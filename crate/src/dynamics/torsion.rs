@@ -5,13 +5,67 @@
 use crate::math::rk4_step;
 use nalgebra::Vector2;
 
-/// Shear moduli (Pa) of the string materials the lab offers.
-pub const STRING_MATERIALS: &[(&str, f64)] = &[
-    ("steel", 8.0e10),
-    ("titanium alloy", 4.1e10),
-    ("tungsten", 1.61e11),
-    ("nylon", 1.0e9),
+/// A string material: its shear modulus (the stiffness) and its tensile strength (whether
+/// it holds the body).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StringMaterial {
+    /// Name, e.g. "steel".
+    pub name: &'static str,
+    /// Shear modulus G (Pa).
+    pub shear_modulus_pa: f64,
+    /// Tensile strength σ_T (Pa): paper 1's §3.1 for steel (200 MPa) and the titanium alloy
+    /// (900 MPa); handbook values (ours) for tungsten and nylon.
+    pub tensile_strength_pa: f64,
+}
+
+/// The string materials the lab offers, in the order of its choice parameter.
+pub const STRING_MATERIALS: &[StringMaterial] = &[
+    StringMaterial {
+        name: "steel",
+        shear_modulus_pa: 8.0e10,
+        tensile_strength_pa: 2.0e8,
+    },
+    StringMaterial {
+        name: "titanium alloy",
+        shear_modulus_pa: 4.1e10,
+        tensile_strength_pa: 9.0e8,
+    },
+    StringMaterial {
+        name: "tungsten",
+        shear_modulus_pa: 1.61e11,
+        tensile_strength_pa: 1.5e9,
+    },
+    StringMaterial {
+        name: "nylon",
+        shear_modulus_pa: 1.0e9,
+        tensile_strength_pa: 7.5e7,
+    },
 ];
+
+/// g (m/s²) for the string's load.
+const G_M_S2: f64 = 9.81;
+
+/// The thinnest string (m) that holds `mass_kg` with safety factor `n` (§3.1):
+/// M g / (π d²/4) ≤ σ_T / n, so d ≥ 2√(n M g / (π σ_T)).
+///
+/// ```
+/// # use attlab::dynamics::{STRING_MATERIALS, min_string_diameter_m};
+/// // Paper 1 states d > 0.35 mm for steel and 0.17 mm for the titanium alloy under 1 kg;
+/// // both follow from n = 2 (its text says 1.5).
+/// let steel = min_string_diameter_m(1.0, STRING_MATERIALS[0].tensile_strength_pa, 2.0);
+/// let titanium = min_string_diameter_m(1.0, STRING_MATERIALS[1].tensile_strength_pa, 2.0);
+/// assert!((steel * 1e3 - 0.35).abs() < 0.005, "{steel}");
+/// assert!((titanium * 1e3 - 0.17).abs() < 0.005, "{titanium}");
+/// ```
+pub fn min_string_diameter_m(mass_kg: f64, tensile_strength_pa: f64, n: f64) -> f64 {
+    2.0 * (n * mass_kg * G_M_S2 / (std::f64::consts::PI * tensile_strength_pa)).sqrt()
+}
+
+/// The safety factor σ_T / (M g / (π d²/4)) of a string of diameter `diameter_m` holding
+/// `mass_kg`: the inverse of [`min_string_diameter_m`].
+pub fn string_safety_factor(mass_kg: f64, tensile_strength_pa: f64, diameter_m: f64) -> f64 {
+    tensile_strength_pa * std::f64::consts::PI * diameter_m.powi(2) / (4.0 * mass_kg * G_M_S2)
+}
 
 /// Torsion stiffness f = G·I_p/L (N·m/rad) of a round string.
 ///

@@ -72,6 +72,12 @@ fn every_message_formats_without_an_error_in_both() {
                 "merged",
                 "rejected",
                 "gaps",
+                "mass",
+                "factor",
+                "required",
+                "dmin",
+                "period",
+                "limit",
             ];
             for name in words.into_iter().chain(more) {
                 args.set(name, "x");

@@ -3,6 +3,7 @@
 use super::data::LabData;
 use super::estimate::{Estimator, Measurements};
 use super::lesson::Lesson;
+use super::note::ParamNote;
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
 #[cfg(feature = "study")]
@@ -184,6 +185,11 @@ pub trait Lab: Sync {
     /// The lab's guided lesson (its steps are data in the lab's folder, `lesson.rs`).
     fn lesson(&self) -> Option<&'static Lesson> {
         None
+    }
+    /// Lines computed from `params` that sit under a slider (none by default): what a
+    /// setting implies, or a warning that it is outside what the rig allows.
+    fn param_notes(&self, _params: &ParamValues) -> Vec<ParamNote> {
+        Vec::new()
     }
 }
 

@@ -13,6 +13,7 @@ mod key;
 mod lab;
 mod lesson;
 mod log;
+mod note;
 mod page;
 mod params;
 pub mod q;
@@ -32,6 +33,7 @@ pub use lab::{
 };
 pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
 pub use log::{LOGGED_SAMPLE, LogCounts, LogFormat, LogGap, LogLineError, REPLAY_GAPS, RateLog};
+pub use note::ParamNote;
 pub use page::{
     BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,
     SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,

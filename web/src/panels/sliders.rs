@@ -6,7 +6,8 @@ use super::controls::param_widget;
 use super::{arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n;
-use egui::Ui;
+use attlab::model::ParamNote;
+use egui::{RichText, Ui};
 
 /// The lab's sliders (only `only`'s when given) less those the link hides; those it locks
 /// are shown disabled, and those the lesson step points at are outlined.
@@ -17,6 +18,7 @@ pub(super) fn slider_rows(
     only: Option<&[&str]>,
 ) {
     let highlight = app.lesson_step().map_or(&[][..], |s| s.highlight);
+    let notes = app.sim().lab().param_notes(app.sim().params());
     for spec in app.sim().lab().params() {
         if app.view().hides(spec.key) || only.is_some_and(|keys| !keys.contains(&spec.key)) {
             continue;
@@ -44,7 +46,22 @@ pub(super) fn slider_rows(
         if let Some(v) = changed {
             commands.push(Command::from(RunCommand::SetParam(spec.key, v)));
         }
+        for note in notes.iter().filter(|n| n.key == spec.key) {
+            note_line(ui, app, note);
+        }
     }
+}
+
+/// A note under a slider: small, in the warning colour when it is one.
+fn note_line(ui: &mut Ui, app: &AppState, note: &ParamNote) {
+    let args: Vec<(&str, _)> = note.args.iter().map(|(k, v)| (*k, arg(v))).collect();
+    let text = RichText::new(tr_with(app, note.message, &args)).small();
+    let text = if note.warning {
+        text.color(ui.visuals().warn_fg_color)
+    } else {
+        text.weak()
+    };
+    ui.add(egui::Label::new(text).wrap());
 }
 
 /// A line naming the reset-only parameters that were moved and wait for Reset, with the

@@ -460,3 +460,21 @@ fn a_tab_that_needs_a_rerun_is_a_job_with_its_progress() {
     let first = sim.recorder().plot_points(i, 10);
     assert_eq!(first.first().map(|p| p[0]), Some(0.0), "from t = 0");
 }
+
+#[test]
+fn the_string_check_sits_under_the_diameter_slider_and_warns_when_too_thin() {
+    let mut h = harness("p1");
+    h.run();
+    assert!(
+        h.query_by_label_contains("with a safety factor of 1.96")
+            .is_some(),
+        "the paper's 0.35-mm steel string: no note under the diameter slider"
+    );
+    h.state_mut()
+        .apply(RunCommand::SetParam("string_diameter_mm", 0.2).into());
+    h.run();
+    assert!(
+        h.query_by_label_contains("Too thin for 1 kg").is_some(),
+        "a 0.2-mm steel string under 1 kg: no warning"
+    );
+}

@@ -2,6 +2,7 @@
 //! every series streamed to a CSV.
 
 use super::find_lab;
+use attlab::i18n::{self, FluentValue, Lang};
 use attlab::model::{Lab, ParamValues};
 use attlab::sim::{CsvSink, Selection, SimOptions, Simulation, csv_cell};
 use std::path::Path;
@@ -57,6 +58,23 @@ impl<'a> Output<'a> {
     }
 }
 
+/// The lab's notes on these settings (what the page shows under the sliders), warnings
+/// first, on standard error so the CSV on standard output stays clean.
+fn print_notes(lab: &dyn Lab, params: &ParamValues) {
+    let mut notes = lab.param_notes(params);
+    notes.sort_by_key(|n| !n.warning);
+    for note in notes {
+        let args: Vec<(&str, FluentValue<'_>)> = note
+            .args
+            .iter()
+            .map(|(k, v)| (*k, FluentValue::from(v.as_str())))
+            .collect();
+        let text = i18n::t_with(Lang::En, note.message, &args);
+        let kind = if note.warning { "warning" } else { "note" };
+        eprintln!("{kind} ({}): {text}", note.key);
+    }
+}
+
 pub(super) fn run(
     lab_id: &str,
     seed: u64,
@@ -68,6 +86,7 @@ pub(super) fn run(
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
     let params = params_from(lab, preset, set)?;
+    print_notes(lab, &params);
     let duration_s = duration.unwrap_or(lab.default_duration_s());
     if !(duration_s.is_finite() && duration_s > 0.0 && duration_s <= 1e6) {
         return Err(format!(

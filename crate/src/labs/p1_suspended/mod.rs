@@ -5,19 +5,20 @@
 //! torsional KF, each with covariance matching over a window of N measurements (or none).
 
 mod lesson;
+mod params;
 mod reproduce;
 
-use crate::dynamics::{STRING_MATERIALS, TorsionPendulum, string_stiffness_n_m_per_rad};
+use crate::dynamics::TorsionPendulum;
 use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamSpec,
-    ParamValues, Preset, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
-    SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
+    Estimator, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamNote,
+    ParamValues, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
+    Study, SweepSpec, TruthModel, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
-use nalgebra::{Matrix2, UnitQuaternion, Vector2, Vector3};
+use nalgebra::{UnitQuaternion, Vector2, Vector3};
 use rand_chacha::ChaCha8Rng;
 
 /// The torsion pendulum's period (s), a truth series.
@@ -25,90 +26,12 @@ const PERIOD_S: Quantity = Quantity::new("period_s", "torsion period T", "s");
 /// The string's swing (deg), a truth series.
 const SWING_DEG: Quantity = Quantity::new("swing_deg", "swing angle of the string", "deg");
 
+pub use params::true_period_s;
+use params::{PARAMS, PRESETS, pendulum};
 pub use reproduce::{FilterStats, p1_noise_floor_deg, run_stats};
 
 /// The paper-1 lab.
 pub struct SuspendedMockup;
-
-const MATERIALS: &[&str] = &[
-    "steel (G = 80 GPa)",
-    "titanium alloy (41 GPa)",
-    "tungsten (161 GPa)",
-    "nylon (1 GPa)",
-];
-
-const ADAPTATION_MODES: &[&str] = &[
-    "saw-tooth: P := mean q qᵀ, q = (φ_int − φ̂, z − φ̇̂) (this project's reading)",
-    "saw-tooth, diagonal of mean q qᵀ only (stable for small N)",
-    "literal: P := mean (K r)(K r)ᵀ (collapses)",
-    "rate process noise Q from the window",
-];
-
-const PRESETS: &[Preset] = &[
-    Preset {
-        name: "VG-910D",
-        help: "Fizoptika fibre-optic gyro: ±200 °/s, 24-bit output at 300 Hz, averaged ×3 to the 100-Hz filter (R = σ²/3)",
-        values: &[
-            ("gyro_range_deg_s", 200.0),
-            ("gyro_bits", 24.0),
-            ("input_rate_hz", 300.0),
-            ("filter_rate_hz", 100.0),
-        ],
-    },
-    Preset {
-        name: "ADIS16100",
-        help: "Analog Devices MEMS gyro: ±300 °/s, 12-bit output, 1000 Hz (rate uncertain in the OCR)",
-        values: &[
-            ("gyro_range_deg_s", 300.0),
-            ("gyro_bits", 12.0),
-            ("input_rate_hz", 1000.0),
-            ("filter_rate_hz", 100.0),
-        ],
-    },
-    Preset {
-        name: "T ≈ 578 s",
-        help: "String 2 m, body 0.5 kg·m²: the period the paper's rate axis (±3–4 °/s from 360°) suggests; the N = 1000 error shrinks to ~0.09°",
-        values: &[("string_length_m", 2.0), ("inertia_kg_m2", 0.5)],
-    },
-    Preset {
-        name: "earlier setting",
-        help: "This project's first reading: VG-910D at 300 Hz averaged ×3 (R = σ²/3), T ≈ 578 s, ζ = 0.01, Q_N's rate element as process noise",
-        values: &[
-            ("input_rate_hz", 300.0),
-            ("filter_rate_hz", 100.0),
-            ("string_length_m", 2.0),
-            ("inertia_kg_m2", 0.5),
-            ("damping_ratio", 0.01),
-            ("kf_adaptation", 3.0),
-        ],
-    },
-];
-
-const PARAMS: &[ParamSpec] = &[
-    ParamSpec::choice("string_material", "String material", MATERIALS, 0).help("Sets the shear modulus G in f = G·I_p/L."),
-    ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴ (paper: steel 0.35 mm, G·I_p = 1.18e-4 N·m²)."),
-    ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 1.0).log().help("Stiffness f = G·I_p/L; with I = 0.48 kg·m², L = 1 m gives T ≈ 400 s (not stated in the paper)."),
-    ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.48).log().help("Period T = 2π√(I/f): a shorter T means larger accelerations, which the rotation model φ̈ = 0 cannot follow between resets — watch the N = 1000 error grow."),
-    ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.05).log().help("Air and string losses (not given in the paper); ζ = 0.05 makes the undamped torsional model drift to the ±100° of Fig. 5.3 without adaptation."),
-    ParamSpec::real("initial_angle_deg", "Initial angle φ₀", "°", -720.0, 720.0, 360.0).on_reset().help("Paper: 360°."),
-    ParamSpec::real("initial_rate_deg_s", "Initial rate", "°/s", -20.0, 20.0, 0.0).on_reset(),
-    ParamSpec::real("init_error_deg", "Filters' initial angle error", "°", -180.0, 180.0, 0.0).on_reset().help("The paper tried ≈100°: the filters stay close to the integrated angle φ_int, which starts with the same offset."),
-    ParamSpec::real("p0_angle_deg", "Filters' initial angle σ", "°", 0.001, 360.0, 0.01).log().on_reset().help("√a₀ of the initial covariance (paper: a₀ = 1e-4 deg², i.e. 0.01°)."),
-    ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.04).log().help("White noise per gyro sample (paper: 0.04)."),
-    ParamSpec::real("gyro_range_deg_s", "Gyro range ±", "°/s", 1.0, 1000.0, 200.0).log().help("Readings clip here (VG-910D: 200, ADIS16100: 300)."),
-    ParamSpec::real("gyro_bits", "Gyro resolution", "bit", 4.0, 24.0, 24.0).integer().help("Quantisation step = 2·range/2^bits."),
-    ParamSpec::real("input_rate_hz", "Gyro output rate", "Hz", 10.0, 2000.0, 100.0).log().integer().on_reset().help("The gyro's own rate; the paper's simulation feeds the filter at 100 Hz (VG-910D: 300 Hz, see its preset)."),
-    ParamSpec::real("filter_rate_hz", "Filter rate", "Hz", 1.0, 300.0, 100.0).log().integer().on_reset().help("Averaging takes the input rate down to this (paper: 100 Hz); R = σ²/m for m averaged samples."),
-    ParamSpec::real("kf_window", "Adaptation window N", "", 0.0, 5000.0, 100.0).log().integer().help("Covariance matching every N measurements; 0 = off (Q = 0: P collapses). Paper: N ≈ 100 best, 1000 worse, > 2000 poor."),
-    ParamSpec::choice("kf_adaptation", "Adaptation", ADAPTATION_MODES, 0).help("What the window's sum is built from and how it enters the filter (the paper is ambiguous; see the lab's help)."),
-    ParamSpec::toggle("kf_adapt_r", "Adapt R as well", false),
-    ParamSpec::real("kf_period_error_pct", "Torsional KF period error", "%", -50.0, 100.0, 0.0).help("Model period T = true T·(1 + e): set it wrong on purpose."),
-    ParamSpec::real("impulse_time_s", "Torque impulse at", "s", 0.0, 600.0, 5.0).requires("impulse_deg_s"),
-    ParamSpec::real("impulse_deg_s", "Impulse size (rate jump)", "°/s", -10.0, 10.0, 0.0).help("A kick that changes φ̇ at once."),
-    ParamSpec::real("swing_amp_deg", "Pendulum swing", "°", 0.0, 20.0, 0.0).help("Swing about a horizontal axis; leaks into the gyro through its misalignment."),
-    ParamSpec::real("swing_misalign_deg", "Gyro misalignment", "°", 0.0, 10.0, 0.0).help("Tilt of the gyro axis towards the swing axis: the swing leaks in, and the twist rate reads cos(δ) too small."),
-    ParamSpec::real("shake_torque_n_m", "Suspension shaking (torque σ)", "N·m", 0.0, 1e-3, 0.0).log().help("Random torque from a shaking suspension point."),
-];
 
 const FIGURES: &[Figure] = &[
     Figure::new(
@@ -190,29 +113,6 @@ pub fn rates(p: &ParamValues) -> (f64, usize) {
     let input = p.get("input_rate_hz").max(1.0);
     let m = (input / p.get("filter_rate_hz").max(1.0)).round().max(1.0) as usize;
     (input, m)
-}
-
-/// True period T (s) from the string and the body.
-pub fn true_period_s(p: &ParamValues) -> f64 {
-    pendulum(p, Vector2::zeros()).period_s()
-}
-
-fn pendulum(p: &ParamValues, state: Vector2<f64>) -> TorsionPendulum {
-    let g = STRING_MATERIALS
-        .get(p.index("string_material"))
-        .map_or(8.0e10, |m| m.1);
-    let f = string_stiffness_n_m_per_rad(
-        g,
-        p.get("string_diameter_mm") * 1e-3,
-        p.get("string_length_m"),
-    );
-    TorsionPendulum {
-        inertia_kg_m2: p.get("inertia_kg_m2"),
-        stiffness_n_m_per_rad: f,
-        damping_ratio: p.get("damping_ratio"),
-        torque_n_m: 0.0,
-        state,
-    }
 }
 
 fn torsion_model(p: &ParamValues) -> OneAxisModel {
@@ -311,10 +211,7 @@ impl Lab for SuspendedMockup {
         };
         sensors.apply_params(p);
         let xe = Vector2::new(x0[0] + p.get("init_error_deg").to_radians(), x0[1]);
-        // The paper's GUI gives 1e-4 for a, b and c (deg², deg²/s, deg²/s²), which is singular
-        // (b² = ac); c₀ = 2e-4 keeps P₀ positive definite.
-        let a0 = p.get("p0_angle_deg").powi(2).max(1e-4);
-        let p0 = Matrix2::new(a0, 1e-4, 1e-4, 2e-4) * 1f64.to_radians().powi(2);
+        let p0 = params::p0(p);
         let mut estimators: Vec<Box<dyn Estimator>> = vec![
             Box::new(AngleIntegration::new(xe[0])),
             Box::new(
@@ -336,6 +233,10 @@ impl Lab for SuspendedMockup {
 
     fn page(&self) -> &'static Page {
         &PAGE
+    }
+
+    fn param_notes(&self, params: &ParamValues) -> Vec<ParamNote> {
+        params::notes(params)
     }
 
     fn study(&self) -> Option<&dyn Study> {
