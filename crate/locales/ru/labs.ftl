@@ -147,6 +147,7 @@ lab-p4-param-rig-option-0 = испытательный стенд: рычаг с
 lab-p4-param-rig-option-1 = крен квадрокоптера, симметричного (ур. 3)
 lab-p4-param-rig-option-2 = крен квадрокоптера с несимметричными плечами и двигателями (ур. 2)
 lab-p4-param-asymmetry_pct = Асимметрия a
+lab-p4-param-geometry_uncertainty_pct = Геометрия известна с точностью ±
 lab-p4-param-lever_torque_n_m = Момент веса рычага M_g
 lab-p4-param-motor_tau_s = Запаздывание двигателя T
 lab-p4-param-controller = Регулятор

@@ -290,3 +290,4 @@ note-string-holds = Эта нить держит { $mass } кг с запасо�
 note-string-too-thin = Слишком тонкая для { $mass } кг: запас прочности { $factor }, меньше требуемого в §3.1 { $required } (d ≥ { $dmin } мм).
 note-string-period = Нить и тело дают T = { $period } с.
 note-p0-limited = P₀ не была бы неотрицательно определённой (b₀² > a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с.
+note-u0-range = Ур. 4: u₀ лежит в [{ $lo }, { $hi }] рад/с²; этому стенду нужно { $needed } рад/с².

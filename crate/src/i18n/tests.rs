@@ -78,6 +78,7 @@ fn every_message_formats_without_an_error_in_both() {
                 "dmin",
                 "period",
                 "limit",
+                "needed",
             ];
             for name in words.into_iter().chain(more) {
                 args.set(name, "x");

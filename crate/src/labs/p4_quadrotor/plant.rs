@@ -69,6 +69,24 @@ const MAX_RATE_RAD_S: f64 = 2.0;
 /// Motor s_j of the roll row.
 const ROLL_SIGNS: [f64; 4] = [1.0, -1.0, -1.0, 1.0];
 
+/// Factors on the rig's nominal geometry: each arm, each motor's thrust (the lever's weight
+/// torque in the first), the inertia.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Scales {
+    pub arms: [f64; 4],
+    pub thrusts: [f64; 4],
+    pub inertia: f64,
+}
+
+impl Scales {
+    /// The geometry as modelled.
+    pub const NOMINAL: Self = Self {
+        arms: [1.0; 4],
+        thrusts: [1.0; 4],
+        inertia: 1.0,
+    };
+}
+
 /// The rig, its motors and its controller.
 #[derive(Clone, Debug)]
 pub struct Plant {
@@ -149,14 +167,33 @@ impl Plant {
 
     /// The constant angular acceleration that holds the rig at `theta` (rad/s²).
     fn needed_u0(&self, theta: f64) -> f64 {
+        self.u0_scaled(theta, &Scales::NOMINAL)
+    }
+
+    /// The u₀ that holds the rig level if its geometry were off by `scales` (eq. 4's
+    /// uncertain arms, thrusts and inertia).
+    pub(super) fn level_u0_scaled(&self, scales: &Scales) -> f64 {
+        self.u0_scaled(0.0, scales)
+    }
+
+    fn u0_scaled(&self, theta: f64, scales: &Scales) -> f64 {
         if self.rig == 0 {
-            return self.lever_torque_n_m * theta.cos() / LEVER_J;
+            let torque = self.lever_torque_n_m * scales.thrusts[0];
+            return torque * theta.cos() / (LEVER_J * scales.inertia);
         }
         let (arms, gains) = self.arms_and_gains();
         let torque: f64 = (0..4)
-            .map(|j| ROLL_SIGNS[j] * arms[j] * gains[j] * QUAD_HOVER_N)
+            .map(|j| {
+                let thrust = gains[j] * scales.thrusts[j] * QUAD_HOVER_N;
+                ROLL_SIGNS[j] * arms[j] * scales.arms[j] * thrust
+            })
             .sum();
-        -torque / QUAD_J
+        -torque / (QUAD_J * scales.inertia)
+    }
+
+    /// Whether the rig is the lever (one motor and its weight) rather than a quadrotor.
+    pub(super) fn is_lever(&self) -> bool {
+        self.rig == 0
     }
 
     fn f_max(&self) -> f64 {
