@@ -287,5 +287,5 @@ lesson-bar = Lesson · step { $n } of { $count }
 note-string-holds = This string holds { $mass } kg with a safety factor of { $factor } (§3.1 asks for { $required }: d ≥ { $dmin } mm).
 note-string-too-thin = Too thin for { $mass } kg: a safety factor of { $factor }, below the { $required } §3.1 asks for (d ≥ { $dmin } mm).
 note-string-period = The string and the body give T = { $period } s.
-note-p0-limited = P₀ would not be positive semi-definite (b₀² > a₀c₀): the filters use b₀ = ±{ $limit } deg²/s.
+note-p0-limited = P₀ would be singular or indefinite (b₀² ≥ a₀c₀): the filters use b₀ = ±{ $limit } deg²/s, a correlation of 0.99.
 note-u0-range = Eq. 4: u₀ lies in [{ $lo }, { $hi }] rad/s²; this rig needs { $needed } rad/s².

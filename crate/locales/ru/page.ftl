@@ -289,5 +289,5 @@ lesson-bar = Урок · шаг { $n } из { $count }
 note-string-holds = Эта нить держит { $mass } кг с запасом прочности { $factor } (§3.1 требует { $required }: d ≥ { $dmin } мм).
 note-string-too-thin = Слишком тонкая для { $mass } кг: запас прочности { $factor }, меньше требуемого в §3.1 { $required } (d ≥ { $dmin } мм).
 note-string-period = Нить и тело дают T = { $period } с.
-note-p0-limited = P₀ не была бы неотрицательно определённой (b₀² > a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с.
+note-p0-limited = P₀ была бы вырожденной или неопределённой (b₀² ≥ a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с, корреляцию 0,99.
 note-u0-range = Ур. 4: u₀ лежит в [{ $lo }, { $hi }] рад/с²; этому стенду нужно { $needed } рад/с².

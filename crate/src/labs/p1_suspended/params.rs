@@ -92,7 +92,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("initial_rate_deg_s", "Initial rate", "°/s", -20.0, 20.0, 0.0).on_reset(),
     ParamSpec::real("init_error_deg", "Filters' initial angle error", "°", -180.0, 180.0, 0.0).on_reset().help("The paper tried ≈100°: the filters stay close to the integrated angle φ_int, which starts with the same offset."),
     ParamSpec::real(P0_A, "P₀: angle variance a₀", "deg²", 1e-8, 1e5, 1e-4).log().on_reset().help("The paper's a₀ (1e-4 deg², i.e. σ = 0.01°)."),
-    ParamSpec::real(P0_B, "P₀: covariance b₀", "deg²/s", -1.0, 1.0, 1e-4).on_reset().help("The paper's b₀ (1e-4). P₀ must be positive semi-definite: |b₀| is limited to √(a₀c₀)."),
+    ParamSpec::real(P0_B, "P₀: covariance b₀", "deg²/s", -1.0, 1.0, 1e-4).on_reset().help("The paper's b₀ (1e-4). P₀ must be positive definite: |b₀| is limited to 0.99√(a₀c₀)."),
     ParamSpec::real(P0_C, "P₀: rate variance c₀", "deg²/s²", 1e-8, 1e3, 2e-4).log().on_reset().help("The paper's GUI reads 1e-4, which with a₀ = b₀ = 1e-4 makes P₀ singular (b₀² = a₀c₀); 2e-4 (ours) keeps it positive definite."),
     ParamSpec::real("gyro_noise_deg_s", "Gyro noise σ", "°/s", 0.0, 1.0, 0.04).log().help("White noise per gyro sample (paper: 0.04)."),
     ParamSpec::real("gyro_range_deg_s", "Gyro range ±", "°/s", 1.0, 1000.0, 200.0).log().help("Readings clip here (VG-910D: 200, ADIS16100: 300)."),
@@ -154,11 +154,20 @@ pub(super) fn pendulum(p: &ParamValues, state: Vector2<f64>) -> TorsionPendulum 
     }
 }
 
+/// The largest correlation b₀/√(a₀c₀) the filters take: at 1 P₀ is singular, and rounding
+/// in the first propagation can leave it indefinite (the fuzzer found it).
+const MAX_CORRELATION: f64 = 0.99;
+
+/// The largest |b₀| (deg²/s) the filters take with these a₀, c₀.
+fn b0_limit(p: &ParamValues) -> f64 {
+    MAX_CORRELATION * (p.get(P0_A) * p.get(P0_C)).sqrt()
+}
+
 /// P₀ of both filters (rad², rad²/s, rad²/s²) from a₀, b₀, c₀, with |b₀| limited to
-/// √(a₀c₀) so that it is positive semi-definite.
+/// 0.99√(a₀c₀) so that it is positive definite.
 pub(super) fn p0(p: &ParamValues) -> Matrix2<f64> {
     let (a, c) = (p.get(P0_A), p.get(P0_C));
-    let limit = (a * c).sqrt();
+    let limit = b0_limit(p);
     let b = p.get(P0_B).clamp(-limit, limit);
     Matrix2::new(a, b, b, c) * 1f64.to_radians().powi(2)
 }
@@ -189,9 +198,8 @@ pub(super) fn notes(p: &ParamValues) -> Vec<ParamNote> {
         "note-string-period",
         period_args,
     ));
-    let (a, b, c) = (p.get(P0_A), p.get(P0_B), p.get(P0_C));
-    if b * b > a * c {
-        let limit = vec![("limit", fmt_sig((a * c).sqrt()))];
+    if p.get(P0_B).abs() > b0_limit(p) {
+        let limit = vec![("limit", fmt_sig(b0_limit(p)))];
         notes.push(ParamNote::warning(P0_B, "note-p0-limited", limit));
     }
     notes
@@ -262,8 +270,12 @@ mod tests {
         assert!(notes(&with(&[])).iter().all(|n| n.key != P0_B));
         let limited = with(&["p0_b_deg2_s=-0.5"]);
         let b = p0(&limited)[(0, 1)] / deg2;
-        assert!((b + (1e-4f64 * 2e-4).sqrt()).abs() < 1e-15, "{b}");
-        assert!(p0(&limited).determinant() >= -1e-30);
+        assert!((b + 0.99 * (1e-4f64 * 2e-4).sqrt()).abs() < 1e-15, "{b}");
+        assert!(p0(&limited).determinant() > 0.0);
+        // The paper's literal GUI values (all 1e-4) are singular: b₀ is limited and said.
+        let literal = with(&["p0_c_deg2_s2=1e-4"]);
+        assert!(p0(&literal).determinant() > 0.0);
+        assert!(notes(&literal).iter().any(|n| n.key == P0_B && n.warning));
         assert!(notes_of(&["p0_b_deg2_s=-0.5"], P0_B).warning);
     }
 }
