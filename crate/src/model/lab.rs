@@ -65,6 +65,9 @@ pub trait TruthModel: Send {
     fn extra_values(&self, _out: &mut Extras<'_>) {}
     /// Draws the random inputs (e.g. a disturbance torque) for the next step.
     fn draw_noise(&mut self, _rng: &mut ChaCha8Rng) {}
+    /// The estimators after their step, for a truth whose controller closes its loop on an
+    /// estimate (paper 4's Fig. 1): what it reads acts from the next step on. None by default.
+    fn feedback(&mut self, _estimators: &[Box<dyn Estimator>]) {}
 }
 
 /// The lab's sensors.

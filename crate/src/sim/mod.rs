@@ -434,6 +434,7 @@ impl Simulation {
         for e in &mut self.run.estimators {
             e.step(&measurements, dt_s);
         }
+        self.run.truth.feedback(&self.run.estimators);
         self.t_s = truth.t_s;
         self.steps += 1;
         self.record(&truth);

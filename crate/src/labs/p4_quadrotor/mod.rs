@@ -33,6 +33,7 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real(u0_range::UNCERTAINTY_PCT, "Geometry known to ±", "%", 0.0, 30.0, 5.0).help("Eq. 4: the arms, the thrusts and the inertia are known only within an interval, so is the u₀ that holds the rig level (ours: ±5 %)."),
     ParamSpec::real("lever_torque_n_m", "Lever weight torque M_g", "N·m", 0.0, 0.2, 0.05).help("Test bench (ours): the lever's weight about the bearing; holding it needs a constant thrust (u₀ = M_g/J)."),
     ParamSpec::real("motor_tau_s", "Motor lag T", "s", 0.005, 0.2, 0.04).log().help("1/(1 + T s) on each thrust (Fig. 1)."),
+    ParamSpec::choice(plant::LOOP_KEY, "Controller acts on", plant::LOOP_NAMES, 0).help("Fig. 1 closes the loop on the KF's estimate, so a noisy or lagging θ̂ moves the rig itself; on the truth the rig's motion is the same whatever the filters do, and they are compared on one motion."),
     ParamSpec::choice("controller", "Controller", CONTROLLERS, 0).help("Fig. 1's nested P–PI, whose rate integral absorbs u₀ so the filter is fed the zero-mean u_v, or a plain PID."),
     ParamSpec::real("bandwidth_rad_s", "Controller bandwidth ω_c", "rad/s", 1.0, 20.0, 5.0).log().help("Poles at ω_c (ours): the transient time is a few 1/ω_c."),
     ParamSpec::real("setpoint_deg", "Set-point step", "°", 0.0, 60.0, 20.0).help("A square wave between 0 and this angle."),
@@ -197,8 +198,9 @@ const SPEC: LabSpec = LabSpec {
          numbers: the lever (J = 2·10⁻³ kg·m², arm 0.2 m), the quadrotor (J = 0.01 kg·m², arms \
          0.12 m, hover 2.45 N per motor), the 100-Hz loop, the controller gains, the γ → Q mapping \
          (Q = q·diag(dt³/3, dt), det Q = γ det R, R from the datasheet) and the 5 % band of the \
-         transient time are ours. The controller acts on the true angle, so every filter sees the \
-         same motion. The sweeps below run the paper's tuning experiment: J = α·MSE + β·t_tr against \
+         transient time are ours. As in Fig. 1 the controller acts on the γ-tuned KF's θ̂, so a \
+         noisy or lagging estimate moves the rig; switch it to the truth to compare every filter on \
+         one motion. The sweeps below run the paper's tuning experiment: J = α·MSE + β·t_tr against \
          γ for its three (α, β) pairs (5 seeds, medians, argmin ringed), the Q landscape over two \
          elements of Q with the γ lines on it, and, while a log is replayed, the γ sweep on the \
          log. `attlab reproduce p4` measures Table 1.",

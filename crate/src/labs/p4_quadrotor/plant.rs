@@ -10,8 +10,9 @@
 //! * Motors: first-order lag 1/(1 + T s) on each thrust, thrust between 0 and F_max (the
 //!   lever: six times its weight's; the quadrotor: twice hover); the integral holds while
 //!   they are at a limit (conditional integration, no wind-up).
-//! * Controllers act on the true angle and rate (so every filter is compared on one motion;
-//!   the paper closes the loop on θ̂) as an angular acceleration command u = u_v + u₀:
+//! * Controllers act on the γ-tuned KF's θ̂ and ω̂ as in Fig. 1 (read after each step, so
+//!   one step late, as on a real loop), or on the true angle and rate (every filter then
+//!   sees one motion), as an angular acceleration command u = u_v + u₀:
 //!   a plain PID (u₀ = its integral part) or the nested P–PI of Fig. 1 (an angle P loop
 //!   giving a rate set-point, a rate PI loop whose integral is u₀). Gains place the poles
 //!   at the bandwidth slider ω_c: PID K_p = 3ω_c², K_d = 3ω_c, K_i = ω_c³; P–PI K_θ = ω_c
@@ -21,8 +22,8 @@
 
 use crate::estimators::ControlInput;
 use crate::model::{
-    Extras, LabData, ParamValues, Quantity, SeriesGroup, SeriesKey, SeriesSpec, TruthModel,
-    TruthState,
+    Estimate, Estimator, Extras, LabData, ParamValues, Quantity, SeriesGroup, SeriesKey,
+    SeriesSpec, TruthModel, TruthState,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -49,6 +50,19 @@ pub const RIGS: &[&str] = &[
     "quadrotor roll, symmetric (eq. 3)",
     "quadrotor roll, asymmetric arms and motors (eq. 2)",
 ];
+
+/// The parameter choosing what the controller acts on.
+pub const LOOP_KEY: &str = "loop_on";
+
+/// What the controller can act on (parameter `loop_on`): the paper's Fig. 1 closes the loop
+/// on the γ-tuned KF's θ̂; on the truth every filter is compared on one motion.
+pub const LOOP_ON: &[(&str, Option<&str>)] = &[
+    ("the γ-tuned KF's θ̂, ω̂ (the paper's Fig. 1)", Some("kf")),
+    ("the true θ, ω (every filter on one motion)", None),
+];
+
+/// The names of [`LOOP_ON`], for the choice parameter.
+pub const LOOP_NAMES: &[&str] = &[LOOP_ON[0].0, LOOP_ON[1].0];
 
 /// The controllers (parameter `controller`).
 pub const CONTROLLERS: &[&str] = &["nested P–PI (Fig. 1)", "plain PID"];
@@ -107,6 +121,10 @@ pub struct Plant {
     integral: f64,
     t_s: f64,
     control: ControlInput,
+    /// The estimator whose (θ̂, ω̂) the controller acts on; None: the truth.
+    loop_on: Option<&'static str>,
+    /// That estimator's last (θ̂ rad, ω̂ rad/s), once it has one.
+    estimate: Option<(f64, f64)>,
 }
 
 impl Plant {
@@ -130,6 +148,8 @@ impl Plant {
             integral: 0.0,
             t_s: 0.0,
             control: ControlInput::default(),
+            loop_on: None,
+            estimate: None,
         };
         plant.apply_params(p);
         // Start in equilibrium: motors at the thrust that holds θ = 0, the integral at u₀.
@@ -271,21 +291,30 @@ impl Plant {
         c
     }
 
+    /// What the controller reads: the chosen estimate once there is one, else the truth.
+    fn measured(&self) -> (f64, f64) {
+        match (self.loop_on, self.estimate) {
+            (Some(_), Some(estimate)) => estimate,
+            _ => (self.theta_rad, self.omega_rad_s),
+        }
+    }
+
     fn control_law(&mut self, dt_s: f64) -> ControlInput {
         let w = self.bandwidth_rad_s;
-        let e = self.setpoint_rad() - self.theta_rad;
+        let (theta, omega) = self.measured();
+        let e = self.setpoint_rad() - theta;
         match self.controller {
             1 => {
                 self.integral += e * dt_s;
                 ControlInput {
-                    varying_rad_s2: 3.0 * w * w * e - 3.0 * w * self.omega_rad_s,
+                    varying_rad_s2: 3.0 * w * w * e - 3.0 * w * omega,
                     constant_rad_s2: w.powi(3) * self.integral,
                     needed_rad_s2: self.needed_u0(self.theta_rad),
                 }
             }
             _ => {
                 // The angle loop asks for at most 2 rad/s: the lever can only brake by gravity.
-                let rate_error = (w * e).clamp(-MAX_RATE_RAD_S, MAX_RATE_RAD_S) - self.omega_rad_s;
+                let rate_error = (w * e).clamp(-MAX_RATE_RAD_S, MAX_RATE_RAD_S) - omega;
                 self.integral += rate_error * dt_s;
                 ControlInput {
                     varying_rad_s2: 4.0 * w * rate_error,
@@ -319,6 +348,28 @@ impl TruthModel for Plant {
         self.period_s = p.get("step_period_s");
         self.gust_rad_s2 = p.get("gust_rad_s2");
         self.gust_at_s = p.get("gust_at_s");
+        self.loop_on = LOOP_ON.get(p.index(LOOP_KEY)).and_then(|(_, id)| *id);
+    }
+
+    fn feedback(&mut self, estimators: &[Box<dyn Estimator>]) {
+        let Some(id) = self.loop_on else {
+            return;
+        };
+        let estimate = estimators
+            .iter()
+            .find(|e| e.id() == id)
+            .map(|e| e.estimate());
+        // A diverged or silent filter leaves the controller on its last good reading.
+        if let Some(Estimate {
+            angle_rad: Some(theta),
+            rate_body_rad_s: Some(rate),
+            ..
+        }) = estimate
+            && theta.is_finite()
+            && rate.z.is_finite()
+        {
+            self.estimate = Some((theta, rate.z));
+        }
     }
 
     fn step(&mut self, dt_s: f64) {

@@ -4,10 +4,11 @@
 //! finding: small γ biased and slow, large γ noisy.
 //!
 //! Each γ is run over five seeds (the median is reported) for 8 s with the set-point stepping
-//! from 0 to 20° at 4 s (the paper's Fig. 2 spans 0–7 s). MSE = mean of (θ̂ − θ)² + (ω̂ − ω)²
-//! in deg² and (deg/s)²; t_tr = the time from the step until θ̂ stays within 5 % of the step
-//! of the new set-point, θ̂ averaged over ±50 ms (the rest of the run, 4 s, when it never
-//! does).
+//! from 0 to 20° at 4 s (the paper's Fig. 2 spans 0–7 s), the controller acting on the KF's
+//! θ̂ as in Fig. 1 (and, as a labelled variant, on the truth). MSE = mean of (θ̂ − θ)² +
+//! (ω̂ − ω)² in deg² and (deg/s)²; t_tr = the time from the step until the rig's angle θ
+//! stays within 5 % of the step of the new set-point, averaged over ±50 ms (the rest of the
+//! run, 4 s, when it never does).
 // Only the CLI and the tests reproduce a paper (the `study` feature): without it, what only
 // `reproduce` uses is left out (the page's wasm).
 #![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
@@ -145,6 +146,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
         by_vibration.push((chosen_g * factor, at));
     }
     let mut rows = table1_rows(&scores, &by_vibration)?;
+    rows.extend(closed_loop_rows(&scores, &by_vibration)?);
     rows.extend(fine_grid_rows()?);
     rows.extend(vibration_rows(&by_vibration));
     rows.extend(finding_rows(&scores));
@@ -156,7 +158,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
             "MSE in deg² + (deg/s)², medians over 5 seeds of 8-s runs with a 20° step at 4 s; the paper's MSE of 4–5·10⁴ is in unstated units (its Fig. 2 axis spans 100–250), so only the ordering can compare",
             "the paper's J adds MSE ~10⁴ to t_tr ~1 s with weights of similar size, so its J ranks by MSE alone",
             "the rig's propeller vibration at the IMU (0.2 g RMS here, ours) decides where the best γ lies: the datasheet noise alone favours the largest γ of the grid (see the rows 'beyond the paper')",
-            "t_tr here (3–4 s) is longer than the paper's 1–1.6 s: with 0.2 g of vibration the KF's θ̂ wanders by about its 5 % band of 1°, so it is counted as settled late",
+            "the controller acts on the γ-tuned KF's θ̂ as in Fig. 1 (the variant on the truth follows Table 1); t_tr is the rig's true angle settling within 5 % of the 20° step (±50 ms average): 1.6 s at γ*, 3–3.5 s at the other γ, whose noisy or lagging θ̂ the rig follows; with the loop on the truth it is the controller's alone (0.5 s)",
         ]
         .map(String::from)
         .to_vec(),
@@ -209,6 +211,81 @@ fn table1_rows(
     }
     Ok(rows)
 }
+
+/// The loop closed on θ̂ (the paper's Fig. 1, the default): t_tr of the rig's angle against
+/// the paper's 1.0–1.6 s, and the MSE ranking's worst γ (the paper's: 0.02) here and at
+/// each vibration level; then Table 1 with the loop on the truth, the earlier variant.
+fn closed_loop_rows(
+    scores: &[GammaScore],
+    by_vibration: &ByVibration,
+) -> Result<Vec<Row>, AnalysisError> {
+    let star = &scores[2];
+    let mut rows = vec![Row::check(
+        "loop on θ̂: transient time of the rig's angle at γ* = 2·10⁻³",
+        "1.0 s (Table 1; 1.0–1.6 s over the grid)",
+        star.t_tr_s,
+        "s",
+        Expectation::WithinFactor {
+            lo: 1.0,
+            hi: 1.6,
+            factor: 1.25,
+        },
+    )];
+    let worst = |s: &[GammaScore]| {
+        s.iter()
+            .max_by(|a, b| a.mse.total_cmp(&b.mse))
+            .map_or(f64::NAN, |s| s.gamma)
+    };
+    rows.push(
+        Row::check(
+            "loop on θ̂: the grid's γ with the largest MSE",
+            "0.02 (Table 1: 54 366)",
+            worst(scores),
+            "",
+            Expectation::Near {
+                value: 0.02,
+                tol: 1e-12,
+            },
+        )
+        .known_to_differ(WORST_DIFFERS),
+    );
+    for (vibration, at) in by_vibration {
+        rows.push(Row::measurement(
+            format!(
+                "loop on θ̂: the grid's γ with the largest MSE at {} g of vibration",
+                fmt_sig(*vibration)
+            ),
+            "0.02",
+            worst(at),
+            "",
+        ));
+    }
+    let on_truth: Vec<GammaScore> = GRID
+        .iter()
+        .map(|g| score_gamma_with(g.0, &[ON_TRUTH]))
+        .collect::<Result<_, _>>()?;
+    for ((_, name, paper_mse, paper_ttr), s) in GRID.iter().zip(&on_truth) {
+        rows.push(Row::measurement(
+            format!("variant, loop on the truth: γ = {name}: MSE over θ and ω"),
+            format!("{paper_mse} (units unstated)"),
+            s.mse,
+            "deg², (deg/s)²",
+        ));
+        rows.push(Row::measurement(
+            format!("variant, loop on the truth: γ = {name}: transient time of the rig's angle"),
+            format!("{paper_ttr} s"),
+            s.t_tr_s,
+            "s",
+        ));
+    }
+    Ok(rows)
+}
+
+/// The loop-on-the-truth variant's assignment.
+const ON_TRUTH: &str = "loop_on=1";
+
+/// Why the MSE's worst γ is not the paper's 0.02 (see the rows per vibration level).
+const WORST_DIFFERS: &str = "at every vibration level here the worst γ is an end of the grid (10⁻⁵ below 0.2 g, 0.2 from 0.2 g up: the rows below), since the MSE falls and rises again across γ; 0.02 lies between 0.2 and γ*, and the paper's 0.02 is worse than its 0.2 by only 8 %";
 
 /// The γ of the paper's grid at the smallest of `j` (one value per grid point).
 fn grid_argmin(j: &[f64]) -> f64 {

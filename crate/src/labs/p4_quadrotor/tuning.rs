@@ -5,9 +5,10 @@
 //!
 //! Definitions (ours where the paper is silent):
 //! * MSE = mean over the run of (θ̂ − θ)² + (ω̂ − ω)², in deg² and (deg/s)² (the paper's).
-//! * t_tr = time from the set-point step (at `step_period_s`) until θ̂, averaged over ±50 ms
-//!   so one noisy sample does not count, stays within 5 % of the step of the new set-point;
-//!   the rest of the half period when it never does.
+//! * t_tr = time from the set-point step (at `step_period_s`) until the rig's true angle θ,
+//!   averaged over ±50 ms, stays within 5 % of the step of the new set-point; the rest of
+//!   the half period when it never does. That is what the paper could time on its rig: the
+//!   closed-loop angle. With the loop on the truth it cannot depend on the filter.
 //! * offset = |mean θ̂ − θ| over the last second before the step and before the next one,
 //!   averaged; noise = RMS of the sample-to-sample differences of θ̂ − θ over the second
 //!   before the step, over √2 (a slow drift does not count as noise).
@@ -18,7 +19,7 @@ use crate::model::{ParamValues, SeriesKey, SweepScoring, SweepSpec, q};
 
 /// The series the simulated runs are scored on.
 const SCORED: &[SeriesKey] = &[
-    SeriesKey::new("kf", &q::ANGLE_DEG),
+    SeriesKey::truth(&q::ANGLE_DEG),
     SeriesKey::new("kf", &q::ANGLE_ERR_DEG),
     SeriesKey::new("kf", &q::RATE_ERR_DEG_S),
 ];
@@ -34,7 +35,7 @@ pub const SCORE_NAMES: &[&str] = &[
 /// The paper's three (α, β) pairs of eq. 6, in Table 1's order.
 pub const PAIRS: [(f64, f64); 3] = [(0.3, 0.7), (0.7, 0.3), (0.5, 0.5)];
 
-const HELP: &str = "MSE: mean of (θ̂ − θ)² + (ω̂ − ω)² over the run (the paper's). t_tr: from the set-point step until θ̂ (±50 ms average) stays within 5 % of the step (ours; the paper does not define it). Offset: |mean θ̂ − θ| in the settled seconds. Noise: sample-to-sample scatter of θ̂ − θ at rest. Medians over the seeds; J = α·MSE + β·t_tr with the paper's weights.";
+const HELP: &str = "MSE: mean of (θ̂ − θ)² + (ω̂ − ω)² over the run (the paper's). t_tr: from the set-point step until the rig's angle θ (±50 ms average) stays within 5 % of the step (ours; the paper does not define it; with the loop on the truth it does not depend on γ). Offset: |mean θ̂ − θ| in the settled seconds. Noise: sample-to-sample scatter of θ̂ − θ at rest. Medians over the seeds; J = α·MSE + β·t_tr with the paper's weights.";
 
 /// Scoring of the γ sweep: J for the paper's three pairs, in Table 1's order.
 pub const TABLE1: SweepScoring = SweepScoring {
@@ -114,8 +115,8 @@ pub const SWEEPS: &[SweepSpec] = &[
     .scoring(&LANDSCAPE),
 ];
 
-/// MSE, t_tr, offset and noise of one run; `columns` are those of `SCORED` (the KF's angle,
-/// its error and its rate error).
+/// MSE, t_tr, offset and noise of one run; `columns` are those of `SCORED` (the true angle,
+/// the KF's error and its rate error).
 pub fn score_run(p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, String> {
     let [angle, err_angle, err_rate] = columns else {
         return Err(format!("expected 3 series, got {}", columns.len()));
