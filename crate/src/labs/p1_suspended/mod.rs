@@ -6,6 +6,7 @@
 
 mod lesson;
 mod params;
+mod readings;
 mod reproduce;
 
 use crate::dynamics::TorsionPendulum;
