@@ -53,9 +53,9 @@ pub struct ParamSpec {
     /// Key of another parameter that must be non-zero for this one to act (e.g. the time of
     /// an impulse acts only when the impulse has a size).
     pub requires: Option<&'static str>,
-    /// True when the parameter shapes only what is exported (e.g. whose angles a paper's
-    /// output file holds), not the run.
-    pub export_only: bool,
+    /// True when the parameter shapes only what is shown or exported beside the run (whose
+    /// angles a paper's output file holds, a note under a slider), not the run itself.
+    pub outside_run: bool,
 }
 
 impl ParamSpec {
@@ -80,7 +80,7 @@ impl ParamSpec {
             help: "",
             needs_reset: false,
             requires: None,
-            export_only: false,
+            outside_run: false,
         }
     }
 
@@ -116,10 +116,10 @@ impl ParamSpec {
         }
     }
 
-    /// Shapes only the exports, not the run.
-    pub const fn export_only(self) -> Self {
+    /// Shapes only what is shown or exported beside the run, not the run.
+    pub const fn outside_run(self) -> Self {
         Self {
-            export_only: true,
+            outside_run: true,
             ..self
         }
     }

@@ -338,7 +338,7 @@ fn reselect_in_place_equals_a_reselected_copy() {
         if let Some(p) = lab
             .params()
             .iter()
-            .find(|p| !p.needs_reset && !p.export_only)
+            .find(|p| !p.needs_reset && !p.outside_run)
         {
             let _ = sim.set_param(p.key, p.max);
         }
@@ -375,7 +375,7 @@ fn a_rerun_job_in_slices_equals_the_rerun_in_one_go() {
         let live = lab
             .params()
             .iter()
-            .find(|p| !p.needs_reset && !p.export_only);
+            .find(|p| !p.needs_reset && !p.outside_run);
         for k in 0..120 {
             if k == 60
                 && let Some(p) = live

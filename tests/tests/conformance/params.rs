@@ -33,7 +33,7 @@ fn a_live_parameter_change_acts_without_restart() {
         for spec in lab
             .params()
             .iter()
-            .filter(|s| !s.needs_reset && !s.export_only)
+            .filter(|s| !s.needs_reset && !s.outside_run)
         {
             let mut p = ParamValues::defaults(lab.params());
             if let Some(dep) = spec.requires {
@@ -54,6 +54,31 @@ fn a_live_parameter_change_acts_without_restart() {
             assert!(shows, "{}: changing {} had no effect", lab.id(), spec.key);
         }
     }
+}
+
+/// A parameter marked as shaping only what is shown or exported beside the run (a note, an
+/// output file's columns) changes nothing in the run at either end of its range.
+#[test]
+fn a_parameter_outside_the_run_changes_nothing_in_it() {
+    let mut checked = 0;
+    for lab in labs::all() {
+        for spec in lab.params().iter().filter(|s| s.outside_run) {
+            let p = ParamValues::defaults(lab.params());
+            for v in [spec.min, spec.max] {
+                assert!(
+                    !live_change_shows(*lab, &p, spec.key, v),
+                    "{}: {} is marked outside the run but changed it",
+                    lab.id(),
+                    spec.key
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(
+        checked >= 3,
+        "only {checked} parameters outside the run were checked"
+    );
 }
 
 /// A parameter marked "applies at Reset" changes nothing in the running simulation — not

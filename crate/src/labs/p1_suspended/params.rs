@@ -84,7 +84,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴ (paper: steel 0.35 mm, G·I_p = 1.18e-4 N·m²)."),
     ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 1.0).log().help("Stiffness f = G·I_p/L; with I = 0.48 kg·m², L = 1 m gives T ≈ 400 s (not stated in the paper)."),
     ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.48).log().help("Period T = 2π√(I/f): a shorter T means larger accelerations, which the rotation model φ̈ = 0 cannot follow between resets — watch the N = 1000 error grow."),
-    ParamSpec::real("body_mass_kg", "Body mass M", "kg", 0.1, 20.0, 1.0).log().help("What the string must hold (paper: M = 1 kg); it does not enter the twist."),
+    ParamSpec::real("body_mass_kg", "Body mass M", "kg", 0.1, 20.0, 1.0).log().outside_run().help("What the string must hold (paper: M = 1 kg); it does not enter the twist."),
     ParamSpec::choice(PERIOD_FROM, "Torsion period T", PERIOD_SOURCES, 0).help("The paper's program takes T typed in; here it follows from the string and the body unless you type it."),
     ParamSpec::real(TYPED_PERIOD_S, "Typed period T", "s", 10.0, 5000.0, 400.0).log().requires(PERIOD_FROM).help("The string's stiffness becomes f = I(2π/T)²; the paper's rate axis suggests 570–750 s."),
     ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.05).log().help("Air and string losses (not given in the paper); ζ = 0.05 makes the undamped torsional model drift to the ±100° of Fig. 5.3 without adaptation."),

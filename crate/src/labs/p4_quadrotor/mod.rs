@@ -30,7 +30,7 @@ pub struct QuadrotorRoll;
 const PARAMS: &[ParamSpec] = &[
     ParamSpec::choice("rig", "Rig", RIGS, 0).on_reset().help("The paper's test bench (a lever with one motor, Fig. 3) or a quadrotor's roll axis with four motors (eq. 2), asymmetric or symmetric (eq. 3)."),
     ParamSpec::real("asymmetry_pct", "Asymmetry a", "%", 0.0, 40.0, 15.0).requires("rig").help("Quadrotor (ours): arms differ by a, thrust gains by a/4, so equal hover thrusts make a roll torque and u₀ ≠ 0."),
-    ParamSpec::real(u0_range::UNCERTAINTY_PCT, "Geometry known to ±", "%", 0.0, 30.0, 5.0).help("Eq. 4: the arms, the thrusts and the inertia are known only within an interval, so is the u₀ that holds the rig level (ours: ±5 %)."),
+    ParamSpec::real(u0_range::UNCERTAINTY_PCT, "Geometry known to ±", "%", 0.0, 30.0, 5.0).outside_run().help("Eq. 4: the arms, the thrusts and the inertia are known only within an interval, so is the u₀ that holds the rig level (ours: ±5 %)."),
     ParamSpec::real("lever_torque_n_m", "Lever weight torque M_g", "N·m", 0.0, 0.2, 0.05).help("Test bench (ours): the lever's weight about the bearing; holding it needs a constant thrust (u₀ = M_g/J)."),
     ParamSpec::real("motor_tau_s", "Motor lag T", "s", 0.005, 0.2, 0.04).log().help("1/(1 + T s) on each thrust (Fig. 1)."),
     ParamSpec::choice(plant::LOOP_KEY, "Controller acts on", plant::LOOP_NAMES, 0).help("Fig. 1 closes the loop on the KF's estimate, so a noisy or lagging θ̂ moves the rig itself; on the truth the rig's motion is the same whatever the filters do, and they are compared on one motion."),

@@ -74,7 +74,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("ref_noise_rad", "Reference noise σ", "rad", 0.0, 0.1, 0.0).log().help("Per axis, on each reference attitude."),
     ParamSpec::real("dropout_from_s", "Reference lost at", "s", 0.0, 600.0, 20.0).requires("dropout_s"),
     ParamSpec::real("dropout_s", "Reference lost for", "s", 0.0, 120.0, 0.0).help("No references in this window: the corrected integration runs free, then re-converges."),
-    ParamSpec::choice("output_method", "Output file of", METHOD_NAMES, 0).export_only().help("Whose angles the output file (t, angle₁, angle₂, angle₃) holds."),
+    ParamSpec::choice("output_method", "Output file of", METHOD_NAMES, 0).outside_run().help("Whose angles the output file (t, angle₁, angle₂, angle₃) holds."),
 ];
 
 pub(super) const PRESETS: &[Preset] = &[
