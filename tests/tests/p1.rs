@@ -199,3 +199,33 @@ fn a_two_hour_run_fits_the_budget_and_its_plots_cover_the_whole_run() {
     let end = pts.last().map_or(0.0, |p| p[0]);
     assert!((end - 7200.0).abs() < 0.02, "the plot ends at {end} s");
 }
+
+#[test]
+fn the_output_file_has_the_paper_s_columns_and_no_truth() {
+    let lab = lab("p1");
+    let p = ParamValues::defaults(lab.params());
+    let file = lab.output_file(&p).expect("paper 1 defines an output file");
+    let mut buf = Vec::new();
+    let (rows, stopped) = attlab::sim::write_output_file(lab, p, 1, 2.0, &file, &mut buf).unwrap();
+    assert!(!stopped, "the file has no stop condition");
+    let text = String::from_utf8(buf).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "omega,phi_int,phi1,phi1_dot,phi2,phi2_dot,t");
+    assert_eq!(lines.len() as u64, rows + 1);
+    assert_eq!(rows, 201, "2 s at 100 Hz and the start");
+    // Each row equals the run's own series at that step: φ_int and the torsional KF's angle.
+    let t = trace(
+        lab.id(),
+        &[],
+        1,
+        2.0,
+        &["integration.angle_deg", "kf-torsion.angle_deg"],
+    );
+    let last: Vec<f64> = lines[lines.len() - 1]
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    assert!((last[6] - 2.0).abs() < 1e-9, "t = {}", last[6]);
+    assert_eq!(last[1], t.last("integration.angle_deg").unwrap());
+    assert_eq!(last[4], t.last("kf-torsion.angle_deg").unwrap());
+}

@@ -117,10 +117,10 @@ pub(super) fn run(
             "wrote the paper's output file, {rows} rows ({}) to {}{}",
             file.headers.join(", "),
             csv_path.display(),
-            if stopped {
-                ", ending at the first row within tolerance"
-            } else {
-                " (the tolerance was not reached)"
+            match (&file.stop, stopped) {
+                (None, _) => "",
+                (Some(_), true) => ", ending at the first row within tolerance",
+                (Some(_), false) => " (the tolerance was not reached)",
             }
         );
         return Ok(());

@@ -252,6 +252,10 @@ impl Study for SuspendedMockup {
         Ok(reproduce::reproduce()?)
     }
 
+    fn output_file(&self, _params: &ParamValues) -> Option<crate::model::OutputFile> {
+        Some(params::output_file())
+    }
+
     fn sweeps(&self) -> &'static [SweepSpec] {
         const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
             "Adaptation window N (angle error, 200 s each)",

@@ -7,7 +7,9 @@ use crate::dynamics::{
     STRING_MATERIALS, StringMaterial, TorsionPendulum, min_string_diameter_m, string_safety_factor,
     string_stiffness_n_m_per_rad,
 };
-use crate::model::{ParamNote, ParamSpec, ParamValues, Preset, fmt_sig};
+use crate::model::{
+    OutputFile, ParamNote, ParamSpec, ParamValues, Preset, SeriesKey, TIME, fmt_sig, q,
+};
 use nalgebra::{Matrix2, Vector2};
 
 /// The choice between the period from the string and a typed one.
@@ -151,6 +153,34 @@ pub(super) fn pendulum(p: &ParamValues, state: Vector2<f64>) -> TorsionPendulum 
         damping_ratio: p.get("damping_ratio"),
         torque_n_m: 0.0,
         state,
+    }
+}
+
+/// The paper's output file, in its column order (ω, φ_int, φ̂₁, φ̇̂₁, φ̂₂, φ̇̂₂, t): the rate
+/// the filters read (averaged to the filter rate), the integrated angle, each filter's angle
+/// and rate, and the time — no truth column, as on the rig. Degrees, °/s and seconds (the
+/// paper does not state the file's units).
+pub(super) fn output_file() -> OutputFile {
+    let columns = [
+        SeriesKey::new("integration", &q::RATE_DEG_S),
+        SeriesKey::new("integration", &q::ANGLE_DEG),
+        SeriesKey::new("kf-rotation", &q::ANGLE_DEG),
+        SeriesKey::new("kf-rotation", &q::RATE_DEG_S),
+        SeriesKey::new("kf-torsion", &q::ANGLE_DEG),
+        SeriesKey::new("kf-torsion", &q::RATE_DEG_S),
+    ];
+    OutputFile {
+        columns: columns
+            .iter()
+            .map(SeriesKey::name)
+            .chain(std::iter::once(TIME.to_string()))
+            .collect(),
+        headers: [
+            "omega", "phi_int", "phi1", "phi1_dot", "phi2", "phi2_dot", "t",
+        ]
+        .map(String::from)
+        .to_vec(),
+        stop: None,
     }
 }
 
