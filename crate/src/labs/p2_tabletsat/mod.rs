@@ -5,6 +5,7 @@
 //! the parallel disturbance filter (§3.2) and the constant-gain filter (§3.3).
 
 mod lesson;
+mod metrics;
 mod reproduce;
 pub mod sensors;
 pub mod sets;

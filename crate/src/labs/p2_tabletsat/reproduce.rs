@@ -104,7 +104,7 @@ pub fn accuracy(trace: &Trace, id: &'static str) -> Result<FilterAccuracy, Analy
 }
 
 /// A 200-s run of every filter with `assignments`, and each one's accuracy.
-fn run_all(
+pub(super) fn run_all(
     assignments: &[&str],
     seed: u64,
 ) -> Result<Vec<(&'static FilterRow, FilterAccuracy)>, AnalysisError> {
@@ -125,7 +125,7 @@ fn run_all(
         .collect()
 }
 
-fn acc_of<'a>(all: &'a Runs, id: &str) -> Result<&'a FilterAccuracy, AnalysisError> {
+pub(super) fn acc_of<'a>(all: &'a Runs, id: &str) -> Result<&'a FilterAccuracy, AnalysisError> {
     all.iter()
         .find(|(f, _)| f.config.id == id)
         .map(|(_, a)| a)
@@ -161,6 +161,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     let all = run_all(&[], 1)?;
     let mut rows = table3_rows(&all);
     rows.extend(hierarchy_rows(&all)?);
+    rows.extend(super::metrics::rows(&all)?);
     rows.extend(per_axis_rows(&all)?);
     biases(&mut rows)?;
     disturbance(&mut rows, &all)?;
@@ -184,7 +185,7 @@ fn att_sigma_with(id: &str, key: &str, value: f64) -> Result<f64, AnalysisError>
 }
 
 /// Every filter's run in the default scenario.
-type Runs = [(&'static FilterRow, FilterAccuracy)];
+pub(super) type Runs = [(&'static FilterRow, FilterAccuracy)];
 
 /// Table 3: each filter's measured σ, the paper's metric √max P∞, its rate σ and NEES.
 fn table3_rows(all: &Runs) -> Vec<Row> {
