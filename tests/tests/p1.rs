@@ -181,6 +181,52 @@ fn a_recorded_log_with_junk_lines_replays_through_the_filters() {
     );
 }
 
+/// The raw-count example (assets/make_p1_log.py): the lab's default twist from 360° at rest,
+/// read by a VG-910D as unsigned 24-bit words with a 1 258-count zero, at 10 Hz. Read with
+/// its calibration it gives back the twist it was written from; read with a wrong word
+/// width or without its zero it does not.
+#[test]
+fn the_raw_count_example_replays_to_the_twist_it_was_written_from() {
+    let lab = lab("p1");
+    let page = lab.page();
+    let (example, format) = (page.example_log.unwrap(), page.log_format.unwrap());
+    let p = ParamValues::defaults(lab.params());
+    let (w, zeta) = (std::f64::consts::TAU / true_period_s(&p), 0.05f64);
+    let wd = w * (1.0 - zeta * zeta).sqrt();
+    let phi_deg =
+        |t: f64| 360.0 * (-zeta * w * t).exp() * ((wd * t).cos() + zeta * w / wd * (wd * t).sin());
+    let worst_error = |units: &[(&str, &str)]| {
+        let mut values = example.unit_values(format).unwrap();
+        for (k, v) in units {
+            values.set_text(format.units, k, v).unwrap();
+        }
+        let log = attlab::labs::read_log(lab, example.text.as_bytes(), &values).unwrap();
+        assert_eq!(
+            (log.t_s.len(), log.counts.rejected),
+            (6001, 0),
+            "{:?}",
+            log.errors
+        );
+        let names = ["integration.angle_deg", "kf-torsion.angle_deg"];
+        let mut sim = Simulation::replay(lab, p.clone(), log, SimOptions::named(&names)).unwrap();
+        let mut worst: f64 = 0.0;
+        for t in [100.0, 200.0, 300.0, 450.0, 600.0] {
+            sim.run_for(t - sim.t_s());
+            for name in names {
+                let e = sim.value(name).unwrap() - phi_deg(sim.t_s());
+                worst = worst.max(e.abs());
+            }
+        }
+        worst
+    };
+    let calibrated = worst_error(&[]);
+    assert!(calibrated < 1.5, "{calibrated}° off the written twist");
+    let signed = worst_error(&[("rate_counts", "signed")]);
+    assert!(signed > 100.0, "words read as signed counts: {signed}°");
+    let no_zero = worst_error(&[("count_zero", "0")]);
+    assert!(no_zero > 10.0, "without the zero: {no_zero}°");
+}
+
 #[test]
 fn a_two_hour_run_fits_the_budget_and_its_plots_cover_the_whole_run() {
     let lab = lab("p1");

@@ -164,7 +164,7 @@ pub fn parse_imu_log(bytes: impl AsRef<[u8]>, scales: ImuScales) -> RateLog {
         7,
         "time, ax, ay, az, gx, gy, gz",
         time_scale,
-        |v| (v[4] * kg, Some(Vector3::new(v[1], v[2], v[3]) * ka)),
+        |v| Ok((v[4] * kg, Some(Vector3::new(v[1], v[2], v[3]) * ka))),
     )
 }
 

@@ -170,15 +170,21 @@ pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &str) -> Rows {
     out
 }
 
+/// What one row of a log holds once decoded: a rate (rad/s) and, for an IMU log, an
+/// acceleration (g); or why the row cannot be used.
+pub(crate) type Decoded = Result<(f64, Option<Vector3<f64>>), String>;
+
 /// Reads `bytes` as a log of `columns` numbers per line (`names` says which), time first
 /// in units of `time_scale` s, its clock repaired ([`timeline`]); `sample` turns one row's
-/// numbers (time first) into a rate (rad/s) and, for an IMU log, an acceleration (g).
+/// numbers (time first) into a rate (rad/s) and, for an IMU log, an acceleration (g), or
+/// rejects the row with a reason (a raw word out of its range). Rows are decoded before
+/// lines at one time are merged, so that merging averages rates, not raw words.
 pub(crate) fn read_log(
     bytes: &[u8],
     columns: usize,
     names: &str,
     time_scale: f64,
-    sample: impl Fn(&[f64]) -> (f64, Option<Vector3<f64>>),
+    sample: impl Fn(&[f64]) -> Decoded,
 ) -> RateLog {
     let Rows {
         rows,
@@ -186,6 +192,8 @@ pub(crate) fn read_log(
         data_lines,
         widths,
     } = read_rows(bytes, columns, names);
+    let (rows, undecodable) = decode_rows(rows, sample);
+    let errors = merge_by_line(errors, undecodable);
     let mut glitches = Vec::new();
     let timeline = timeline::order(rows, time_scale, &mut glitches);
     let errors = merge_by_line(errors, glitches);
@@ -197,10 +205,12 @@ pub(crate) fn read_log(
         ..RateLog::default()
     };
     for s in &timeline.samples {
-        let (rate, accel) = sample(&s.row.values);
+        let v = &s.row.values;
         log.t_s.push(s.t_s);
-        log.rate_rad_s.push(rate);
-        log.accel_g.extend(accel);
+        log.rate_rad_s.push(v[1]);
+        if let [_, _, x, y, z] = v[..] {
+            log.accel_g.push(Vector3::new(x, y, z));
+        }
     }
     log.counts = LogCounts {
         data_lines,
@@ -211,6 +221,34 @@ pub(crate) fn read_log(
     };
     log.errors = errors;
     log
+}
+
+/// Each row as `[time, rate]` or `[time, rate, ax, ay, az]` (decoded by `sample`), and the
+/// rows `sample` rejects as line errors, both in line order.
+fn decode_rows(
+    rows: Vec<Row>,
+    sample: impl Fn(&[f64]) -> Decoded,
+) -> (Vec<Row>, Vec<LogLineError>) {
+    let mut errors = Vec::new();
+    let rows = rows
+        .into_iter()
+        .filter_map(|row| match sample(&row.values) {
+            Ok((rate, accel)) => {
+                let mut values = vec![row.values[0], rate];
+                values.extend(accel.iter().flat_map(|a| a.iter().copied()));
+                Some(Row { values, ..row })
+            }
+            Err(reason) => {
+                errors.push(LogLineError {
+                    line: row.line,
+                    text: row.text,
+                    reason,
+                });
+                None
+            }
+        })
+        .collect();
+    (rows, errors)
 }
 
 /// Two lists of line errors, each in line order, as one in line order.

@@ -11,4 +11,4 @@ pub use crate::model::{LogCounts, LogFormat, LogGap, LogLineError, RateLog};
 pub use gyro::{Gyro3, Gyro3Config};
 pub use imu_log::{AccelUnit, GyroUnit, IMU_LOG, ImuScales, parse_imu_log};
 pub use noise::{Averager, RandomWalk, WhiteNoise, quantize};
-pub use rate_log::{RATE_LOG, RateUnit, TimeUnit, parse_rate_log};
+pub use rate_log::{RATE_LOG, RateUnit, RawCounts, TimeUnit, parse_rate_counts, parse_rate_log};

@@ -79,10 +79,7 @@ impl AppState {
             }
             IoCommand::SetLogUnit(key, value) => self.set_log_unit(key, value),
             IoCommand::ReplayLog(name, bytes) => self.start_replay(name, &bytes),
-            IoCommand::LoadExampleLog => match self.sim.lab().page().example_log {
-                Some(log) => self.start_replay(log.name.into(), log.text.as_bytes()),
-                None => self.warn("msg-no-example-log", &[]),
-            },
+            IoCommand::LoadExampleLog => self.replay_example(),
             IoCommand::CopyPython => {
                 self.say("msg-python-copied", &[]);
                 return Some(Effect::Clipboard(self.python_snippet()));
@@ -91,6 +88,22 @@ impl AppState {
             IoCommand::SetSaveDir(dir) => self.io.save_dir = dir,
         }
         None
+    }
+
+    /// Replays the log the lab ships, with the unit choices it is written in (which the
+    /// panel then shows).
+    fn replay_example(&mut self) {
+        let page = self.sim.lab().page();
+        let (Some(log), Some(format)) = (page.example_log, page.log_format) else {
+            return self.warn("msg-no-example-log", &[]);
+        };
+        match log.unit_values(format) {
+            Ok(units) => {
+                self.io.units.insert(format.id, units);
+                self.start_replay(log.name.into(), log.text.as_bytes());
+            }
+            Err(e) => self.error(e.to_string()),
+        }
     }
 
     /// Takes a picked log, if one arrived, and starts replaying it (bad lines are listed as

@@ -5,26 +5,40 @@ use super::harness;
 use attlab_web::state::{IoCommand, RunCommand};
 use egui_kittest::kittest::Queryable;
 
-/// Paper 4's example log from its button: every line accounted for in the message, and the
-/// replay's first step delivers the first sample.
-#[test]
-fn the_example_log_replays_and_says_what_became_of_every_line() {
-    let mut h = harness("p4");
-    h.get_by_label("Real data: an Arduino MPU-6050 log")
-        .scroll_to_me();
+/// Lab `lab`'s page with its example log replayed from the button under `heading`, after
+/// checking that the message says "replaying {lines}" and "{rejected}".
+fn replay_example(
+    lab: &str,
+    heading: &str,
+    lines: &str,
+    rejected: &str,
+) -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
+    let mut h = harness(lab);
+    h.get_by_label(heading).scroll_to_me();
     h.run();
-    h.get_by_label("Real data: an Arduino MPU-6050 log").click();
+    h.get_by_label(heading).click();
     h.run_steps(3);
     h.get_by_label("Replay the example log").scroll_to_me();
     h.run();
     h.get_by_label("Replay the example log").click();
     h.run();
     let said = h.state().state.messages().iter().any(|m| {
-        !m.is_error
-            && m.text.contains("replaying 1000 samples of 1003 lines")
-            && m.text.contains("3 rejected")
+        !m.is_error && m.text.contains(&format!("replaying {lines}")) && m.text.contains(rejected)
     });
     assert!(said, "{:?}", h.state().state.messages());
+    h
+}
+
+/// Paper 4's example log from its button: every line accounted for in the message, and the
+/// replay's first step delivers the first sample.
+#[test]
+fn the_example_log_replays_and_says_what_became_of_every_line() {
+    let mut h = replay_example(
+        "p4",
+        "Real data: an Arduino MPU-6050 log",
+        "1000 samples of 1003 lines",
+        "3 rejected",
+    );
     let sim = h.state().state.sim();
     assert!(
         sim.replay_log().is_some() && sim.t_s() < 0.0,
@@ -37,6 +51,24 @@ fn the_example_log_replays_and_says_what_became_of_every_line() {
     assert!(
         sim.t_s().abs() < 1e-12 && (gyro - first).abs() < 1e-9,
         "{gyro} vs {first}"
+    );
+}
+
+/// Paper 1's example is raw 24-bit words: its button sets the calibration it is written
+/// with, so every line is a sample and the panel shows the settings used.
+#[test]
+fn the_raw_count_example_sets_its_calibration_and_replays_every_line() {
+    let h = replay_example(
+        "p1",
+        "Laboratory mode: recorded gyro log",
+        "6001 samples of 6001 lines",
+        "0 rejected",
+    );
+    let format = h.state().state.sim().lab().page().log_format.unwrap();
+    let units = h.state().state.io().units_for(format);
+    assert_eq!(
+        (units.index("rate_counts"), units.get("count_zero")),
+        (3, 1258.0)
     );
 }
 

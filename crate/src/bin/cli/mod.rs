@@ -112,6 +112,11 @@ enum Command {
         /// power-on counts250 by default), deg_s or rad_s.
         #[arg(long)]
         gyro_unit: Option<String>,
+        /// Any of the log format's unit settings as `key=value` (repeatable), e.g. a gyro
+        /// log of raw counts: `--log-set rate_counts=24-bit --log-set count_scale=0.0238
+        /// --log-set count_zero=1258` (an unknown key lists the format's settings).
+        #[arg(long = "log-set", value_name = "KEY=VALUE")]
+        log_set: Vec<String>,
         /// Output CSV file.
         #[arg(long)]
         csv: PathBuf,
@@ -178,6 +183,7 @@ pub fn main() -> ExitCode {
             time_unit,
             accel_unit,
             gyro_unit,
+            log_set,
             csv,
             set,
             max_csv_mb,
@@ -189,6 +195,7 @@ pub fn main() -> ExitCode {
                 time: time_unit.as_deref(),
                 accel: accel_unit.as_deref(),
                 gyro: gyro_unit.as_deref(),
+                assignments: &log_set,
             },
             Output::new(&csv, max_csv_mb),
             &set,

@@ -172,14 +172,14 @@ fn write_sidecar(
     Ok(sidecar)
 }
 
-/// The unit flags of `attlab replay`.
-/// The unit flags given on the command line, by the name of the unit (`--rate-unit` is
-/// `rate`).
+/// The unit flags of `attlab replay`: by the name of the unit (`--rate-unit` is `rate`),
+/// then any unit setting as `key=value` (`--log-set`).
 pub(super) struct LogUnits<'a> {
     pub(super) rate: Option<&'a str>,
     pub(super) time: Option<&'a str>,
     pub(super) accel: Option<&'a str>,
     pub(super) gyro: Option<&'a str>,
+    pub(super) assignments: &'a [String],
 }
 
 pub(super) fn replay(
@@ -316,11 +316,18 @@ fn log_units(
         format
             .units
             .iter()
-            .map(|s| match s.kind {
-                attlab::model::ParamKind::Choice(options) => {
-                    format!("--{} {}", s.key.replace('_', "-"), options.join("|"))
+            .map(|s| {
+                let values = match s.kind {
+                    attlab::model::ParamKind::Choice(options) => options.join("|"),
+                    _ => format!("{} … {} {}", s.min, s.max, s.unit)
+                        .trim_end()
+                        .to_string(),
+                };
+                if s.key.ends_with("_unit") {
+                    format!("--{} {values}", s.key.replace('_', "-"))
+                } else {
+                    format!("--log-set {}=<{values}>", s.key)
                 }
-                _ => format!("--{}", s.key.replace('_', "-")),
             })
             .collect::<Vec<_>>()
             .join(", ")
@@ -339,7 +346,21 @@ fn log_units(
             .set_text(format.units, &key, value)
             .map_err(|e| format!("--{name}-unit `{value}`: {e} (units: {})", has()))?;
     }
-    Ok(values)
+    let errors =
+        values.apply_assignments(format.units, units.assignments.iter().map(String::as_str));
+    match errors.as_slice() {
+        [] => Ok(values),
+        _ => Err(format!(
+            "--log-set: {} (the settings of {}: {})",
+            errors
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join("; "),
+            format.name,
+            has()
+        )),
+    }
 }
 
 #[cfg(test)]
@@ -352,6 +373,7 @@ mod tests {
             time: None,
             accel,
             gyro: None,
+            assignments: &[],
         }
     }
 
@@ -370,6 +392,28 @@ mod tests {
             1,
             "an IMU log's time is in ms by default"
         );
+    }
+
+    #[test]
+    fn log_settings_set_raw_counts_and_a_bad_one_names_the_settings() {
+        let given = [
+            "rate_counts=24-bit".to_string(),
+            "count_zero=1258".to_string(),
+        ];
+        let flags = LogUnits {
+            assignments: &given,
+            ..units(Some("mdeg_s"), None)
+        };
+        let ok = log_units(&attlab::sensors::RATE_LOG, &flags).unwrap();
+        assert_eq!((ok.index("rate_counts"), ok.get("count_zero")), (3, 1258.0));
+        let bad = ["count_zero=lots".to_string(), "count_scael=2".to_string()];
+        let flags = LogUnits {
+            assignments: &bad,
+            ..units(None, None)
+        };
+        let err = log_units(&attlab::sensors::RATE_LOG, &flags).unwrap_err();
+        assert!(err.contains("lots") && err.contains("count_scael"), "{err}");
+        assert!(err.contains("--log-set count_scale=<"), "{err}");
     }
 
     #[test]

@@ -14,9 +14,9 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamNote,
-    ParamValues, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey, SeriesSpec,
-    Study, SweepSpec, TruthModel, TruthState, q,
+    Estimator, ExampleLog, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page,
+    ParamNote, ParamValues, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
+    SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::{UnitQuaternion, Vector2, Vector3};
@@ -171,6 +171,19 @@ const PAGE: Page = Page {
     views: SINGLE_AXIS_VIEWS,
     suspended: true,
     log_format: Some(&crate::sensors::RATE_LOG),
+    // Synthetic (assets/make_p1_log.py): the default twist read by a VG-910D as raw
+    // 24-bit words with a zero offset, at 10 Hz for 600 s.
+    example_log: Some(ExampleLog {
+        name: "p1-vg910d-counts.csv",
+        text: include_str!("../../../../assets/p1-vg910d-counts.csv"),
+        units: &[
+            ("rate_unit", "mdeg_s"),
+            ("time_unit", "ms"),
+            ("rate_counts", "24-bit"),
+            ("count_scale", "0.0238418579"),
+            ("count_zero", "1258"),
+        ],
+    }),
     ..Page::DEFAULT
 };
 

@@ -218,6 +218,7 @@ const PAGE: Page = Page {
     example_log: Some(ExampleLog {
         name: "p4-arduino-mpu6050.csv",
         text: include_str!("../../../../assets/p4-arduino-mpu6050.csv"),
+        units: &[],
     }),
     ..Page::DEFAULT
 };
