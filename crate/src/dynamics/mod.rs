@@ -4,6 +4,7 @@ mod environment;
 mod orbit;
 mod prescribed;
 mod rigid_body;
+mod suspended_body;
 mod torsion;
 
 pub use environment::{
@@ -15,6 +16,7 @@ pub use orbit::{
 };
 pub use prescribed::{AngleProfile, EulerMotion};
 pub use rigid_body::{RigidBody, RigidBodyState};
+pub use suspended_body::SuspendedBody;
 pub use torsion::{
     STRING_MATERIALS, StringMaterial, TorsionPendulum, min_string_diameter_m, string_safety_factor,
     string_stiffness_n_m_per_rad,

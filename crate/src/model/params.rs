@@ -51,10 +51,13 @@ pub struct ParamSpec {
     /// True when a change only takes effect at the next reset (e.g. an initial condition).
     pub needs_reset: bool,
     /// Key of another parameter that must be non-zero for this one to act (e.g. the time of
-    /// an impulse acts only when the impulse has a size).
+    /// an impulse acts only when the impulse has a size). The page greys the slider out
+    /// while it is zero, unless the parameter is also [`Self::outside_run`].
     pub requires: Option<&'static str>,
     /// True when the parameter shapes only what is shown or exported beside the run (whose
-    /// angles a paper's output file holds, a note under a slider), not the run itself.
+    /// angles a paper's output file holds, a note under a slider), not the run itself. With
+    /// [`Self::requires`], it acts on the run too while that parameter is non-zero (paper
+    /// 1's body mass: the string check always, the run only in the 5-DOF body model).
     pub outside_run: bool,
 }
 

@@ -25,9 +25,10 @@ pub(super) fn slider_rows(
         }
         let value = app.sim().params().get(spec.key);
         let active = !app.view().locks(spec.key)
-            && spec
-                .requires
-                .is_none_or(|k| app.sim().params().get(k) != 0.0);
+            && (spec.outside_run
+                || spec
+                    .requires
+                    .is_none_or(|k| app.sim().params().get(k) != 0.0));
         let row = |ui: &mut Ui| {
             ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
                 .inner

@@ -8,28 +8,25 @@ mod lesson;
 mod params;
 mod readings;
 mod reproduce;
+mod rocking;
+mod truth;
 
-use crate::dynamics::TorsionPendulum;
 use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, ExampleLog, Extras, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page,
-    ParamNote, ParamValues, Quantity, SINGLE_AXIS_VIEWS, SensorModel, SeriesGroup, SeriesKey,
-    SeriesSpec, Study, SweepSpec, TruthModel, TruthState, q,
+    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, Measurements, Page, ParamNote,
+    ParamValues, SINGLE_AXIS_VIEWS, SensorModel, SeriesKey, Study, SweepSpec, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
-use nalgebra::{UnitQuaternion, Vector2, Vector3};
+use nalgebra::Vector2;
 use rand_chacha::ChaCha8Rng;
 
-/// The torsion pendulum's period (s), a truth series.
-const PERIOD_S: Quantity = Quantity::new("period_s", "torsion period T", "s");
-/// The string's swing (deg), a truth series.
-const SWING_DEG: Quantity = Quantity::new("swing_deg", "swing angle of the string", "deg");
-
 pub use params::true_period_s;
-use params::{PARAMS, PRESETS, pendulum};
+use params::{PARAMS, PRESETS};
 pub use reproduce::{FilterStats, p1_noise_floor_deg, run_stats};
+use truth::PERIOD_S;
+use truth::Suspended;
 
 /// The paper-1 lab.
 pub struct SuspendedMockup;
@@ -204,17 +201,7 @@ impl Lab for SuspendedMockup {
             p.get("initial_angle_deg").to_radians(),
             p.get("initial_rate_deg_s").to_radians(),
         );
-        let truth = Suspended {
-            pendulum: pendulum(p, x0),
-            t_s: 0.0,
-            kick: (0.0, 0.0),
-            kicked: false,
-            swing: (0.0, 1.0),
-            shake_n_m: 0.0,
-            rng_torque: 0.0,
-        };
-        let mut truth = truth;
-        truth.apply_params(p);
+        let truth = Suspended::new(p, x0);
         let (_, m) = rates(p);
         let mut sensors = OneAxisGyro {
             averager: Averager::new(m),
@@ -283,86 +270,6 @@ impl Study for SuspendedMockup {
             ],
         )];
         SWEEPS
-    }
-}
-
-/// The body on the string with its disturbances.
-struct Suspended {
-    pendulum: TorsionPendulum,
-    t_s: f64,
-    /// (time s, rate jump rad/s) of the torque impulse.
-    kick: (f64, f64),
-    kicked: bool,
-    /// (amplitude rad, angular frequency rad/s) of the swing about a horizontal axis.
-    swing: (f64, f64),
-    shake_n_m: f64,
-    rng_torque: f64,
-}
-
-impl Suspended {
-    fn swing_angle_and_rate(&self) -> (f64, f64) {
-        let (amp, w) = self.swing;
-        ((w * self.t_s).sin() * amp, (w * self.t_s).cos() * amp * w)
-    }
-}
-
-impl TruthModel for Suspended {
-    fn apply_params(&mut self, p: &ParamValues) {
-        let fresh = pendulum(p, self.pendulum.state);
-        self.pendulum.inertia_kg_m2 = fresh.inertia_kg_m2;
-        self.pendulum.stiffness_n_m_per_rad = fresh.stiffness_n_m_per_rad;
-        self.pendulum.damping_ratio = fresh.damping_ratio;
-        let kick = (p.get("impulse_time_s"), p.get("impulse_deg_s").to_radians());
-        if kick != self.kick {
-            self.kicked = self.t_s >= kick.0 && kick.0 > 0.0;
-            self.kick = kick;
-        }
-        // A pendulum of the string's length: ω = √(g/L).
-        self.swing = (
-            p.get("swing_amp_deg").to_radians(),
-            (9.81 / p.get("string_length_m")).sqrt(),
-        );
-        self.shake_n_m = p.get("shake_torque_n_m");
-    }
-
-    fn step(&mut self, dt_s: f64) {
-        self.pendulum.torque_n_m = self.shake_n_m * self.rng_torque;
-        self.pendulum.step(dt_s);
-        self.t_s += dt_s;
-        if !self.kicked && self.kick.1 != 0.0 && self.t_s >= self.kick.0 {
-            self.pendulum.state[1] += self.kick.1;
-            self.kicked = true;
-        }
-    }
-
-    fn state(&self) -> TruthState {
-        let (theta, theta_dot) = self.swing_angle_and_rate();
-        let phi = self.pendulum.state[0];
-        let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
-            * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), theta);
-        TruthState {
-            t_s: self.t_s,
-            q_ref_from_body: q,
-            rate_body_rad_s: Vector3::new(theta_dot, 0.0, self.pendulum.state[1]),
-            angle_rad: Some(phi),
-            lab: LabData::default(),
-        }
-    }
-
-    fn extra_series(&self) -> Vec<SeriesSpec> {
-        vec![
-            SeriesSpec::of(SeriesKey::truth(&PERIOD_S), SeriesGroup::Lab),
-            SeriesSpec::of(SeriesKey::truth(&SWING_DEG), SeriesGroup::Lab),
-        ]
-    }
-
-    fn extra_values(&self, out: &mut Extras<'_>) {
-        out.put(&PERIOD_S, self.pendulum.period_s());
-        out.put(&SWING_DEG, self.swing_angle_and_rate().0.to_degrees());
-    }
-
-    fn draw_noise(&mut self, rng: &mut ChaCha8Rng) {
-        self.rng_torque = WhiteNoise { sigma: 1.0 }.sample(rng);
     }
 }
 

@@ -79,6 +79,11 @@ pub(super) const PRESETS: &[Preset] = &[
             ("kf_adaptation", 3.0),
         ],
     },
+    Preset {
+        name: "rocking body (5 DOF)",
+        help: "The §3.2 model started 5° off the vertical, gyro aligned: the body rocks every ≈ 10 s and the swing reaches the gyro through the dynamics alone",
+        values: &[("body_model", 1.0), ("swing_amp_deg", 5.0)],
+    },
 ];
 
 pub(super) const PARAMS: &[ParamSpec] = &[
@@ -86,7 +91,10 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("string_diameter_mm", "String diameter d", "mm", 0.05, 2.0, 0.35).log().help("I_p = πd⁴/32: the stiffness goes as d⁴ (paper: steel 0.35 mm, G·I_p = 1.18e-4 N·m²)."),
     ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 1.0).log().help("Stiffness f = G·I_p/L; with I = 0.48 kg·m², L = 1 m gives T ≈ 400 s (not stated in the paper)."),
     ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.48).log().help("Period T = 2π√(I/f): a shorter T means larger accelerations, which the rotation model φ̈ = 0 cannot follow between resets — watch the N = 1000 error grow."),
-    ParamSpec::real("body_mass_kg", "Body mass M", "kg", 0.1, 20.0, 1.0).log().outside_run().help("What the string must hold (paper: M = 1 kg); it does not enter the twist."),
+    ParamSpec::real("body_mass_kg", "Body mass M", "kg", 0.1, 20.0, 1.0).log().outside_run().requires("body_model").help("What the string must hold (paper: M = 1 kg); in the 5-DOF model also the weight that rights the rocking body. It does not enter the twist."),
+    ParamSpec::choice("body_model", "Body model", super::truth::BODY_MODELS, 0).on_reset().help("1 DOF: the twist alone, as the filters assume, with the swing a prescribed sinusoid. 5 DOF (§3.2): the suspension point slides freely, the body rocks about its centre of mass by itself, and the swing reaches the gyro through the dynamics."),
+    ParamSpec::real("com_offset_mm", "Centre of mass below the string d", "mm", 0.1, 200.0, 10.0).log().requires("body_model").help("The paper's d (not given): the weight M g acts d below the suspension point, so the body rocks at √(M g d / A)."),
+    ParamSpec::real("tilt_inertia_kg_m2", "Tilt inertia A = B", "kg·m²", 0.01, 10.0, 0.24).log().requires("body_model").help("The body's moments of inertia about the horizontal axes through its centre of mass (ours: half of I, a disc)."),
     ParamSpec::choice(PERIOD_FROM, "Torsion period T", PERIOD_SOURCES, 0).help("The paper's program takes T typed in; here it follows from the string and the body unless you type it."),
     ParamSpec::real(TYPED_PERIOD_S, "Typed period T", "s", 10.0, 5000.0, 400.0).log().requires(PERIOD_FROM).help("The string's stiffness becomes f = I(2π/T)²; the paper's rate axis suggests 570–750 s."),
     ParamSpec::real("damping_ratio", "Damping ratio ζ", "", 0.0, 0.5, 0.05).log().help("Air and string losses (not given in the paper); ζ = 0.05 makes the undamped torsional model drift to the ±100° of Fig. 5.3 without adaptation."),
@@ -107,7 +115,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("kf_period_error_pct", "Torsional KF period error", "%", -50.0, 100.0, 0.0).help("Model period T = true T·(1 + e): set it wrong on purpose."),
     ParamSpec::real("impulse_time_s", "Torque impulse at", "s", 0.0, 600.0, 5.0).requires("impulse_deg_s"),
     ParamSpec::real("impulse_deg_s", "Impulse size (rate jump)", "°/s", -10.0, 10.0, 0.0).help("A kick that changes φ̇ at once."),
-    ParamSpec::real("swing_amp_deg", "Pendulum swing", "°", 0.0, 20.0, 0.0).help("Swing about a horizontal axis; leaks into the gyro through its misalignment."),
+    ParamSpec::real("swing_amp_deg", "Pendulum swing", "°", 0.0, 20.0, 0.0).help("1 DOF: a swing about a horizontal axis at √(g/L), which leaks into the gyro through its misalignment. 5 DOF: the initial tilt (at a reset), after which the body rocks by itself."),
     ParamSpec::real("swing_misalign_deg", "Gyro misalignment", "°", 0.0, 10.0, 0.0).help("Tilt of the gyro axis towards the swing axis: the swing leaks in, and the twist rate reads cos(δ) too small."),
     ParamSpec::real("shake_torque_n_m", "Suspension shaking (torque σ)", "N·m", 0.0, 1e-3, 0.0).log().help("Random torque from a shaking suspension point."),
 ];
