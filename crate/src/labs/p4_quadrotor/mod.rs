@@ -6,6 +6,7 @@
 pub mod keys;
 mod lesson;
 mod mpu6050;
+mod mse_units;
 mod plant;
 mod reproduce;
 mod tuning;
