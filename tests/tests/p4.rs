@@ -317,3 +317,28 @@ fn with_the_loop_on_the_estimate_the_filter_moves_the_rig_and_on_the_truth_it_do
         scatter(&star)
     );
 }
+
+/// The rig's true angle over a run with `set`.
+fn rig_with(set: &[&str]) -> Vec<f64> {
+    let t = trace("p4", set, 1, 6.0, &["truth.angle_deg"]);
+    t.series("truth.angle_deg").unwrap().to_vec()
+}
+
+/// Each filter can close the loop: on the complementary filter the rig moves with its gain
+/// and not with γ; on either other KF with γ and not with the complementary gain.
+#[test]
+fn the_loop_closes_on_the_filter_chosen_and_on_no_other() {
+    for (loop_on, moves_with_gamma) in [
+        ("loop_on=2", false),
+        ("loop_on=3", true),
+        ("loop_on=4", true),
+    ] {
+        let gamma = rig_with(&[loop_on, "gamma=2e-3"]) != rig_with(&[loop_on, "gamma=0.2"]);
+        let cf = rig_with(&[loop_on, "cf_gain=0.9"]) != rig_with(&[loop_on, "cf_gain=0.99"]);
+        assert_eq!(
+            (gamma, cf),
+            (moves_with_gamma, !moves_with_gamma),
+            "{loop_on}: the rig moves with γ: {gamma}, with the complementary gain: {cf}"
+        );
+    }
+}

@@ -55,14 +55,24 @@ pub const RIGS: &[&str] = &[
 pub const LOOP_KEY: &str = "loop_on";
 
 /// What the controller can act on (parameter `loop_on`): the paper's Fig. 1 closes the loop
-/// on the γ-tuned KF's θ̂; on the truth every filter is compared on one motion.
+/// on the γ-tuned KF's θ̂; on the truth every filter is compared on one motion; or on any
+/// other filter's estimate (the rest then run open on the same measurements).
 pub const LOOP_ON: &[(&str, Option<&str>)] = &[
     ("the γ-tuned KF's θ̂, ω̂ (the paper's Fig. 1)", Some("kf")),
     ("the true θ, ω (every filter on one motion)", None),
+    ("the complementary filter's θ̂, ω̂", Some("cf")),
+    ("the bias-estimating KF's θ̂, ω̂", Some("kf-bias")),
+    ("the KF fed u_v + u₀: its θ̂, ω̂", Some("kf-u0")),
 ];
 
 /// The names of [`LOOP_ON`], for the choice parameter.
-pub const LOOP_NAMES: &[&str] = &[LOOP_ON[0].0, LOOP_ON[1].0];
+pub const LOOP_NAMES: &[&str] = &[
+    LOOP_ON[0].0,
+    LOOP_ON[1].0,
+    LOOP_ON[2].0,
+    LOOP_ON[3].0,
+    LOOP_ON[4].0,
+];
 
 /// The controllers (parameter `controller`).
 pub const CONTROLLERS: &[&str] = &["nested P–PI (Fig. 1)", "plain PID"];
