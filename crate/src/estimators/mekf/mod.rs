@@ -141,8 +141,8 @@ pub struct MekfConfig {
     pub states: StateSet,
     /// Runs the parallel disturbance filter of §3.2.
     pub disturbance: bool,
-    /// Freezes the gain at this time (s) and stops propagating P (§3.3).
-    pub constant_gain_after_s: Option<f64>,
+    /// Freezes the gain at [`MekfTuning::freeze_after_s`] and stops propagating P (§3.3).
+    pub constant_gain: bool,
     /// The body's inertia tensor J in body axes (kg·m²), of the dynamics model (eqs. 6–7).
     pub inertia_kg_m2: Matrix3<f64>,
 }
@@ -168,6 +168,9 @@ pub struct MekfTuning {
     pub alpha: f64,
     /// R_d as a multiple of the innovation variance of each row.
     pub rd_scale: f64,
+    /// When a constant-gain filter freezes its gain (s; the first update after it in which
+    /// every sensor of its set delivered).
+    pub freeze_after_s: f64,
 }
 
 /// One update's scalar rows: (residual at the prior, H row, R), at most [`MAX_ROWS`].

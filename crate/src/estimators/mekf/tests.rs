@@ -26,7 +26,7 @@ fn filter() -> Mekf<6> {
         },
         states: StateSet::AttRate,
         disturbance: false,
-        constant_gain_after_s: None,
+        constant_gain: false,
         // A TabletSat-like, slightly asymmetric inertia with products (kg·m²).
         inertia_kg_m2: Matrix3::new(0.52, 0.002, 0.005, 0.002, 0.58, 0.009, 0.005, 0.009, 0.71),
     };
@@ -40,6 +40,7 @@ fn filter() -> Mekf<6> {
         sun_sigma_rad: 1e-3,
         alpha: 1.0,
         rd_scale: 1.0,
+        freeze_after_s: 150.0,
     };
     let q = UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5);
     Mekf::new(

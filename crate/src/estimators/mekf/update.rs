@@ -110,10 +110,8 @@ impl<const N: usize> Mekf<N> {
         // sensor of the set delivered, so it holds a gain for each of the set's rows.
         let expected = self.expected_rows();
         let freeze = self.gains.is_none()
-            && self
-                .cfg
-                .constant_gain_after_s
-                .is_some_and(|t| self.t_s >= t)
+            && self.cfg.constant_gain
+            && self.t_s >= self.tuning.freeze_after_s
             && expected.iter().zip(&present).all(|(e, p)| !e || *p);
         let mut new_gains = [None; MAX_ROWS];
         for (k, ((r, h, var), here)) in rows.iter().zip(present).enumerate() {

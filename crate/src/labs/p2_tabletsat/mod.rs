@@ -4,6 +4,7 @@
 //! (Table 1) feed every EKF variant of Table 2 at once, beside the reduced [λ, Δω] variant,
 //! the parallel disturbance filter (§3.2) and the constant-gain filter (§3.3).
 
+mod constant_gain;
 mod lesson;
 mod metrics;
 mod reproduce;
@@ -73,6 +74,7 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("q_scale", "Q scale (all filters)", "", 0.01, 100.0, 1.0).log().help("Multiplies every filter's q (their own values are the paper's Table 3 where readable)."),
     ParamSpec::real("alpha", "Disturbance filter fading α", "", 0.5, 1.0, 0.999).help("P_d ← P_d/α per second: smaller forgets faster (§3.2)."),
     ParamSpec::real("rd_scale", "Disturbance filter R_d scale", "", 0.1, 1000.0, 100.0).log().help("R_d as a multiple of each row's innovation variance. The innovations of a running EKF are correlated over many steps, so R_d = S (scale 1) makes the disturbance filter overconfident: it then invents a disturbance where there is none."),
+    ParamSpec::real("freeze_after_s", "Constant-gain filters: gain frozen at", "s", 10.0, 6000.0, 150.0).log().help("§3.3: from the first update after this time in which every sensor of the set delivered, the filter keeps that gain and stops propagating P (the paper: once the motion is quasi-steady; the time is ours)."),
     ParamSpec::real("filter_init_err_deg", "Filters' initial attitude error", "°", 0.0, 30.0, 2.0).on_reset(),
     // Failure: a degenerate geometry.
     ParamSpec::toggle("sun_along_field", "Thought experiment: sun along the field", false).help("Puts the sun (truth and ephemeris) next to the field direction: with two parallel vectors the rotation about them is not observed (H degenerate)."),
@@ -199,6 +201,16 @@ const FIGURES: &[Figure] = &[
             SeriesKey::truth(&truth::WHEEL_H[2]),
         ],
     ),
+    Figure::new(
+        "Constant gain against its EKF (§3.3, Table 5)",
+        &[
+            SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
+            SeriesKey::new("mag-sun-gyro-const", &q::ERR_DEG),
+            SeriesKey::new("st-gyro", &q::ERR_DEG),
+            SeriesKey::new("st-gyro-const", &q::ERR_DEG),
+        ],
+    )
+    .log(),
 ];
 
 const PRESETS: &[Preset] = &[
@@ -246,6 +258,11 @@ const PRESETS: &[Preset] = &[
             ("star_rate_hz", 10.0),
         ],
     },
+    Preset {
+        name: "constant gain (§3.3)",
+        help: "The gains freeze at 60 s. The field and the sun then turn in the body frame along the orbit: within minutes the frozen Mag+Sun+Gyro gain loses the attitude while its EKF keeps tracking, and a star-tracker set's frozen gain stays its EKF's (see the constant-gain plot)",
+        values: &[("freeze_after_s", 60.0)],
+    },
 ];
 
 /// The tuning of filter row `row` with the lab's parameters.
@@ -271,6 +288,7 @@ fn tuning(p: &ParamValues, q: [f64; 3]) -> MekfTuning {
         sun_sigma_rad: p.get("sun_noise_deg").to_radians().max(1e-9),
         alpha: p.get("alpha"),
         rd_scale: p.get("rd_scale"),
+        freeze_after_s: p.get("freeze_after_s"),
     }
 }
 
@@ -345,6 +363,20 @@ const PAGE: Page = Page {
     ..Page::DEFAULT
 };
 
+/// A random unit axis (x when the draw is degenerate).
+fn random_axis(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    let axis = Vector3::new(
+        rng.random_range(-1.0..1.0),
+        rng.random_range(-1.0..1.0),
+        rng.random_range(-1.0..1.0),
+    );
+    if axis.norm() > 1e-6 {
+        axis.normalize()
+    } else {
+        Vector3::x()
+    }
+}
+
 impl Lab for TabletSat {
     fn lesson(&self) -> Option<&'static crate::model::Lesson> {
         Some(&lesson::LESSON)
@@ -363,18 +395,16 @@ impl Lab for TabletSat {
         let state = crate::model::TruthModel::state(&truth);
         let err = p.get("filter_init_err_deg").to_radians();
         let mut estimators: Vec<Box<dyn Estimator>> = Vec::with_capacity(FILTERS.len());
+        let mut axes: Vec<(&str, Vector3<f64>)> = Vec::with_capacity(FILTERS.len());
         for row in FILTERS {
-            // Each filter starts off the truth by the same angle about its own random axis.
-            let axis = Vector3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            let axis = if axis.norm() > 1e-6 {
-                axis.normalize()
-            } else {
-                Vector3::x()
-            };
+            // Each filter starts off the truth by the same angle about its own random axis;
+            // a constant-gain variant about its EKF's (drawing nothing, so adding one
+            // changes no other filter's run).
+            let earlier = row
+                .starts_as
+                .and_then(|id| axes.iter().find(|(a, _)| *a == id).map(|(_, v)| *v));
+            let axis = earlier.unwrap_or_else(|| random_axis(rng));
+            axes.push((row.config.id, axis));
             let q0 = state.q_ref_from_body * UnitQuaternion::from_scaled_axis(axis * err);
             let t = tuning(p, row.q);
             let sigma = err.max(0.5f64.to_radians());

@@ -165,6 +165,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(per_axis_rows(&all)?);
     biases(&mut rows)?;
     disturbance(&mut rows, &all)?;
+    rows.extend(super::constant_gain::rows()?);
     Ok(Reproduction {
         lab: "p2".into(),
         rows,

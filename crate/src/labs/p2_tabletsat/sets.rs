@@ -16,6 +16,9 @@ pub struct FilterRow {
     pub paper_att_deg: Option<f64>,
     /// Table 3's rate σ (deg/s).
     pub paper_rate_deg_s: Option<f64>,
+    /// The filter whose initial error this one starts from (a constant-gain variant starts
+    /// as its EKF, so that the two differ only after the freeze); `None`: its own.
+    pub starts_as: Option<&'static str>,
 }
 
 const fn set(star: bool, gyro: bool, mag: bool, sun: bool) -> SensorSet {
@@ -39,7 +42,7 @@ const fn cfg(
         sensors,
         states,
         disturbance: false,
-        constant_gain_after_s: None,
+        constant_gain: false,
         inertia_kg_m2: super::INERTIA_KG_M2,
     }
 }
@@ -57,6 +60,114 @@ const fn row(
         q_from_paper,
         paper_att_deg: att,
         paper_rate_deg_s: rate,
+        starts_as: None,
+    }
+}
+
+/// Table 2's st, the base of its constant-gain variant.
+const ST: FilterRow = row(
+    cfg(
+        "st",
+        "12 ST [λ,ω]",
+        set(true, false, false, false),
+        StateSet::AttRate,
+    ),
+    [1e-6, 1.2e-6, 0.0],
+    true,
+    Some(8e-4),
+    Some(6e-4),
+);
+
+/// Table 2's st gyro gbias, the base of its constant-gain variant.
+const ST_GYRO_GBIAS: FilterRow = row(
+    cfg(
+        "st-gyro-gbias",
+        "9 ST+Gyro [λ,ω,Δω]",
+        set(true, true, false, false),
+        StateSet::AttRateGyroBias,
+    ),
+    [1e-6, 1.2e-6, 1e-8],
+    false,
+    Some(5e-4),
+    Some(4e-4),
+);
+
+/// Table 2's st gyro reduced, the base of its constant-gain variant.
+const ST_GYRO_REDUCED: FilterRow = row(
+    cfg(
+        "st-gyro-reduced",
+        "ST+Gyro reduced [λ,Δω]",
+        set(true, true, false, false),
+        StateSet::AttGyroBias,
+    ),
+    [1e-6, 0.0, 1e-8],
+    false,
+    None,
+    None,
+);
+
+/// Table 2's mag sun gyro, the base of its constant-gain variant.
+const MAG_SUN_GYRO: FilterRow = row(
+    cfg(
+        "mag-sun-gyro",
+        "5 Mag+Sun+Gyro [λ,ω]",
+        set(false, true, true, true),
+        StateSet::AttRate,
+    ),
+    [5e-6, 5e-4, 0.0],
+    true,
+    Some(2e-2),
+    None,
+);
+
+/// Table 2's mag sun gyro mbias, the base of its constant-gain variant.
+const MAG_SUN_GYRO_MBIAS: FilterRow = row(
+    cfg(
+        "mag-sun-gyro-mbias",
+        "7 Mag+Sun+Gyro [λ,ω,Δb]",
+        set(false, true, true, true),
+        StateSet::AttRateMagBias,
+    ),
+    [5e-6, 5e-4, 5e-4],
+    false,
+    None,
+    None,
+);
+
+/// Table 2's mag sun, the base of its constant-gain variant.
+const MAG_SUN: FilterRow = row(
+    cfg(
+        "mag-sun",
+        "10 Mag+Sun [λ,ω]",
+        set(false, false, true, true),
+        StateSet::AttRate,
+    ),
+    [5e-6, 2e-6, 0.0],
+    false,
+    Some(0.12),
+    None,
+);
+
+/// Filter `base` with its gain frozen (§3.3), as filter `id`: the same sensors, states and
+/// q, Table 5's accuracy where it is readable.
+const fn frozen(
+    base: FilterRow,
+    id: &'static str,
+    label: &'static str,
+    att: Option<f64>,
+    rate: Option<f64>,
+) -> FilterRow {
+    FilterRow {
+        config: MekfConfig {
+            id,
+            label,
+            constant_gain: true,
+            ..base.config
+        },
+        paper_att_deg: att,
+        paper_rate_deg_s: rate,
+        starts_as: Some(base.config.id),
+        ..base
     }
 }
 
@@ -111,18 +222,7 @@ pub const FILTERS: &[FilterRow] = &[
         Some(7e-4),
         Some(6e-4),
     ),
-    row(
-        cfg(
-            "mag-sun-gyro",
-            "5 Mag+Sun+Gyro [λ,ω]",
-            set(false, true, true, true),
-            StateSet::AttRate,
-        ),
-        [5e-6, 5e-4, 0.0],
-        true,
-        Some(2e-2),
-        None,
-    ),
+    MAG_SUN_GYRO,
     row(
         cfg(
             "mag-sun-gyro-gbias",
@@ -135,18 +235,7 @@ pub const FILTERS: &[FilterRow] = &[
         Some(2e-2),
         None,
     ),
-    row(
-        cfg(
-            "mag-sun-gyro-mbias",
-            "7 Mag+Sun+Gyro [λ,ω,Δb]",
-            set(false, true, true, true),
-            StateSet::AttRateMagBias,
-        ),
-        [5e-6, 5e-4, 5e-4],
-        false,
-        None,
-        None,
-    ),
+    MAG_SUN_GYRO_MBIAS,
     row(
         cfg(
             "st-gyro",
@@ -159,30 +248,8 @@ pub const FILTERS: &[FilterRow] = &[
         Some(5e-4),
         Some(4e-4),
     ),
-    row(
-        cfg(
-            "st-gyro-gbias",
-            "9 ST+Gyro [λ,ω,Δω]",
-            set(true, true, false, false),
-            StateSet::AttRateGyroBias,
-        ),
-        [1e-6, 1.2e-6, 1e-8],
-        false,
-        Some(5e-4),
-        Some(4e-4),
-    ),
-    row(
-        cfg(
-            "mag-sun",
-            "10 Mag+Sun [λ,ω]",
-            set(false, false, true, true),
-            StateSet::AttRate,
-        ),
-        [5e-6, 2e-6, 0.0],
-        false,
-        Some(0.12),
-        None,
-    ),
+    ST_GYRO_GBIAS,
+    MAG_SUN,
     row(
         cfg(
             "mag-gyro",
@@ -195,30 +262,8 @@ pub const FILTERS: &[FilterRow] = &[
         None,
         Some(5e-3),
     ),
-    row(
-        cfg(
-            "st",
-            "12 ST [λ,ω]",
-            set(true, false, false, false),
-            StateSet::AttRate,
-        ),
-        [1e-6, 1.2e-6, 0.0],
-        true,
-        Some(8e-4),
-        Some(6e-4),
-    ),
-    row(
-        cfg(
-            "st-gyro-reduced",
-            "ST+Gyro reduced [λ,Δω]",
-            set(true, true, false, false),
-            StateSet::AttGyroBias,
-        ),
-        [1e-6, 0.0, 1e-8],
-        false,
-        None,
-        None,
-    ),
+    ST,
+    ST_GYRO_REDUCED,
     row(
         MekfConfig {
             disturbance: true,
@@ -251,7 +296,7 @@ pub const FILTERS: &[FilterRow] = &[
     ),
     row(
         MekfConfig {
-            constant_gain_after_s: Some(150.0),
+            constant_gain: true,
             ..cfg(
                 "st-gyro-const",
                 "ST+Gyro [λ,ω] constant gain (§3.3)",
@@ -262,6 +307,50 @@ pub const FILTERS: &[FilterRow] = &[
         [1e-6, 1.2e-6, 0.0],
         true,
         Some(1.5e-3),
+        None,
+    ),
+    // Table 5: the constant-gain variants whose states carry no disturbance (the (λ, ω, d)
+    // rows need the disturbance filter behind a frozen gain, which the lab does not run).
+    frozen(
+        ST,
+        "st-const",
+        "ST [λ,ω] constant gain (Table 5)",
+        None,
+        Some(4e-4),
+    ),
+    frozen(
+        ST_GYRO_GBIAS,
+        "st-gyro-gbias-const",
+        "ST+Gyro [λ,ω,Δω] constant gain (Table 5)",
+        Some(1.5e-3),
+        Some(3e-4),
+    ),
+    frozen(
+        ST_GYRO_REDUCED,
+        "st-gyro-reduced-const",
+        "ST+Gyro [λ,Δω] constant gain (Table 5)",
+        Some(1.5e-3),
+        None,
+    ),
+    frozen(
+        MAG_SUN_GYRO,
+        "mag-sun-gyro-const",
+        "Mag+Sun+Gyro [λ,ω] constant gain (Table 5)",
+        Some(2e-2),
+        Some(2.2e-2),
+    ),
+    frozen(
+        MAG_SUN_GYRO_MBIAS,
+        "mag-sun-gyro-mbias-const",
+        "Mag+Sun+Gyro [λ,ω,Δb] constant gain (Table 5)",
+        Some(2e-2),
+        None,
+    ),
+    frozen(
+        MAG_SUN,
+        "mag-sun-const",
+        "Mag+Sun [λ,ω] constant gain (Table 5)",
+        Some(0.1),
         None,
     ),
 ];

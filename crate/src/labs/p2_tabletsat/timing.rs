@@ -34,7 +34,7 @@ pub(super) fn timing_items() -> Vec<TimingItem> {
         sensors: SensorSet::ALL,
         states: StateSet::AttRateGyroBias,
         disturbance: false,
-        constant_gain_after_s: None,
+        constant_gain: false,
         inertia_kg_m2: INERTIA_KG_M2,
     };
     let fresh = Mekf::<9>::new(
