@@ -98,6 +98,10 @@ pub struct SensitivitySettings {
     pub tolerance_rad: f64,
     /// How (Λ, U) are integrated between samples (the paper makes it a setting).
     pub integrator: &'static ExplicitRk,
+    /// The most steps between two references kept for the re-integration, reserved up
+    /// front; a longer gap restarts the interval at the free-running estimate (so the
+    /// memory is fixed when the run starts, not grown during a dropout).
+    pub history_steps: usize,
 }
 
 /// What the last update found.
@@ -194,7 +198,7 @@ impl SensitivityCorrection {
             },
             last_rate: Vector3::zeros(),
             start: q0.into_inner(),
-            history: Vec::new(),
+            history: Vec::with_capacity(settings.history_steps),
             info: UpdateInfo::default(),
             updates: 0,
             last_reference: None,
@@ -346,6 +350,9 @@ impl Estimator for SensitivityCorrection {
     fn apply_params(&mut self, p: &ParamValues) {
         if let Some(f) = self.tuner {
             self.settings = f(p);
+            let wanted = self.settings.history_steps;
+            self.history
+                .reserve_exact(wanted.saturating_sub(self.history.len()));
         }
     }
 
@@ -371,6 +378,9 @@ impl Estimator for SensitivityCorrection {
             q
         };
         self.u = u;
+        if self.history.len() >= self.settings.history_steps {
+            self.restart_interval();
+        }
         self.history.push((self.last_rate, dt_s));
         if !(self
             .q
@@ -479,18 +489,4 @@ pub fn sensitivity_finite_difference_check() -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_sensitivity_matches_finite_differences_of_the_integrated_quaternion() {
-        let d = sensitivity_finite_difference_check();
-        assert!(d <= 1e-6, "U vs finite differences {d:e}");
-    }
-
-    #[test]
-    fn golden_section_finds_a_parabola_minimum() {
-        let s = golden_section(|s| (s - 0.73).powi(2), 0.0, 2.0);
-        assert!((s - 0.73).abs() < 1e-6, "{s}");
-    }
-}
+mod tests;

@@ -135,5 +135,14 @@ pub(super) fn settings_of(p: &ParamValues) -> SensitivitySettings {
             .get(p.index("integration"))
             .copied()
             .unwrap_or(&RK4),
+        history_steps: history_steps(p),
     }
+}
+
+/// The longest gap between references a run can have, in integration steps: a dropout and
+/// the intervals either side of it (at most ≈ 1.3·10⁵ steps at 1 ms).
+fn history_steps(p: &ParamValues) -> usize {
+    let gap_s = p.get("dropout_s") + 2.0 * p.get("interval_s");
+    let steps = (gap_s / p.get("step_s").max(1e-6)).ceil() + 2.0;
+    steps.clamp(16.0, f64::from(1u32 << 20)) as usize
 }
