@@ -16,5 +16,6 @@ state-attitude-axis = attitude about { $axis }
 state-rate-axis = rate about { $axis }
 state-gyro-bias-axis = gyro bias about { $axis }
 state-mag-bias-axis = magnetometer bias along { $axis }
+state-mag-turn-axis = magnetometer bias: turn of the field about { $axis }
 state-angle = angle
 state-rate = rate

@@ -15,5 +15,6 @@ state-attitude-axis = ориентации вокруг { $axis }
 state-rate-axis = угловой скорости вокруг { $axis }
 state-gyro-bias-axis = смещения гироскопа вокруг { $axis }
 state-mag-bias-axis = смещения магнитометра вдоль { $axis }
+state-mag-turn-axis = смещения магнитометра как поворота поля вокруг { $axis }
 state-angle = угла
 state-rate = угловой скорости

@@ -29,6 +29,7 @@ lab-p2-estimator-st-gyro-reduced-const = ЗД+ДУС [λ,Δω] с постоян
 lab-p2-estimator-mag-sun-gyro-const = Маг+СД+ДУС [λ,ω] с постоянным коэффициентом усиления (табл. 5)
 lab-p2-estimator-mag-sun-gyro-mbias-const = Маг+СД+ДУС [λ,ω,Δb] с постоянным коэффициентом усиления (табл. 5)
 lab-p2-estimator-mag-sun-const = Маг+СД [λ,ω] с постоянным коэффициентом усиления (табл. 5)
+lab-p2-estimator-mag-sun-gyro-mturn = 7′ Маг+СД+ДУС [λ,ω,Δb как поворот поля] (рис. 7)
 lab-p2-estimator-st-gyro-gbias = 9 ЗД+ДУС [λ,ω,Δω]
 lab-p2-estimator-st-gyro-mag = 2 ЗД+ДУС+Маг [λ,ω]
 lab-p2-estimator-st-gyro-mag-sun = 1 ЗД+ДУС+Маг+СД [λ,ω]

@@ -158,6 +158,7 @@ fn state(lang: Lang, s: &StateInfo) -> super::FluentValue<'static> {
         StateKind::RateAxis(a) => with_axis("state-rate-axis", a),
         StateKind::GyroBias(a) => with_axis("state-gyro-bias-axis", a),
         StateKind::MagBias(a) => with_axis("state-mag-bias-axis", a),
+        StateKind::MagTurn(a) => with_axis("state-mag-turn-axis", a),
         StateKind::Angle => t(lang, "state-angle"),
         StateKind::Rate => t(lang, "state-rate"),
         StateKind::WzU => "u".into(),

@@ -199,6 +199,8 @@ pub enum StateKind {
     GyroBias(u8),
     /// Magnetometer bias along axis 0, 1 or 2 (nT).
     MagBias(u8),
+    /// Magnetometer bias as a turn of the field about axis 0, 1 or 2 (rad).
+    MagTurn(u8),
     /// Anything else (its unit says what).
     Other,
 }

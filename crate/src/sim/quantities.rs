@@ -114,6 +114,7 @@ pub(super) fn state_label(s: &StateInfo) -> String {
         K::RateAxis(a) => format!("rate about {}", axis(a)),
         K::GyroBias(a) => format!("gyro bias about {}", axis(a)),
         K::MagBias(a) => format!("magnetometer bias along {}", axis(a)),
+        K::MagTurn(a) => format!("magnetometer bias: turn of the field about {}", axis(a)),
         K::Angle => "angle".into(),
         K::Rate => "rate".into(),
         K::WzU => "u".into(),

@@ -16,8 +16,9 @@
 //!   F_g = \[η×\]J\[η×\] − \[(Jη)×\]\[η×\] (the paper's gravity-gradient block).
 //! * Measurements (Table 2's H): star tracker δλ = vec(q̂⁻¹ ⊗ q_st) with H = [E 0];
 //!   gyro ω̃ = ω + Δω with H = [0 E (E)]; magnetometer b = A b₀ (+ Δb) with
-//!   H = [2[b̂×] 0 (E)]; sun sensor s = A s₀ with H = [2[ŝ×] 0]. The 2 makes δλ half-angle
-//!   consistent. Rows are processed one scalar at a time (diagonal R), so any set is the
+//!   H = [2[b̂×] 0 (E)], or with Fig. 7's bias, a small turn δ of the field, b = A b₀ + δ × A b₀
+//!   with H = [2[b̂×] 0 −[b̂×]]; sun sensor s = A s₀ with H = [2[ŝ×] 0]. The 2 makes δλ
+//!   half-angle consistent. Rows are processed one scalar at a time (diagonal R), so any set is the
 //!   same code and the step has no heap.
 //! * Q = diag(q_Λ²·E, q_ω²·E, q_bias²·E) per prediction step, the paper's tuning knobs.
 
@@ -35,32 +36,14 @@ pub use states::{
     RATE_Z,
 };
 
-// The series the filter records besides the catalogue's (figures name them).
-/// innovation test statistic NIS.
-pub const NIS: Quantity = Quantity::new("nis", "innovation test statistic NIS", "");
-/// NIS degrees of freedom.
-pub const NIS_DOF: Quantity = Quantity::new("nis_dof", "NIS degrees of freedom", "");
-/// gyro bias Δω_x (deg/s).
-pub const GBIAS_X_DEG_S: Quantity = Quantity::new("gbias_x_deg_s", "gyro bias Δω_x", "deg/s");
-/// gyro bias Δω_y (deg/s).
-pub const GBIAS_Y_DEG_S: Quantity = Quantity::new("gbias_y_deg_s", "gyro bias Δω_y", "deg/s");
-/// gyro bias Δω_z (deg/s).
-pub const GBIAS_Z_DEG_S: Quantity = Quantity::new("gbias_z_deg_s", "gyro bias Δω_z", "deg/s");
-/// magnetometer bias Δb_x (nT).
-pub const MBIAS_X_NT: Quantity = Quantity::new("mbias_x_nt", "magnetometer bias Δb_x", "nT");
-/// magnetometer bias Δb_y (nT).
-pub const MBIAS_Y_NT: Quantity = Quantity::new("mbias_y_nt", "magnetometer bias Δb_y", "nT");
-/// magnetometer bias Δb_z (nT).
-pub const MBIAS_Z_NT: Quantity = Quantity::new("mbias_z_nt", "magnetometer bias Δb_z", "nT");
-/// disturbance estimate d_x (1/s²).
-pub const D_X_S2: Quantity = Quantity::new("d_x_s2", "disturbance estimate d_x", "1/s²");
-/// disturbance estimate d_y (1/s²).
-pub const D_Y_S2: Quantity = Quantity::new("d_y_s2", "disturbance estimate d_y", "1/s²");
-/// disturbance estimate d_z (1/s²).
-pub const D_Z_S2: Quantity = Quantity::new("d_z_s2", "disturbance estimate d_z", "1/s²");
+pub use series::{
+    D_X_S2, D_Y_S2, D_Z_S2, GBIAS_X_DEG_S, GBIAS_Y_DEG_S, GBIAS_Z_DEG_S, MBIAS_X_NT, MBIAS_Y_NT,
+    MBIAS_Z_NT, MTURN_X_DEG, MTURN_Y_DEG, MTURN_Z_DEG, NIS, NIS_DOF,
+};
 
 mod onboard;
 mod predict;
+mod series;
 mod states;
 #[cfg(test)]
 mod tests;
@@ -96,8 +79,10 @@ pub enum StateSet {
     AttRate,
     /// [λ, ω, Δω]: gyro bias.
     AttRateGyroBias,
-    /// [λ, ω, Δb]: magnetometer bias.
+    /// [λ, ω, Δb]: magnetometer bias (nT, added to the reading).
     AttRateMagBias,
+    /// [λ, ω, Δb]: magnetometer bias as a small turn of the field (rad; Fig. 7's model).
+    AttRateMagTurn,
     /// [λ, Δω]: the reduced variant — ω is the gyro reading less the bias, no dynamics.
     AttGyroBias,
 }
@@ -107,7 +92,7 @@ impl StateSet {
     pub const fn dim(self) -> usize {
         match self {
             Self::AttRate | Self::AttGyroBias => 6,
-            Self::AttRateGyroBias | Self::AttRateMagBias => 9,
+            Self::AttRateGyroBias | Self::AttRateMagBias | Self::AttRateMagTurn => 9,
         }
     }
 
@@ -124,7 +109,12 @@ impl StateSet {
     }
 
     fn mag_bias(self) -> Option<usize> {
-        (self == Self::AttRateMagBias).then_some(6)
+        matches!(self, Self::AttRateMagBias | Self::AttRateMagTurn).then_some(6)
+    }
+
+    /// Whether the magnetometer bias is a turn of the field rather than an added vector.
+    fn mag_turn(self) -> bool {
+        self == Self::AttRateMagTurn
     }
 }
 
@@ -428,54 +418,10 @@ impl<const N: usize> Estimator for Mekf<N> {
     }
 
     fn extra_quantities(&self) -> &'static [Quantity] {
-        const BASE: [Quantity; 2] = [NIS, NIS_DOF];
-        const GB: [Quantity; 5] = [NIS, NIS_DOF, GBIAS_X_DEG_S, GBIAS_Y_DEG_S, GBIAS_Z_DEG_S];
-        const MB: [Quantity; 5] = [NIS, NIS_DOF, MBIAS_X_NT, MBIAS_Y_NT, MBIAS_Z_NT];
-        const D: [Quantity; 5] = [NIS, NIS_DOF, D_X_S2, D_Y_S2, D_Z_S2];
-        const GB_D: [Quantity; 8] = [
-            NIS,
-            NIS_DOF,
-            GBIAS_X_DEG_S,
-            GBIAS_Y_DEG_S,
-            GBIAS_Z_DEG_S,
-            D_X_S2,
-            D_Y_S2,
-            D_Z_S2,
-        ];
-        const MB_D: [Quantity; 8] = [
-            NIS, NIS_DOF, MBIAS_X_NT, MBIAS_Y_NT, MBIAS_Z_NT, D_X_S2, D_Y_S2, D_Z_S2,
-        ];
-        let st = self.cfg.states;
-        match (
-            st.gyro_bias().is_some(),
-            st.mag_bias().is_some(),
-            self.dist.is_some(),
-        ) {
-            (true, _, false) => &GB,
-            (_, true, false) => &MB,
-            (true, _, true) => &GB_D,
-            (_, true, true) => &MB_D,
-            (false, false, true) => &D,
-            (false, false, false) => &BASE,
-        }
+        series::extra_quantities(self.cfg.states, self.dist.is_some())
     }
 
     fn extras(&self, out: &mut Extras<'_>) {
-        out.put(&NIS, self.nis[0]);
-        out.put(&NIS_DOF, self.nis[1]);
-        if self.cfg.states.gyro_bias().is_some() {
-            let b = self.gyro_bias.map(f64::to_degrees);
-            out.put_all(
-                [&GBIAS_X_DEG_S, &GBIAS_Y_DEG_S, &GBIAS_Z_DEG_S],
-                b.iter().copied(),
-            );
-        }
-        if self.cfg.states.mag_bias().is_some() {
-            let b = self.mag_bias;
-            out.put_all([&MBIAS_X_NT, &MBIAS_Y_NT, &MBIAS_Z_NT], b.iter().copied());
-        }
-        if let Some(d) = self.dist {
-            out.put_all([&D_X_S2, &D_Y_S2, &D_Z_S2], d.d.iter().copied());
-        }
+        self.put_extras(out);
     }
 }

@@ -28,12 +28,22 @@ pub const MBIAS_Y: StateInfo = StateInfo::new("mbias_y", "nT", StateKind::MagBia
 /// Magnetometer bias along z (nT).
 pub const MBIAS_Z: StateInfo = StateInfo::new("mbias_z", "nT", StateKind::MagBias(2));
 
+/// Magnetometer bias: turn of the field about x (rad).
+pub const MTURN_X: StateInfo = StateInfo::new("mturn_x", "rad", StateKind::MagTurn(0));
+/// Magnetometer bias: turn of the field about y (rad).
+pub const MTURN_Y: StateInfo = StateInfo::new("mturn_y", "rad", StateKind::MagTurn(1));
+/// Magnetometer bias: turn of the field about z (rad).
+pub const MTURN_Z: StateInfo = StateInfo::new("mturn_z", "rad", StateKind::MagTurn(2));
+
 const STATES_6: [StateInfo; 6] = [ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z];
 const STATES_GYRO_BIAS: [StateInfo; 9] = [
     ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z, GBIAS_X, GBIAS_Y, GBIAS_Z,
 ];
 const STATES_MAG_BIAS: [StateInfo; 9] = [
     ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z, MBIAS_X, MBIAS_Y, MBIAS_Z,
+];
+const STATES_MAG_TURN: [StateInfo; 9] = [
+    ATT_X, ATT_Y, ATT_Z, RATE_X, RATE_Y, RATE_Z, MTURN_X, MTURN_Y, MTURN_Z,
 ];
 const STATES_REDUCED: [StateInfo; 6] = [ATT_X, ATT_Y, ATT_Z, GBIAS_X, GBIAS_Y, GBIAS_Z];
 
@@ -42,6 +52,7 @@ pub(super) fn states_of(s: StateSet) -> &'static [StateInfo] {
         StateSet::AttRate => &STATES_6,
         StateSet::AttRateGyroBias => &STATES_GYRO_BIAS,
         StateSet::AttRateMagBias => &STATES_MAG_BIAS,
+        StateSet::AttRateMagTurn => &STATES_MAG_TURN,
         StateSet::AttGyroBias => &STATES_REDUCED,
     }
 }

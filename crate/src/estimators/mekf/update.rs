@@ -45,45 +45,50 @@ impl<const N: usize> Mekf<N> {
                 present[3 + i] = true;
             }
         }
-        let mut vector = |base: usize,
-                          z: Option<Vector3<f64>>,
-                          reference: &Vector3<f64>,
-                          bias: Option<usize>,
-                          sigma: f64| {
-            let Some(z) = z else { return };
-            let model = self.q.inverse_transform_vector(reference);
-            let predicted = model
-                + if bias.is_some() {
-                    self.mag_bias
-                } else {
-                    Vector3::zeros()
-                };
-            let h_att = skew(&model) * 2.0;
-            for i in 0..3 {
-                let mut h = SVector::<f64, N>::zeros();
-                for k in 0..3 {
-                    h[k] = h_att[(i, k)];
-                }
-                if let Some(b) = bias {
-                    h[b + i] = 1.0;
-                }
-                rows[base + i] = (z[i] - predicted[i], h, sigma * sigma);
-                present[base + i] = true;
+        let mut out = (rows, present);
+        if let (true, Some(z)) = (s.mag, m.mag_body_nt) {
+            let bias = st.mag_bias();
+            self.vector_rows(&mut out, 6, z, &ob.mag_ref_orbit_nt, bias, t.mag_sigma_nt);
+        }
+        if let (true, Some(z)) = (s.sun, m.sun_body) {
+            self.vector_rows(&mut out, 9, z, &ob.sun_ref_orbit, None, t.sun_sigma_rad);
+        }
+        out
+    }
+
+    /// A reference vector's three rows from `base`: reading `z` of `reference` (orbital
+    /// axes), with the magnetometer's bias state at `bias` if the filter has one.
+    fn vector_rows(
+        &self,
+        (rows, present): &mut (Rows<N>, [bool; MAX_ROWS]),
+        base: usize,
+        z: Vector3<f64>,
+        reference: &Vector3<f64>,
+        bias: Option<usize>,
+        sigma: f64,
+    ) {
+        let model = self.q.inverse_transform_vector(reference);
+        // The bias: added (nT), or a small turn δ of the field, b ≈ b₀ + δ × b₀ (Fig. 7),
+        // whose rows are ∂(δ × b₀)/∂δ = −[b₀×].
+        let (predicted, h_bias) = match bias {
+            None => (model, Matrix3::zeros()),
+            Some(_) if self.cfg.states.mag_turn() => {
+                (model + self.mag_bias.cross(&model), -skew(&model))
             }
+            Some(_) => (model + self.mag_bias, Matrix3::identity()),
         };
-        if s.mag {
-            vector(
-                6,
-                m.mag_body_nt,
-                &ob.mag_ref_orbit_nt,
-                st.mag_bias(),
-                t.mag_sigma_nt,
-            );
+        let h_att = skew(&model) * 2.0;
+        for i in 0..3 {
+            let mut h = SVector::<f64, N>::zeros();
+            for k in 0..3 {
+                h[k] = h_att[(i, k)];
+                if let Some(b) = bias {
+                    h[b + k] = h_bias[(i, k)];
+                }
+            }
+            rows[base + i] = (z[i] - predicted[i], h, sigma * sigma);
+            present[base + i] = true;
         }
-        if s.sun {
-            vector(9, m.sun_body, &ob.sun_ref_orbit, None, t.sun_sigma_rad);
-        }
-        (rows, present)
     }
 
     pub(super) fn update(&mut self, m: &Measurements, ob: &Onboard) {

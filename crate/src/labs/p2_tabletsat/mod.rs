@@ -5,7 +5,10 @@
 //! the parallel disturbance filter (§3.2) and the constant-gain filter (§3.3).
 
 mod constant_gain;
+mod fig7;
 mod lesson;
+mod page;
+use page::{FIGURES, PRESETS};
 mod metrics;
 mod reproduce;
 pub mod sensors;
@@ -16,8 +19,8 @@ pub mod truth;
 use crate::estimators::mekf;
 use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
-    AccuracyTable, BodyShape, Estimator, Figure, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
-    ParamValues, Preset, SeriesKey, Study, SweepSpec, q,
+    AccuracyTable, BodyShape, Estimator, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
+    ParamValues, SeriesKey, Study, SweepSpec, q,
 };
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
 use rand::Rng;
@@ -52,7 +55,8 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("dist_from_s", "Torque switched on at", "s", 0.0, 6000.0, 0.0).help("A step in the disturbance (§3.2): 0 = from the start."),
     // Sensors (Table 1).
     ParamSpec::real("mag_noise_nt", "Magnetometer σ", "nT", 0.0, 5000.0, 250.0).log(),
-    ParamSpec::real("mag_bias_nt", "Magnetometer bias", "nT", 0.0, 5000.0, 0.0).log().help("A constant bias the Δb filters estimate."),
+    ParamSpec::real("mag_bias_nt", "Magnetometer bias", "nT", 0.0, 5000.0, 0.0).log().help("A constant bias added to the reading, which the Δb filters in nT estimate."),
+    ParamSpec::real("mag_turn_deg", "Magnetometer bias as a turn of the field", "°", 0.0, 10.0, 0.0).help("Fig. 7's model: the reading is the field turned by this angle about a fixed body axis; the Δb-as-a-turn filter estimates it in degrees."),
     ParamSpec::choice("onboard_field", "Onboard field model", FIELD_MODELS, 0).help("The truth is WMM 2025; the filters' model may be worse (the paper: errors up to 400 nT)."),
     ParamSpec::real("model_error_nt", "Model error", "nT", 10.0, 2000.0, 400.0).requires("onboard_field").help("Size of the onboard model's error when it is 'WMM + model error'."),
     ParamSpec::real("sun_noise_deg", "Sun-sensor σ", "°", 0.0, 2.0, 0.1).log(),
@@ -79,190 +83,6 @@ const PARAMS: &[ParamSpec] = &[
     // Failure: a degenerate geometry.
     ParamSpec::toggle("sun_along_field", "Thought experiment: sun along the field", false).help("Puts the sun (truth and ephemeris) next to the field direction: with two parallel vectors the rotation about them is not observed (H degenerate)."),
     ParamSpec::real("sun_field_angle_deg", "Sun–field angle", "°", 0.0, 90.0, 0.5).requires("sun_along_field"),
-];
-
-const FIGURES: &[Figure] = &[
-    Figure::new(
-        "ST+Gyro attitude errors (Fig. 4)",
-        &[
-            SeriesKey::new("st-gyro", &q::ERR_X_DEG),
-            SeriesKey::new("st-gyro", &q::ERR_Y_DEG),
-            SeriesKey::new("st-gyro", &q::ERR_Z_DEG),
-        ],
-    ),
-    Figure::new(
-        "ST+Gyro rate errors (Fig. 5)",
-        &[
-            SeriesKey::new("st-gyro", &q::RATE_ERR_X_DEG_S),
-            SeriesKey::new("st-gyro", &q::RATE_ERR_Y_DEG_S),
-            SeriesKey::new("st-gyro", &q::RATE_ERR_Z_DEG_S),
-        ],
-    ),
-    Figure::new(
-        "Attitude error of every filter",
-        &[
-            SeriesKey::new("st-gyro-mag-sun", &q::ERR_DEG),
-            SeriesKey::new("st-gyro-mag", &q::ERR_DEG),
-            SeriesKey::new("st-mag-sun", &q::ERR_DEG),
-            SeriesKey::new("st-mag-mbias", &q::ERR_DEG),
-            SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
-            SeriesKey::new("mag-sun-gyro-gbias", &q::ERR_DEG),
-            SeriesKey::new("mag-sun-gyro-mbias", &q::ERR_DEG),
-            SeriesKey::new("st-gyro", &q::ERR_DEG),
-            SeriesKey::new("st-gyro-gbias", &q::ERR_DEG),
-            SeriesKey::new("mag-sun", &q::ERR_DEG),
-            SeriesKey::new("mag-gyro", &q::ERR_DEG),
-            SeriesKey::new("st", &q::ERR_DEG),
-            SeriesKey::new("st-gyro-reduced", &q::ERR_DEG),
-            SeriesKey::new("mag-sun-dist", &q::ERR_DEG),
-            SeriesKey::new("st-dist", &q::ERR_DEG),
-            SeriesKey::new("st-gyro-const", &q::ERR_DEG),
-        ],
-    )
-    .log(),
-    Figure::new(
-        "Gyro bias: truth and estimates (Fig. 6)",
-        &[
-            SeriesKey::sensors(&sensors::GYRO_BIAS[0]),
-            SeriesKey::sensors(&sensors::GYRO_BIAS[1]),
-            SeriesKey::new("st-gyro-gbias", &mekf::GBIAS_X_DEG_S),
-            SeriesKey::new("st-gyro-gbias", &mekf::GBIAS_Y_DEG_S),
-            SeriesKey::new("st-gyro-reduced", &mekf::GBIAS_X_DEG_S),
-            SeriesKey::new("st-gyro-reduced", &mekf::GBIAS_Y_DEG_S),
-        ],
-    ),
-    Figure::new(
-        "Magnetometer bias: truth and estimate (Fig. 7)",
-        &[
-            SeriesKey::sensors(&sensors::MAG_BIAS[0]),
-            SeriesKey::sensors(&sensors::MAG_BIAS[2]),
-            SeriesKey::new("mag-sun-gyro-mbias", &mekf::MBIAS_X_NT),
-            SeriesKey::new("mag-sun-gyro-mbias", &mekf::MBIAS_Z_NT),
-        ],
-    ),
-    Figure::new(
-        "Disturbance estimates (Fig. 8)",
-        &[
-            SeriesKey::new("mag-sun-dist", &mekf::D_X_S2),
-            SeriesKey::new("mag-sun-dist", &mekf::D_Y_S2),
-            SeriesKey::new("mag-sun-dist", &mekf::D_Z_S2),
-            SeriesKey::new("st-dist", &mekf::D_X_S2),
-        ],
-    ),
-    Figure::new(
-        "Consistency: NEES of the attitude (χ²₃: 95 % in 0.22…9.35)",
-        &[
-            SeriesKey::nees_att("st-gyro"),
-            SeriesKey::nees_att("mag-sun-gyro"),
-            SeriesKey::nees_att("mag-sun"),
-            SeriesKey::nees_att("mag-gyro"),
-            SeriesKey::nees_att("st"),
-        ],
-    )
-    .log(),
-    Figure::new(
-        "P diagonal, ST+Gyro and Mag+Sun+Gyro (log; attitude rad², rate rad²/s²)",
-        &[
-            SeriesKey::variance("st-gyro", &mekf::ATT_X),
-            SeriesKey::variance("st-gyro", &mekf::ATT_Y),
-            SeriesKey::variance("st-gyro", &mekf::ATT_Z),
-            SeriesKey::variance("st-gyro", &mekf::RATE_X),
-            SeriesKey::variance("st-gyro", &mekf::RATE_Y),
-            SeriesKey::variance("st-gyro", &mekf::RATE_Z),
-            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_X),
-            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_Y),
-            SeriesKey::variance("mag-sun-gyro", &mekf::ATT_Z),
-        ],
-    )
-    .log(),
-    Figure::new(
-        "NIS per update",
-        &[
-            SeriesKey::new("st-gyro", &mekf::NIS),
-            SeriesKey::new("mag-sun-gyro", &mekf::NIS),
-            SeriesKey::new("mag-sun", &mekf::NIS),
-            SeriesKey::new("mag-gyro", &mekf::NIS),
-        ],
-    )
-    .log(),
-    Figure::new(
-        "Outages: eclipse, sun seen, star tracker",
-        &[
-            SeriesKey::sensors(&sensors::ECLIPSE),
-            SeriesKey::sensors(&sensors::SUN_SEEN),
-            SeriesKey::sensors(&sensors::STAR_AVAILABLE),
-        ],
-    ),
-    Figure::new(
-        "Wheel momentum",
-        &[
-            SeriesKey::truth(&truth::WHEEL_H[0]),
-            SeriesKey::truth(&truth::WHEEL_H[1]),
-            SeriesKey::truth(&truth::WHEEL_H[2]),
-        ],
-    ),
-    Figure::new(
-        "Constant gain against its EKF (§3.3, Table 5)",
-        &[
-            SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
-            SeriesKey::new("mag-sun-gyro-const", &q::ERR_DEG),
-            SeriesKey::new("st-gyro", &q::ERR_DEG),
-            SeriesKey::new("st-gyro-const", &q::ERR_DEG),
-        ],
-    )
-    .log(),
-];
-
-const PRESETS: &[Preset] = &[
-    Preset {
-        name: "no model error",
-        help: "The onboard field model equals the truth",
-        values: &[("onboard_field", 0.0)],
-    },
-    Preset {
-        name: "model error 400 nT",
-        help: "The paper's 'errors up to 400 nT' of the onboard field model",
-        values: &[("onboard_field", 2.0), ("model_error_nt", 400.0)],
-    },
-    Preset {
-        name: "star tracker blinded",
-        help: "A 90° sun exclusion: the star tracker is out whenever the sun is above the horizon of its boresight",
-        values: &[("star_sun_exclusion_deg", 90.0)],
-    },
-    Preset {
-        name: "noon–midnight orbit (long eclipse)",
-        help: "Ascending node at 12 h: the longest eclipse, the sun sensors dark for a third of the orbit (Reset)",
-        values: &[("ltan_h", 12.0)],
-    },
-    Preset {
-        name: "dawn–dusk orbit (no eclipse)",
-        help: "Ascending node at 18 h: the sun is always seen (Reset)",
-        values: &[("ltan_h", 18.0)],
-    },
-    Preset {
-        name: "sun ∥ field",
-        help: "The sun half a degree from the field direction: the vector filters without a star tracker lose the rotation about it and say so",
-        values: &[("sun_along_field", 1.0), ("sun_field_angle_deg", 0.5)],
-    },
-    Preset {
-        name: "gyro + one vector (drift)",
-        help: "A gyro bias of 0.02 °/s; Mag+Gyro sees the field only, and with the sun heads narrowed to ±10° Mag+Sun+Gyro mostly does too — pick one as the ghost: the unobservable axis is drawn on the body, the drift about it shows on the error plots",
-        values: &[("gyro_bias_deg_s", 0.02), ("sun_fov_deg", 10.0)],
-    },
-    Preset {
-        name: "sensors at 10 Hz",
-        help: "Every sensor at the prediction rate: errors shrink roughly with √rate",
-        values: &[
-            ("vector_rate_hz", 10.0),
-            ("gyro_rate_hz", 10.0),
-            ("star_rate_hz", 10.0),
-        ],
-    },
-    Preset {
-        name: "constant gain (§3.3)",
-        help: "The gains freeze at 60 s. The field and the sun then turn in the body frame along the orbit: within minutes the frozen Mag+Sun+Gyro gain loses the attitude while its EKF keeps tracking, and a star-tracker set's frozen gain stays its EKF's (see the constant-gain plot)",
-        values: &[("freeze_after_s", 60.0)],
-    },
 ];
 
 /// The tuning of filter row `row` with the lab's parameters.
@@ -292,6 +112,9 @@ fn tuning(p: &ParamValues, q: [f64; 3]) -> MekfTuning {
     }
 }
 
+/// The initial σ of a magnetometer bias modelled as a turn of the field (rad): 3°, ours.
+const MTURN_P0_RAD: f64 = 3.0 * std::f64::consts::PI / 180.0;
+
 /// A diagonal initial covariance for `states`: attitude σ `att_rad` (rotation angle), rate
 /// 0.1 °/s, gyro bias 0.05 °/s, magnetometer bias 3000 nT (the size of a bias a student
 /// is likely to set; the filter does not know the truth's).
@@ -314,6 +137,10 @@ fn p0<const N: usize>(states: StateSet, att_rad: f64) -> SMatrix<f64, N, N> {
         StateSet::AttRateMagBias => {
             (3..6).for_each(|i| d[i] = rate);
             (6..9).for_each(|i| d[i] = mbias);
+        }
+        StateSet::AttRateMagTurn => {
+            (3..6).for_each(|i| d[i] = rate);
+            (6..9).for_each(|i| d[i] = MTURN_P0_RAD.powi(2));
         }
         StateSet::AttGyroBias => (3..6).for_each(|i| d[i] = gbias),
     }

@@ -166,6 +166,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     biases(&mut rows)?;
     disturbance(&mut rows, &all)?;
     rows.extend(super::constant_gain::rows()?);
+    rows.extend(super::fig7::rows()?);
     Ok(Reproduction {
         lab: "p2".into(),
         rows,

@@ -49,6 +49,24 @@ pub(super) const MAG_BIAS: [Quantity; 3] = [
     Quantity::new("mag_bias_y_nt", "true magnetometer bias Δb_y", "nT"),
     Quantity::new("mag_bias_z_nt", "true magnetometer bias Δb_z", "nT"),
 ];
+/// The magnetometer's true bias as a turn of the field (deg; Fig. 7's model).
+pub(super) const MAG_TURN: [Quantity; 3] = [
+    Quantity::new(
+        "mag_turn_x_deg",
+        "true magnetometer bias: turn about x",
+        "deg",
+    ),
+    Quantity::new(
+        "mag_turn_y_deg",
+        "true magnetometer bias: turn about y",
+        "deg",
+    ),
+    Quantity::new(
+        "mag_turn_z_deg",
+        "true magnetometer bias: turn about z",
+        "deg",
+    ),
+];
 
 /// Sun-sensor head boresights (body axes).
 const SUN_HEADS: [[f64; 3]; 5] = [
@@ -128,6 +146,8 @@ pub struct Sensors {
     star_clock: Clock,
     mag_sigma_nt: f64,
     mag_bias_nt: Vector3<f64>,
+    /// The field's turn in the magnetometer (rotation vector, rad).
+    mag_turn_rad: Vector3<f64>,
     sun_sigma_rad: f64,
     sun_fov_rad: f64,
     gyro_sigma_rad_s: f64,
@@ -162,6 +182,7 @@ impl Sensors {
             star_clock: Clock::new(1.0, dt_s),
             mag_sigma_nt: 0.0,
             mag_bias_nt: Vector3::zeros(),
+            mag_turn_rad: Vector3::zeros(),
             sun_sigma_rad: 0.0,
             sun_fov_rad: 0.0,
             gyro_sigma_rad_s: 0.0,
@@ -246,7 +267,8 @@ impl Sensors {
         let noise = WhiteNoise {
             sigma: self.mag_sigma_nt,
         };
-        let b = q_orbit_from_body.inverse_transform_vector(b_true_orbit)
+        let turn = UnitQuaternion::from_scaled_axis(self.mag_turn_rad);
+        let b = turn * q_orbit_from_body.inverse_transform_vector(b_true_orbit)
             + self.mag_bias_nt
             + Vector3::from_fn(|_, _| noise.sample(rng));
         b.iter()
@@ -355,7 +377,9 @@ impl SensorModel for Sensors {
             _ => FieldModel::WmmWithError(p.get("model_error_nt")),
         };
         self.mag_sigma_nt = p.get("mag_noise_nt");
-        self.mag_bias_nt = Vector3::from(MAG_BIAS_DIRECTION).normalize() * p.get("mag_bias_nt");
+        let direction = Vector3::from(MAG_BIAS_DIRECTION).normalize();
+        self.mag_bias_nt = direction * p.get("mag_bias_nt");
+        self.mag_turn_rad = direction * p.get("mag_turn_deg").to_radians();
         self.sun_sigma_rad = p.get("sun_noise_deg").to_radians();
         self.sun_fov_rad = p.get("sun_fov_deg").to_radians();
         self.gyro_sigma_rad_s = p.get("gyro_noise_deg_s").to_radians();
@@ -444,6 +468,7 @@ impl SensorModel for Sensors {
             .iter()
             .chain(&GYRO_BIAS)
             .chain(&MAG_BIAS)
+            .chain(&MAG_TURN)
             .map(|q| SeriesSpec::of(SeriesKey::sensors(q), SeriesGroup::Lab))
             .collect()
     }
@@ -466,5 +491,6 @@ impl SensorModel for Sensors {
         out.put(&STAR_AVAILABLE, flag(star));
         out.put_all(&GYRO_BIAS, b.iter().map(|v| v.to_degrees()));
         out.put_all(&MAG_BIAS, self.mag_bias_nt.iter().copied());
+        out.put_all(&MAG_TURN, self.mag_turn_rad.iter().map(|v| v.to_degrees()));
     }
 }

@@ -353,6 +353,23 @@ pub const FILTERS: &[FilterRow] = &[
         Some(0.1),
         None,
     ),
+    // Fig. 7's run: set 7 with the magnetometer bias as a small turn of the field (deg),
+    // starting as set 7 does. Its q is ours (1e-6 rad per step for the turn).
+    FilterRow {
+        starts_as: Some("mag-sun-gyro-mbias"),
+        ..row(
+            cfg(
+                "mag-sun-gyro-mturn",
+                "7′ Mag+Sun+Gyro [λ,ω,Δb as a turn of the field] (Fig. 7)",
+                set(false, true, true, true),
+                StateSet::AttRateMagTurn,
+            ),
+            [5e-6, 5e-4, 1e-6],
+            false,
+            None,
+            None,
+        )
+    },
 ];
 
 /// The row of filter `id`.
