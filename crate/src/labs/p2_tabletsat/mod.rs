@@ -8,6 +8,7 @@ mod constant_gain;
 mod fig7;
 mod lesson;
 mod page;
+mod table4;
 use page::{FIGURES, PRESETS};
 mod metrics;
 mod reproduce;

@@ -64,12 +64,13 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
-        "Disturbance estimates (Fig. 8)",
+        "Disturbance estimates against the truth (Fig. 8, Table 4)",
         &[
-            SeriesKey::new("mag-sun-dist", &mekf::D_X_S2),
-            SeriesKey::new("mag-sun-dist", &mekf::D_Y_S2),
-            SeriesKey::new("mag-sun-dist", &mekf::D_Z_S2),
+            SeriesKey::truth(&truth::DIST_TRUE[0]),
             SeriesKey::new("st-dist", &mekf::D_X_S2),
+            SeriesKey::new("st-gyro-gbias-dist", &mekf::D_X_S2),
+            SeriesKey::new("mag-sun-dist", &mekf::D_X_S2),
+            SeriesKey::new("mag-sun-gyro-gbias-dist", &mekf::D_X_S2),
         ],
     ),
     Figure::new(

@@ -167,6 +167,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     disturbance(&mut rows, &all)?;
     rows.extend(super::constant_gain::rows()?);
     rows.extend(super::fig7::rows()?);
+    rows.extend(super::table4::rows()?);
     Ok(Reproduction {
         lab: "p2".into(),
         rows,

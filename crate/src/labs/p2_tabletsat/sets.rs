@@ -148,6 +148,42 @@ const MAG_SUN: FilterRow = row(
     None,
 );
 
+/// Table 2's mag sun gyro gbias, the base of its Table 4 variant.
+const MAG_SUN_GYRO_GBIAS: FilterRow = row(
+    cfg(
+        "mag-sun-gyro-gbias",
+        "6 Mag+Sun+Gyro [λ,ω,Δω]",
+        set(false, true, true, true),
+        StateSet::AttRateGyroBias,
+    ),
+    [1e-6, 3e-3, 1e-7],
+    false,
+    Some(2e-2),
+    None,
+);
+
+/// Filter `base` with the parallel disturbance filter (§3.2), as filter `id`: Table 4's
+/// accuracy where it is readable.
+const fn with_disturbance(
+    base: FilterRow,
+    id: &'static str,
+    label: &'static str,
+    att: Option<f64>,
+) -> FilterRow {
+    FilterRow {
+        config: MekfConfig {
+            id,
+            label,
+            disturbance: true,
+            ..base.config
+        },
+        paper_att_deg: att,
+        paper_rate_deg_s: None,
+        starts_as: Some(base.config.id),
+        ..base
+    }
+}
+
 /// Filter `base` with its gain frozen (§3.3), as filter `id`: the same sensors, states and
 /// q, Table 5's accuracy where it is readable.
 const fn frozen(
@@ -223,18 +259,7 @@ pub const FILTERS: &[FilterRow] = &[
         Some(6e-4),
     ),
     MAG_SUN_GYRO,
-    row(
-        cfg(
-            "mag-sun-gyro-gbias",
-            "6 Mag+Sun+Gyro [λ,ω,Δω]",
-            set(false, true, true, true),
-            StateSet::AttRateGyroBias,
-        ),
-        [1e-6, 3e-3, 1e-7],
-        false,
-        Some(2e-2),
-        None,
-    ),
+    MAG_SUN_GYRO_GBIAS,
     MAG_SUN_GYRO_MBIAS,
     row(
         cfg(
@@ -352,6 +377,20 @@ pub const FILTERS: &[FilterRow] = &[
         "Mag+Sun [λ,ω] constant gain (Table 5)",
         Some(0.1),
         None,
+    ),
+    // Table 4's two gyro sets with the disturbance filter (the two without a gyro are
+    // "mag-sun-dist" and "st-dist" above).
+    with_disturbance(
+        ST_GYRO_GBIAS,
+        "st-gyro-gbias-dist",
+        "ST+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
+        Some(8e-4),
+    ),
+    with_disturbance(
+        MAG_SUN_GYRO_GBIAS,
+        "mag-sun-gyro-gbias-dist",
+        "Mag+Sun+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
+        Some(2e-2),
     ),
     // Fig. 7's run: set 7 with the magnetometer bias as a small turn of the field (deg),
     // starting as set 7 does. Its q is ours (1e-6 rad per step for the turn).

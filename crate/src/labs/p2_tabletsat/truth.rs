@@ -28,6 +28,13 @@ pub(super) const WHEEL_H: [Quantity; 3] = [
     Quantity::new("wheel_h_z_n_m_s", "wheel momentum h_z", "N·m·s"),
 ];
 
+/// The unmodelled disturbance as the filters' d = J⁻¹M_d (1/s²), truth series.
+pub(super) const DIST_TRUE: [Quantity; 3] = [
+    Quantity::new("dist_x_s2", "true disturbance d_x = (J⁻¹M_d)_x", "1/s²"),
+    Quantity::new("dist_y_s2", "true disturbance d_y = (J⁻¹M_d)_y", "1/s²"),
+    Quantity::new("dist_z_s2", "true disturbance d_z = (J⁻¹M_d)_z", "1/s²"),
+];
+
 /// Largest momentum of one wheel (N·m·s), paper 2 §1.
 pub const WHEEL_MAX_N_M_S: f64 = 0.17;
 
@@ -106,6 +113,15 @@ impl Spacecraft {
         s
     }
 
+    /// The unmodelled torque M_d at time `t` (N·m, body axes).
+    fn disturbance_torque(&self, t: f64) -> Vector3<f64> {
+        if t >= self.disturbance_from_s {
+            Vector3::from(DISTURBANCE_DIRECTION).normalize() * self.disturbance_n_m
+        } else {
+            Vector3::zeros()
+        }
+    }
+
     /// The closed loop at (q, ω, h) at time t: J ω̇ = M_gg + M_d − K_λλ − K_ω ω_rel, with the
     /// wheels taking ḣ = K_λλ + K_ω ω_rel − ω × (Jω + h) (the paper's law, which cancels the
     /// gyroscopic term), held at zero on a saturated wheel.
@@ -118,11 +134,7 @@ impl Spacecraft {
         }
         let eta = q.inverse_transform_vector(&Vector3::z());
         let m_gg = eta.cross(&(self.j * eta)) * self.orbit.gravity_gradient_coeff();
-        let m_d = if t >= self.disturbance_from_s {
-            Vector3::from(DISTURBANCE_DIRECTION).normalize() * self.disturbance_n_m
-        } else {
-            Vector3::zeros()
-        };
+        let m_d = self.disturbance_torque(t);
         let mut h_dot = lambda * self.k_att + w_rel * self.k_rate - w.cross(&(self.j * w + h));
         for i in 0..3 {
             if (h[i] >= WHEEL_MAX_N_M_S && h_dot[i] > 0.0)
@@ -211,11 +223,14 @@ impl TruthModel for Spacecraft {
     fn extra_series(&self) -> Vec<SeriesSpec> {
         WHEEL_H
             .iter()
+            .chain(&DIST_TRUE)
             .map(|q| SeriesSpec::of(SeriesKey::truth(q), SeriesGroup::Lab))
             .collect()
     }
 
     fn extra_values(&self, out: &mut Extras<'_>) {
         out.put_all(&WHEEL_H, self.h.iter().copied());
+        let d = self.j_inv * self.disturbance_torque(self.t_s);
+        out.put_all(&DIST_TRUE, d.iter().copied());
     }
 }
