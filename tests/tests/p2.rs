@@ -89,3 +89,37 @@ fn a_blinded_star_tracker_and_the_eclipse_show_as_outages() {
         .any(|(e, s)| *e > 0.5 && *s > 0.5);
     assert!(!both);
 }
+
+/// Table 5's (λ, ω, d) rows: with the gain frozen before the torque is switched on, the
+/// disturbance filter behind the frozen gain still finds d = J⁻¹M_d. Were it frozen with the
+/// gain, d̂ would stay at the zero it had before the step and its error would be |d|.
+#[test]
+fn the_disturbance_filter_keeps_running_behind_a_frozen_gain() {
+    let axes = ["x", "y", "z"];
+    let mut names: Vec<String> = axes.iter().map(|a| format!("truth.dist_{a}_s2")).collect();
+    names.extend(axes.iter().map(|a| format!("st-dist-const.d_{a}_s2")));
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let set = ["freeze_after_s=20", "dist_from_s=60"];
+    let t = trace("p2", &set, 1, 300.0, &refs);
+    let last_minute = |name: &str| -> Vec<f64> {
+        let v = t.series(name).unwrap();
+        v[v.len() - v.len() / 5..].to_vec()
+    };
+    let (mut size, mut worst) = (0.0_f64, 0.0_f64);
+    for a in axes {
+        let truth = last_minute(&format!("truth.dist_{a}_s2"));
+        let est = last_minute(&format!("st-dist-const.d_{a}_s2"));
+        let err: Vec<f64> = est.iter().zip(&truth).map(|(e, t)| e - t).collect();
+        size += stats::rms(&truth).unwrap().powi(2);
+        worst = worst.max(stats::rms(&err).unwrap());
+    }
+    let size = size.sqrt();
+    assert!(
+        size > 1e-7,
+        "the torque's d is {size} s⁻²: the step did not happen"
+    );
+    assert!(
+        worst < 0.25 * size,
+        "d̂ − d {worst} s⁻² behind the frozen gain, against |d| = {size} s⁻²"
+    );
+}

@@ -49,10 +49,31 @@ impl<const N: usize> Mekf<N> {
         if has_omega {
             self.omega = w0 + (k1w + k2w * 2.0 + k3w * 2.0 + k4w) * (dt / 6.0);
         }
-        if self.gains.is_some() {
-            return; // constant gain: no covariance propagation (§3.3)
+        // A constant gain propagates no covariance (§3.3); a disturbance filter behind it
+        // still needs the sensitivity S, so F.
+        let frozen = self.gains.is_some();
+        if frozen && self.dist.is_none() {
+            return;
         }
         let f = self.jacobian(&w0, ob);
+        if !frozen {
+            self.propagate_covariance(&f, has_omega, dt);
+        }
+        if self.dist.is_some() {
+            // A constant d moves δω by d·dt and δλ (half angle) by d·dt²/4 per step.
+            let mut gamma = SMatrix::<f64, N, 3>::zeros();
+            if let Some(o) = self.cfg.states.omega() {
+                for i in 0..3 {
+                    gamma[(i, i)] = dt * dt / 4.0;
+                    gamma[(o + i, i)] = dt;
+                }
+            }
+            self.dist_sens += sparse_mul(&f, &self.dist_sens) * dt + gamma;
+        }
+    }
+
+    /// P ← Φ P Φᵀ + Q for Φ = E + F·dt.
+    fn propagate_covariance(&mut self, f: &SMatrix<f64, N, N>, has_omega: bool, dt: f64) {
         let t = self.tuning;
         let mut q = SVector::<f64, N>::zeros();
         let gyro_att = if has_omega {
@@ -77,20 +98,9 @@ impl<const N: usize> Mekf<N> {
             }
         }
         // Φ P Φᵀ for Φ = E + F·dt from F's block structure, then the diagonal Q.
-        self.p = propagate_first_order(&self.p, &f, dt);
+        self.p = propagate_first_order(&self.p, f, dt);
         for i in 0..N {
             self.p[(i, i)] += q[i];
-        }
-        if self.dist.is_some() {
-            // A constant d moves δω by d·dt and δλ (half angle) by d·dt²/4 per step.
-            let mut gamma = SMatrix::<f64, N, 3>::zeros();
-            if let Some(o) = self.cfg.states.omega() {
-                for i in 0..3 {
-                    gamma[(i, i)] = dt * dt / 4.0;
-                    gamma[(o + i, i)] = dt;
-                }
-            }
-            self.dist_sens += sparse_mul(&f, &self.dist_sens) * dt + gamma;
         }
     }
 

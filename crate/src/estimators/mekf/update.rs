@@ -126,6 +126,14 @@ impl<const N: usize> Mekf<N> {
             let residual = r - h.dot(&err.x);
             if let Some(gains) = &self.gains {
                 if let Some(g) = gains[k] {
+                    // Table 5's (λ, ω, d) rows: the disturbance filter keeps running behind
+                    // the frozen gain, its innovation variance from the frozen P.
+                    if let Some(d) = &mut self.dist {
+                        let hd = self.dist_sens.transpose() * h;
+                        let s = h.dot(&(self.p * h)) + *var;
+                        disturbance_update(d, residual, &hd, s * self.tuning.rd_scale);
+                        self.dist_sens -= g * hd.transpose();
+                    }
                     err.x += g * residual;
                 }
                 continue;

@@ -4,10 +4,12 @@
 //! (Table 1) feed every EKF variant of Table 2 at once, beside the reduced [λ, Δω] variant,
 //! the parallel disturbance filter (§3.2) and the constant-gain filter (§3.3).
 
+mod accuracy;
 mod constant_gain;
 mod fig7;
 mod lesson;
 mod page;
+mod paper_tables;
 mod table4;
 use page::{FIGURES, PRESETS};
 mod metrics;
@@ -30,7 +32,7 @@ use sensors::{FIELD_MODELS, STAR_READINGS, Sensors};
 use sets::FILTERS;
 use truth::Spacecraft;
 
-pub use reproduce::{FilterAccuracy, accuracy};
+pub use accuracy::{FilterAccuracy, accuracy};
 
 /// The paper-2 lab.
 pub struct TabletSat;

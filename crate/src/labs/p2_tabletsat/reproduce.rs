@@ -10,127 +10,16 @@
 // `reproduce` uses is left out (the page's wasm).
 #![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
+use super::accuracy::{RUN_S, Runs, acc_of, run_all};
 use super::sensors::{GYRO_BIAS, MAG_BIAS};
-use super::sets::{FILTERS, FilterRow};
 use super::{PARAMS, TabletSat};
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::mekf;
 use crate::model::{
-    Calibration, Expectation, Lab, ParamValues, Quantity, Reproduction, Row, SENSITIVITY_FACTORS,
-    SeriesKey, StateInfo, q,
+    Calibration, Expectation, Lab, ParamValues, Reproduction, Row, SENSITIVITY_FACTORS, SeriesKey,
 };
-
-/// Run length (s) and the window σ is taken over (the last 60 s).
-const RUN_S: f64 = 200.0;
-const WINDOW_FROM_S: f64 = 140.0;
-
-/// One filter's accuracy over one run.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct FilterAccuracy {
-    /// Largest per-axis RMS attitude error over the window (deg).
-    pub att_rms_deg: f64,
-    /// Per-axis RMS attitude errors (deg).
-    pub att_axes_deg: [f64; 3],
-    /// Largest per-axis RMS rate error over the window (deg/s).
-    pub rate_rms_deg_s: f64,
-    /// Per-axis RMS rate errors (deg/s).
-    pub rate_axes_deg_s: [f64; 3],
-    /// √max diag P of the attitude at the end (deg, rotation angle).
-    pub att_p_deg: f64,
-    /// √max diag P of the rate at the end (deg/s), NaN without a rate state.
-    pub rate_p_deg_s: f64,
-    /// Mean NEES of the attitude over the window (3 degrees of freedom).
-    pub nees_mean: f64,
-}
-
-fn series_of(id: &'static str, has_rate_state: bool) -> Vec<SeriesKey> {
-    let mut s: Vec<SeriesKey> = ATT_ERRORS.iter().map(|q| SeriesKey::new(id, q)).collect();
-    s.extend(ATT_STATES.iter().map(|st| SeriesKey::variance(id, st)));
-    s.push(SeriesKey::nees_att(id));
-    s.extend(RATE_ERRORS.iter().map(|q| SeriesKey::new(id, q)));
-    if has_rate_state {
-        s.extend(RATE_STATES.iter().map(|st| SeriesKey::variance(id, st)));
-    }
-    s
-}
-
-/// The attitude errors about body x, y, z.
-const ATT_ERRORS: [&Quantity; 3] = [&q::ERR_X_DEG, &q::ERR_Y_DEG, &q::ERR_Z_DEG];
-/// The rate errors about body x, y, z.
-const RATE_ERRORS: [&Quantity; 3] = [
-    &q::RATE_ERR_X_DEG_S,
-    &q::RATE_ERR_Y_DEG_S,
-    &q::RATE_ERR_Z_DEG_S,
-];
-/// The filters' attitude states.
-const ATT_STATES: [&StateInfo; 3] = [&mekf::ATT_X, &mekf::ATT_Y, &mekf::ATT_Z];
-/// The filters' rate states (not in the reduced filter).
-const RATE_STATES: [&StateInfo; 3] = [&mekf::RATE_X, &mekf::RATE_Y, &mekf::RATE_Z];
-
-/// The accuracy of filter `id` in `trace`.
-pub fn accuracy(trace: &Trace, id: &'static str) -> Result<FilterAccuracy, AnalysisError> {
-    let rms_axes = |quantities: [&'static Quantity; 3]| -> Result<[f64; 3], AnalysisError> {
-        let mut out = [0.0; 3];
-        for (o, q) in out.iter_mut().zip(quantities) {
-            let key = SeriesKey::new(id, q);
-            *o = stats::rms(&trace.after(key, WINDOW_FROM_S)?).of(&key.name())?;
-        }
-        Ok(out)
-    };
-    let att = rms_axes(ATT_ERRORS)?;
-    let rate = rms_axes(RATE_ERRORS)?;
-    let p_max = |states: [&'static StateInfo; 3]| -> Result<f64, AnalysisError> {
-        let mut v = Vec::new();
-        for st in states {
-            v.push(trace.last(SeriesKey::variance(id, st))?);
-        }
-        Ok(stats::max(&v).of("variances")?.sqrt().to_degrees())
-    };
-    let rate_p = match trace.series(SeriesKey::variance(id, &mekf::RATE_X)) {
-        Ok(_) => p_max(RATE_STATES)?,
-        Err(_) => f64::NAN,
-    };
-    Ok(FilterAccuracy {
-        att_rms_deg: stats::max(&att).of("attitude σ")?,
-        att_axes_deg: att,
-        rate_rms_deg_s: stats::max(&rate).of("rate σ")?,
-        rate_axes_deg_s: rate,
-        att_p_deg: p_max(ATT_STATES)?,
-        rate_p_deg_s: rate_p,
-        nees_mean: stats::mean(&trace.after(SeriesKey::nees_att(id), WINDOW_FROM_S)?).of("NEES")?,
-    })
-}
-
-/// A 200-s run of every filter with `assignments`, and each one's accuracy.
-pub(super) fn run_all(
-    assignments: &[&str],
-    seed: u64,
-) -> Result<Vec<(&'static FilterRow, FilterAccuracy)>, AnalysisError> {
-    let keys: Vec<SeriesKey> = FILTERS
-        .iter()
-        .flat_map(|f| {
-            series_of(
-                f.config.id,
-                f.config.states != crate::estimators::StateSet::AttGyroBias,
-            )
-        })
-        .collect();
-    let lab: &'static dyn Lab = &TabletSat;
-    let trace = run_trace(lab, assignments, seed, RUN_S, &keys)?;
-    FILTERS
-        .iter()
-        .map(|f| Ok((f, accuracy(&trace, f.config.id)?)))
-        .collect()
-}
-
-pub(super) fn acc_of<'a>(all: &'a Runs, id: &str) -> Result<&'a FilterAccuracy, AnalysisError> {
-    all.iter()
-        .find(|(f, _)| f.config.id == id)
-        .map(|(_, a)| a)
-        .ok_or_else(|| AnalysisError::UnknownSeries(format!("no filter `{id}`")))
-}
 
 /// Seconds after which |estimate − truth| of a bias stays below `tol` (NaN if never).
 fn convergence_time(
@@ -159,7 +48,7 @@ fn convergence_time(
 /// The reproduction table.
 pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     let all = run_all(&[], 1)?;
-    let mut rows = table3_rows(&all);
+    let mut rows = super::paper_tables::rows(&all)?;
     rows.extend(hierarchy_rows(&all)?);
     rows.extend(super::metrics::rows(&all)?);
     rows.extend(per_axis_rows(&all)?);
@@ -185,55 +74,6 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
 fn att_sigma_with(id: &str, key: &str, value: f64) -> Result<f64, AnalysisError> {
     let set = format!("{key}={value}");
     Ok(acc_of(&run_all(&[&set], 1)?, id)?.att_rms_deg)
-}
-
-/// Every filter's run in the default scenario.
-pub(super) type Runs = [(&'static FilterRow, FilterAccuracy)];
-
-/// Table 3: each filter's measured σ, the paper's metric √max P∞, its rate σ and NEES.
-fn table3_rows(all: &Runs) -> Vec<Row> {
-    let mut rows = Vec::new();
-    for (f, a) in all {
-        let paper = match (f.paper_att_deg, f.paper_rate_deg_s) {
-            (Some(x), Some(r)) => format!("{x:e}° / {r:e} °/s"),
-            (Some(x), None) => format!("{x:e}° / (unreadable)"),
-            (None, Some(r)) => format!("(unreadable) / {r:e} °/s"),
-            (None, None) => "(unreadable)".into(),
-        };
-        let q = if f.q_from_paper {
-            "q from Table 3"
-        } else {
-            "q ours"
-        };
-        rows.push(Row::measurement(
-            format!("{}: attitude σ measured (last 60 s; {q})", f.config.label),
-            paper.clone(),
-            a.att_rms_deg,
-            "deg",
-        ));
-        rows.push(Row::measurement(
-            format!("{}: attitude √max P∞ (paper's metric)", f.config.label),
-            "—",
-            a.att_p_deg,
-            "deg",
-        ));
-        rows.push(Row::measurement(
-            format!("{}: rate σ measured", f.config.label),
-            "—",
-            a.rate_rms_deg_s,
-            "deg/s",
-        ));
-        rows.push(Row::measurement(
-            format!(
-                "{}: mean attitude NEES (χ²₃: 3 if consistent)",
-                f.config.label
-            ),
-            "— (the paper tuned Q by hand)",
-            a.nees_mean,
-            "",
-        ));
-    }
-    rows
 }
 
 /// The hierarchy of sensor sets the paper makes certain, and the two sets it gives numbers
@@ -286,35 +126,6 @@ fn hierarchy_rows(all: &Runs) -> Result<Vec<Row>, AnalysisError> {
         ms / mg,
         "",
     ));
-    rows.push(
-        Row::check("Mag+Sun+Gyro attitude σ", "2e-2° (Table 3)", msg, "deg", Expectation::within_factor_of(2e-2, 3.0)).known_to_differ(
-            "the gyro here is read at 1 Hz like the other sensors; the paper does not give its rate, and at 10 Hz (next row) the set is within 3×",
-        ),
-    );
-    let fast_gyro = Row::check(
-        "Mag+Sun+Gyro attitude σ, gyro read at 10 Hz",
-        "2e-2° (Table 3)",
-        att_sigma_with("mag-sun-gyro", "gyro_rate_hz", 10.0)?,
-        "deg",
-        Expectation::within_factor_of(2e-2, 3.0),
-    );
-    let gyro_rate = Calibration::new("gyro rate", 10.0, "Hz");
-    rows.extend(gyro_rate.rows(fast_gyro, |f| {
-        att_sigma_with("mag-sun-gyro", "gyro_rate_hz", 10.0 * f)
-    })?);
-    let defaults = ParamValues::defaults(PARAMS);
-    let vector_hz = defaults.get("vector_rate_hz");
-    let vector_rate = Calibration::new("magnetometer and sun-sensor rate", vector_hz, "Hz");
-    let mag_sun = Row::check(
-        "Mag+Sun attitude σ",
-        "0.12° (Table 3)",
-        ms,
-        "deg",
-        Expectation::within_factor_of(0.12, 3.0),
-    );
-    rows.extend(vector_rate.rows(mag_sun, |f| {
-        att_sigma_with("mag-sun", "vector_rate_hz", vector_hz * f)
-    })?);
     Ok(rows)
 }
 
@@ -442,10 +253,7 @@ fn biases(rows: &mut Vec<Row>) -> Result<(), AnalysisError> {
 }
 
 /// The disturbance filter's gain for Mag+Sun (paper: 0.12° → 0.03°).
-fn disturbance(
-    rows: &mut Vec<Row>,
-    all: &[(&'static FilterRow, FilterAccuracy)],
-) -> Result<(), AnalysisError> {
+fn disturbance(rows: &mut Vec<Row>, all: &Runs) -> Result<(), AnalysisError> {
     let plain = acc_of(all, "mag-sun")?.att_rms_deg;
     let with = acc_of(all, "mag-sun-dist")?.att_rms_deg;
     let check = Row::check(

@@ -16,6 +16,9 @@ pub struct FilterRow {
     pub paper_att_deg: Option<f64>,
     /// Table 3's rate σ (deg/s).
     pub paper_rate_deg_s: Option<f64>,
+    /// The table's accuracy of the bias the filter estimates (deg/s for a gyro bias, nT for
+    /// a magnetometer bias), where the OCR kept it.
+    pub paper_bias: Option<f64>,
     /// The filter whose initial error this one starts from (a constant-gain variant starts
     /// as its EKF, so that the two differ only after the freeze); `None`: its own.
     pub starts_as: Option<&'static str>,
@@ -60,6 +63,7 @@ const fn row(
         q_from_paper,
         paper_att_deg: att,
         paper_rate_deg_s: rate,
+        paper_bias: None,
         starts_as: None,
     }
 }
@@ -120,19 +124,22 @@ const MAG_SUN_GYRO: FilterRow = row(
     None,
 );
 
-/// Table 2's mag sun gyro mbias, the base of its constant-gain variant.
-const MAG_SUN_GYRO_MBIAS: FilterRow = row(
-    cfg(
-        "mag-sun-gyro-mbias",
-        "7 Mag+Sun+Gyro [λ,ω,Δb]",
-        set(false, true, true, true),
-        StateSet::AttRateMagBias,
-    ),
-    [5e-6, 5e-4, 5e-4],
-    false,
-    None,
-    None,
-);
+/// Table 2's mag sun gyro mbias, the base of its constant-gain variant (Δb to 400 nT).
+const MAG_SUN_GYRO_MBIAS: FilterRow = FilterRow {
+    paper_bias: Some(400.0),
+    ..row(
+        cfg(
+            "mag-sun-gyro-mbias",
+            "7 Mag+Sun+Gyro [λ,ω,Δb]",
+            set(false, true, true, true),
+            StateSet::AttRateMagBias,
+        ),
+        [5e-6, 5e-4, 5e-4],
+        false,
+        None,
+        None,
+    )
+};
 
 /// Table 2's mag sun, the base of its constant-gain variant.
 const MAG_SUN: FilterRow = row(
@@ -179,6 +186,7 @@ const fn with_disturbance(
         },
         paper_att_deg: att,
         paper_rate_deg_s: None,
+        paper_bias: None,
         starts_as: Some(base.config.id),
         ..base
     }
@@ -202,10 +210,64 @@ const fn frozen(
         },
         paper_att_deg: att,
         paper_rate_deg_s: rate,
+        paper_bias: None,
         starts_as: Some(base.config.id),
         ..base
     }
 }
+
+/// Mag+Sun with the parallel disturbance filter (§3.2; Table 4).
+const MAG_SUN_DIST: FilterRow = row(
+    MekfConfig {
+        disturbance: true,
+        ..cfg(
+            "mag-sun-dist",
+            "Mag+Sun [λ,ω] + disturbance filter (§3.2)",
+            set(false, false, true, true),
+            StateSet::AttRate,
+        )
+    },
+    [5e-6, 2e-6, 0.0],
+    false,
+    Some(3e-2),
+    None,
+);
+
+/// ST with the parallel disturbance filter (§3.2; Table 4).
+const ST_DIST: FilterRow = row(
+    MekfConfig {
+        disturbance: true,
+        ..cfg(
+            "st-dist",
+            "ST [λ,ω] + disturbance filter (§3.2)",
+            set(true, false, false, false),
+            StateSet::AttRate,
+        )
+    },
+    [1e-6, 1.2e-6, 0.0],
+    false,
+    Some(8e-4),
+    Some(1e-4),
+);
+
+/// Table 4's ST+Gyro [λ,ω,Δω] with the disturbance filter.
+const ST_GYRO_GBIAS_DIST: FilterRow = with_disturbance(
+    ST_GYRO_GBIAS,
+    "st-gyro-gbias-dist",
+    "ST+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
+    Some(8e-4),
+);
+
+/// Table 4's Mag+Sun+Gyro [λ,ω,Δω] with the disturbance filter (Δω to 5e-4 °/s).
+const MAG_SUN_GYRO_GBIAS_DIST: FilterRow = FilterRow {
+    paper_bias: Some(5e-4),
+    ..with_disturbance(
+        MAG_SUN_GYRO_GBIAS,
+        "mag-sun-gyro-gbias-dist",
+        "Mag+Sun+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
+        Some(2e-2),
+    )
+};
 
 /// Table 2's twelve sets (in the paper's order), the reduced variant, the disturbance and
 /// constant-gain filters.
@@ -246,18 +308,21 @@ pub const FILTERS: &[FilterRow] = &[
         Some(7e-4),
         Some(6e-4),
     ),
-    row(
-        cfg(
-            "st-mag-mbias",
-            "4 ST+Mag [λ,ω,Δb]",
-            set(true, false, true, false),
-            StateSet::AttRateMagBias,
-        ),
-        [1e-6, 1.2e-6, 1e-4],
-        true,
-        Some(7e-4),
-        Some(6e-4),
-    ),
+    FilterRow {
+        paper_bias: Some(80.0),
+        ..row(
+            cfg(
+                "st-mag-mbias",
+                "4 ST+Mag [λ,ω,Δb]",
+                set(true, false, true, false),
+                StateSet::AttRateMagBias,
+            ),
+            [1e-6, 1.2e-6, 1e-4],
+            true,
+            Some(7e-4),
+            Some(6e-4),
+        )
+    },
     MAG_SUN_GYRO,
     MAG_SUN_GYRO_GBIAS,
     MAG_SUN_GYRO_MBIAS,
@@ -289,36 +354,8 @@ pub const FILTERS: &[FilterRow] = &[
     ),
     ST,
     ST_GYRO_REDUCED,
-    row(
-        MekfConfig {
-            disturbance: true,
-            ..cfg(
-                "mag-sun-dist",
-                "Mag+Sun [λ,ω] + disturbance filter (§3.2)",
-                set(false, false, true, true),
-                StateSet::AttRate,
-            )
-        },
-        [5e-6, 2e-6, 0.0],
-        false,
-        Some(3e-2),
-        None,
-    ),
-    row(
-        MekfConfig {
-            disturbance: true,
-            ..cfg(
-                "st-dist",
-                "ST [λ,ω] + disturbance filter (§3.2)",
-                set(true, false, false, false),
-                StateSet::AttRate,
-            )
-        },
-        [1e-6, 1.2e-6, 0.0],
-        false,
-        Some(8e-4),
-        Some(1e-4),
-    ),
+    MAG_SUN_DIST,
+    ST_DIST,
     row(
         MekfConfig {
             constant_gain: true,
@@ -334,8 +371,7 @@ pub const FILTERS: &[FilterRow] = &[
         Some(1.5e-3),
         None,
     ),
-    // Table 5: the constant-gain variants whose states carry no disturbance (the (λ, ω, d)
-    // rows need the disturbance filter behind a frozen gain, which the lab does not run).
+    // Table 5: the constant-gain variants whose states carry no disturbance.
     frozen(
         ST,
         "st-const",
@@ -343,20 +379,26 @@ pub const FILTERS: &[FilterRow] = &[
         None,
         Some(4e-4),
     ),
-    frozen(
-        ST_GYRO_GBIAS,
-        "st-gyro-gbias-const",
-        "ST+Gyro [λ,ω,Δω] constant gain (Table 5)",
-        Some(1.5e-3),
-        Some(3e-4),
-    ),
-    frozen(
-        ST_GYRO_REDUCED,
-        "st-gyro-reduced-const",
-        "ST+Gyro [λ,Δω] constant gain (Table 5)",
-        Some(1.5e-3),
-        None,
-    ),
+    FilterRow {
+        paper_bias: Some(4e-4),
+        ..frozen(
+            ST_GYRO_GBIAS,
+            "st-gyro-gbias-const",
+            "ST+Gyro [λ,ω,Δω] constant gain (Table 5)",
+            Some(1.5e-3),
+            Some(3e-4),
+        )
+    },
+    FilterRow {
+        paper_bias: Some(3e-4),
+        ..frozen(
+            ST_GYRO_REDUCED,
+            "st-gyro-reduced-const",
+            "ST+Gyro [λ,Δω] constant gain (Table 5)",
+            Some(1.5e-3),
+            None,
+        )
+    },
     frozen(
         MAG_SUN_GYRO,
         "mag-sun-gyro-const",
@@ -380,18 +422,8 @@ pub const FILTERS: &[FilterRow] = &[
     ),
     // Table 4's two gyro sets with the disturbance filter (the two without a gyro are
     // "mag-sun-dist" and "st-dist" above).
-    with_disturbance(
-        ST_GYRO_GBIAS,
-        "st-gyro-gbias-dist",
-        "ST+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
-        Some(8e-4),
-    ),
-    with_disturbance(
-        MAG_SUN_GYRO_GBIAS,
-        "mag-sun-gyro-gbias-dist",
-        "Mag+Sun+Gyro [λ,ω,Δω] + disturbance filter (Table 4)",
-        Some(2e-2),
-    ),
+    ST_GYRO_GBIAS_DIST,
+    MAG_SUN_GYRO_GBIAS_DIST,
     // Fig. 7's run: set 7 with the magnetometer bias as a small turn of the field (deg),
     // starting as set 7 does. Its q is ours (1e-6 rad per step for the turn).
     FilterRow {
@@ -409,6 +441,38 @@ pub const FILTERS: &[FilterRow] = &[
             None,
         )
     },
+    // Table 5's (λ, ω, d) rows: the disturbance filter keeps running behind the frozen gain.
+    frozen(
+        ST_DIST,
+        "st-dist-const",
+        "ST [λ,ω,d] constant gain (Table 5)",
+        Some(8e-4),
+        Some(1e-4),
+    ),
+    frozen(
+        ST_GYRO_GBIAS_DIST,
+        "st-gyro-gbias-dist-const",
+        "ST+Gyro [λ,ω,Δω,d] constant gain (Table 5)",
+        Some(8e-4),
+        None,
+    ),
+    FilterRow {
+        paper_bias: Some(5e-4),
+        ..frozen(
+            MAG_SUN_GYRO_GBIAS_DIST,
+            "mag-sun-gyro-gbias-dist-const",
+            "Mag+Sun+Gyro [λ,ω,Δω,d] constant gain (Table 5)",
+            Some(2e-2),
+            None,
+        )
+    },
+    frozen(
+        MAG_SUN_DIST,
+        "mag-sun-dist-const",
+        "Mag+Sun [λ,ω,d] constant gain (Table 5)",
+        Some(3e-2),
+        None,
+    ),
 ];
 
 /// The row of filter `id`.
