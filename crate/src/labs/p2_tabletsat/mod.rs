@@ -7,6 +7,7 @@
 mod accuracy;
 mod constant_gain;
 mod fig7;
+mod filter_row;
 mod lesson;
 mod page;
 mod paper_tables;

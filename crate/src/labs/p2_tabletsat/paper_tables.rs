@@ -321,11 +321,7 @@ pub(super) fn rows(all: &Runs) -> Result<Vec<Row>, AnalysisError> {
                 rows.extend(value_rows(&v, a, &s)?);
             }
         }
-        let q = if f.q_from_paper {
-            "q from Table 3"
-        } else {
-            "q ours: the OCR lost Table 3's"
-        };
+        let q = f.q_from.label();
         rows.push(Row::measurement(
             format!(
                 "{}: mean attitude NEES (χ²₃: 3 if consistent; {q})",

@@ -63,7 +63,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
         notes: [
             "unstated in the paper and chosen here: circular sun-synchronous orbit 600 km, node at 10:30, 19 June 2026; WMM 2025 as the field; wheel gains K_λ = 5e-4, K_ω = 0.02; sensors at 1 Hz, EKF prediction at 10 Hz; P₀ from a 2° attitude error; star tracker 45° off zenith, away from the sun (it sees stars around the whole default orbit, as in the paper's runs); disturbance filter R_d = 100 × the row's innovation variance, α = 0.999 per second",
             "σ measured = RMS over the last 60 s of a 200-s run (mean included), largest axis; the paper's metric = √max diag P∞ (attitude as a rotation angle, 2λ)",
-            "where Table 3's q lost its exponent in the OCR the filter uses this project's q (marked 'q ours')",
+            "where Table 3's q lost its exponent in the OCR the filter uses this project's q (marked 'q ours'); where the OCR reads it but is unsure (Mag+Sun+Gyro's q, ST+Mag's q_Δb) the filter uses that reading and its NEES row says so",
         ]
         .map(String::from)
         .to_vec(),

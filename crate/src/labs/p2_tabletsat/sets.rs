@@ -3,26 +3,7 @@
 
 use crate::estimators::{MekfConfig, SensorSet, StateSet};
 
-/// One filter of the lab with the paper's tuning and results.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FilterRow {
-    /// What it is.
-    pub config: MekfConfig,
-    /// q_Λ, q_ω, q_bias per 0.1-s prediction step (the paper's Table 3 where it is readable).
-    pub q: [f64; 3],
-    /// Whether `q` is the paper's (true) or this project's choice where the OCR lost it.
-    pub q_from_paper: bool,
-    /// Table 3's attitude σ (deg) and rate σ (deg/s); `None` where the OCR lost the number.
-    pub paper_att_deg: Option<f64>,
-    /// Table 3's rate σ (deg/s).
-    pub paper_rate_deg_s: Option<f64>,
-    /// The table's accuracy of the bias the filter estimates (deg/s for a gyro bias, nT for
-    /// a magnetometer bias), where the OCR kept it.
-    pub paper_bias: Option<f64>,
-    /// The filter whose initial error this one starts from (a constant-gain variant starts
-    /// as its EKF, so that the two differ only after the freeze); `None`: its own.
-    pub starts_as: Option<&'static str>,
-}
+pub use super::filter_row::{FilterRow, QSource};
 
 const fn set(star: bool, gyro: bool, mag: bool, sun: bool) -> SensorSet {
     SensorSet {
@@ -53,14 +34,14 @@ const fn cfg(
 const fn row(
     config: MekfConfig,
     q: [f64; 3],
-    q_from_paper: bool,
+    q_from: QSource,
     att: Option<f64>,
     rate: Option<f64>,
 ) -> FilterRow {
     FilterRow {
         config,
         q,
-        q_from_paper,
+        q_from,
         paper_att_deg: att,
         paper_rate_deg_s: rate,
         paper_bias: None,
@@ -77,7 +58,7 @@ const ST: FilterRow = row(
         StateSet::AttRate,
     ),
     [1e-6, 1.2e-6, 0.0],
-    true,
+    QSource::Table3,
     Some(8e-4),
     Some(6e-4),
 );
@@ -91,7 +72,7 @@ const ST_GYRO_GBIAS: FilterRow = row(
         StateSet::AttRateGyroBias,
     ),
     [1e-6, 1.2e-6, 1e-8],
-    false,
+    QSource::Ours,
     Some(5e-4),
     Some(4e-4),
 );
@@ -105,7 +86,7 @@ const ST_GYRO_REDUCED: FilterRow = row(
         StateSet::AttGyroBias,
     ),
     [1e-6, 0.0, 1e-8],
-    false,
+    QSource::Ours,
     None,
     None,
 );
@@ -119,7 +100,7 @@ const MAG_SUN_GYRO: FilterRow = row(
         StateSet::AttRate,
     ),
     [5e-6, 5e-4, 0.0],
-    true,
+    QSource::Table3Uncertain,
     Some(2e-2),
     None,
 );
@@ -135,7 +116,7 @@ const MAG_SUN_GYRO_MBIAS: FilterRow = FilterRow {
             StateSet::AttRateMagBias,
         ),
         [5e-6, 5e-4, 5e-4],
-        false,
+        QSource::Ours,
         None,
         None,
     )
@@ -150,7 +131,7 @@ const MAG_SUN: FilterRow = row(
         StateSet::AttRate,
     ),
     [5e-6, 2e-6, 0.0],
-    false,
+    QSource::Ours,
     Some(0.12),
     None,
 );
@@ -164,7 +145,7 @@ const MAG_SUN_GYRO_GBIAS: FilterRow = row(
         StateSet::AttRateGyroBias,
     ),
     [1e-6, 3e-3, 1e-7],
-    false,
+    QSource::Ours,
     Some(2e-2),
     None,
 );
@@ -228,7 +209,7 @@ const MAG_SUN_DIST: FilterRow = row(
         )
     },
     [5e-6, 2e-6, 0.0],
-    false,
+    QSource::Ours,
     Some(3e-2),
     None,
 );
@@ -245,7 +226,7 @@ const ST_DIST: FilterRow = row(
         )
     },
     [1e-6, 1.2e-6, 0.0],
-    false,
+    QSource::Ours,
     Some(8e-4),
     Some(1e-4),
 );
@@ -280,7 +261,7 @@ pub const FILTERS: &[FilterRow] = &[
             StateSet::AttRate,
         ),
         [1e-6, 1.2e-6, 0.0],
-        true,
+        QSource::Table3,
         Some(5e-4),
         Some(4e-4),
     ),
@@ -292,7 +273,7 @@ pub const FILTERS: &[FilterRow] = &[
             StateSet::AttRate,
         ),
         [1e-6, 1.2e-6, 0.0],
-        true,
+        QSource::Table3,
         Some(5e-4),
         Some(4e-4),
     ),
@@ -304,7 +285,7 @@ pub const FILTERS: &[FilterRow] = &[
             StateSet::AttRate,
         ),
         [1e-6, 1.2e-6, 0.0],
-        true,
+        QSource::Table3,
         Some(7e-4),
         Some(6e-4),
     ),
@@ -318,7 +299,7 @@ pub const FILTERS: &[FilterRow] = &[
                 StateSet::AttRateMagBias,
             ),
             [1e-6, 1.2e-6, 1e-4],
-            true,
+            QSource::Table3Uncertain,
             Some(7e-4),
             Some(6e-4),
         )
@@ -334,7 +315,7 @@ pub const FILTERS: &[FilterRow] = &[
             StateSet::AttRate,
         ),
         [1e-6, 1.2e-6, 0.0],
-        true,
+        QSource::Table3,
         Some(5e-4),
         Some(4e-4),
     ),
@@ -348,7 +329,7 @@ pub const FILTERS: &[FilterRow] = &[
             StateSet::AttRate,
         ),
         [1e-6, 5e-6, 0.0],
-        false,
+        QSource::Ours,
         None,
         Some(5e-3),
     ),
@@ -367,7 +348,7 @@ pub const FILTERS: &[FilterRow] = &[
             )
         },
         [1e-6, 1.2e-6, 0.0],
-        true,
+        QSource::Table3,
         Some(1.5e-3),
         None,
     ),
@@ -436,7 +417,7 @@ pub const FILTERS: &[FilterRow] = &[
                 StateSet::AttRateMagTurn,
             ),
             [5e-6, 5e-4, 1e-6],
-            false,
+            QSource::Ours,
             None,
             None,
         )
