@@ -160,6 +160,8 @@ accuracy-paper-att = paper °
 accuracy-rate = σ rate °/s
 accuracy-rate-p = √P rate °/s
 accuracy-paper-rate = paper °/s
+accuracy-tab-all = all filters
+accuracy-tab-table = Table { $n }
 
 ## The laboratory mode
 replay-example = Replay the example log

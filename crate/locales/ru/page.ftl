@@ -160,6 +160,8 @@ accuracy-paper-att = статья °
 accuracy-rate = σ скор. °/с
 accuracy-rate-p = √P скор. °/с
 accuracy-paper-rate = статья °/с
+accuracy-tab-all = все фильтры
+accuracy-tab-table = Таблица { $n }
 
 ## Лабораторный режим
 replay-example = Воспроизвести пример записи

@@ -99,6 +99,9 @@ pub struct AccuracyTable {
     pub window_s: f64,
     /// The paper's (attitude σ in deg, rate σ in deg/s) for an estimator id, where given.
     pub paper: fn(&str) -> [Option<f64>; 2],
+    /// The number of the paper's table an estimator id's values are from (the page shows
+    /// one tab per table); `None`: in no table.
+    pub paper_table: fn(&str) -> Option<u8>,
 }
 
 /// One running instance of a lab.

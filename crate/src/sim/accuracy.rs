@@ -23,6 +23,8 @@ pub struct AccuracyRow {
     pub rate_p_deg_s: f64,
     /// The paper's (attitude deg, rate deg/s), where given.
     pub paper: [Option<f64>; 2],
+    /// The number of the paper's table the row's values are from, if any.
+    pub paper_table: Option<u8>,
 }
 
 /// Per-axis errors of one sample: attitude (deg) and rate (deg/s), NaN when not estimated.
@@ -83,6 +85,7 @@ impl AccuracyTracker {
                     att_p_deg: att_p,
                     rate_p_deg_s: rate_p,
                     paper: (self.table.paper)(e.id()),
+                    paper_table: (self.table.paper_table)(e.id()),
                 }
             })
             .collect()

@@ -5,6 +5,7 @@
 use super::{arg, lab_word, tr, tr_with};
 use crate::state::{AppState, Command, IoCommand, ViewCommand};
 use attlab::i18n;
+use attlab::sim::AccuracyRow;
 use egui::Ui;
 use egui_plot::{Line, Plot, Points};
 
@@ -37,6 +38,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ],
             );
             ui.label(egui::RichText::new(help).small());
+            let table = table_tabs(ui, app, &rows);
             egui::ScrollArea::horizontal().show(ui, |ui| {
                 egui::Grid::new("accuracy_table")
                     .striped(true)
@@ -55,6 +57,9 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                         }
                         ui.end_row();
                         for (i, r) in rows.iter().enumerate() {
+                            if table.is_some() && r.paper_table != table {
+                                continue;
+                            }
                             let selected = app.view().ghost_index == i;
                             // Row i is estimator i (source i + 1): its colour, as in every plot.
                             ui.horizontal(|ui| {
@@ -86,6 +91,32 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     });
             });
         });
+}
+
+/// One tab per table of the paper the rows' values are from, and one for every row, when
+/// the rows come from more than one table; returns the table shown (`None`: every row).
+fn table_tabs(ui: &mut Ui, app: &AppState, rows: &[AccuracyRow]) -> Option<u8> {
+    let mut tables: Vec<u8> = rows.iter().filter_map(|r| r.paper_table).collect();
+    tables.sort_unstable();
+    tables.dedup();
+    if tables.len() < 2 {
+        return None;
+    }
+    let id = egui::Id::unique(("accuracy_table_tab", app.sim().lab().id()));
+    let mut shown: Option<u8> = ui.data(|d| d.get_temp(id)).unwrap_or(Some(tables[0]));
+    ui.horizontal_wrapped(|ui| {
+        for tab in tables.iter().map(|t| Some(*t)).chain([None]) {
+            let name = match tab {
+                Some(n) => tr_with(app, "accuracy-tab-table", &[("n", arg(n.to_string()))]),
+                None => tr(app, "accuracy-tab-all"),
+            };
+            if ui.selectable_label(shown == tab, name).clicked() {
+                shown = tab;
+            }
+        }
+    });
+    ui.data_mut(|d| d.insert_temp(id, shown));
+    shown
 }
 
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit

@@ -12,6 +12,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 
 mod a11y;
+mod accuracy;
 mod keyboard;
 mod lessons;
 mod narrow;

@@ -1,7 +1,7 @@
 //! One filter row of paper 2's tables: the filter, its tuning, where the tuning comes from,
 //! and the accuracies the paper gives for it.
 
-use crate::estimators::MekfConfig;
+use crate::estimators::{MekfConfig, StateSet};
 
 /// Where a filter's q comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,6 +21,22 @@ impl QSource {
             Self::Table3 => "q from Table 3",
             Self::Table3Uncertain => "q from Table 3 where the OCR is unsure of it",
             Self::Ours => "q ours: the OCR lost Table 3's",
+        }
+    }
+}
+
+impl FilterRow {
+    /// The number of the paper's table this filter's values are from: 5 for a constant
+    /// gain, 4 with the disturbance filter, else 3; `None` for Fig. 7's turn model.
+    pub fn table(&self) -> Option<u8> {
+        if self.config.states == StateSet::AttRateMagTurn {
+            None
+        } else if self.config.constant_gain {
+            Some(5)
+        } else if self.config.disturbance {
+            Some(4)
+        } else {
+            Some(3)
         }
     }
 }

@@ -269,11 +269,12 @@ impl Lab for TabletSat {
 
     fn accuracy_table(&self) -> Option<AccuracyTable> {
         Some(AccuracyTable {
-            title: "Accuracy over the last 60 s beside the paper's Table 3",
+            title: "Accuracy over the last 60 s beside the paper's Tables 3–5",
             window_s: 60.0,
             paper: |id| {
                 sets::filter(id).map_or([None, None], |f| [f.paper_att_deg, f.paper_rate_deg_s])
             },
+            paper_table: |id| sets::filter(id).and_then(|f| f.table()),
         })
     }
 }

@@ -220,14 +220,9 @@ impl Metric {
 }
 
 /// Which table a filter's values are from.
-fn table_of(f: &FilterRow) -> &'static str {
-    if f.config.constant_gain {
-        "Table 5"
-    } else if f.config.disturbance {
-        "Table 4"
-    } else {
-        "Table 3"
-    }
+fn table_of(f: &FilterRow) -> String {
+    f.table()
+        .map_or_else(|| "—".into(), |n| format!("Table {n}"))
 }
 
 /// The converged scenario with its run length at `factor` of 1800 s: the gyro at 10 Hz,
