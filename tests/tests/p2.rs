@@ -123,3 +123,19 @@ fn the_disturbance_filter_keeps_running_behind_a_frozen_gain() {
         "d̂ − d {worst} s⁻² behind the frozen gain, against |d| = {size} s⁻²"
     );
 }
+
+/// "Tune this set": at multipliers of 1 the tuned filter is the chosen set, sample for
+/// sample; a multiplier changes it, live.
+#[test]
+fn the_tuned_set_is_its_row_at_one_and_moves_with_its_sliders() {
+    // Set 8, ST+Gyro [λ,ω], is option 7.
+    let names = ["tuned.err_deg", "st-gyro.err_deg"];
+    let t = trace("p2", &["tune_set=7"], 1, 60.0, &names);
+    assert_eq!(t.series(names[0]).unwrap(), t.series(names[1]).unwrap());
+    let t = trace("p2", &["tune_set=7", "tune_q_att=100"], 1, 60.0, &names);
+    let (tuned, row) = (t.series(names[0]).unwrap(), t.series(names[1]).unwrap());
+    assert!(
+        tuned.iter().zip(row).any(|(a, b)| a != b),
+        "q_Λ × 100 changed nothing"
+    );
+}

@@ -289,5 +289,8 @@ lesson-bar = Lesson · step { $n } of { $count }
 note-string-holds = This string holds { $mass } kg with a safety factor of { $factor } (§3.1 asks for { $required }: d ≥ { $dmin } mm).
 note-string-too-thin = Too thin for { $mass } kg: a safety factor of { $factor }, below the { $required } §3.1 asks for (d ≥ { $dmin } mm).
 note-string-period = The string and the body give T = { $period } s.
+note-p2-tuned-q-table3 = It runs with q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (with the Q scale); Table 3 gives this set { $paper_att }, { $paper_rate }, { $paper_bias }.
+note-p2-tuned-q-uncertain = It runs with q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (with the Q scale); this set's row at ×1: { $paper_att }, { $paper_rate }, { $paper_bias }, Table 3 as the OCR reads it, unsure of some digits.
+note-p2-tuned-q-ours = It runs with q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (with the Q scale); this set's row at ×1: { $paper_att }, { $paper_rate }, { $paper_bias }, this project's choice (the OCR lost Table 3's).
 note-p0-limited = P₀ would be singular or indefinite (b₀² ≥ a₀c₀): the filters use b₀ = ±{ $limit } deg²/s, a correlation of 0.99.
 note-u0-range = Eq. 4: u₀ lies in [{ $lo }, { $hi }] rad/s²; this rig needs { $needed } rad/s².

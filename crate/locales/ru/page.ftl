@@ -291,5 +291,8 @@ lesson-bar = Урок · шаг { $n } из { $count }
 note-string-holds = Эта нить держит { $mass } кг с запасом прочности { $factor } (§3.1 требует { $required }: d ≥ { $dmin } мм).
 note-string-too-thin = Слишком тонкая для { $mass } кг: запас прочности { $factor }, меньше требуемого в §3.1 { $required } (d ≥ { $dmin } мм).
 note-string-period = Нить и тело дают T = { $period } с.
+note-p2-tuned-q-table3 = Работает с q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (с масштабом Q); таблица 3 даёт этому набору { $paper_att }, { $paper_rate }, { $paper_bias }.
+note-p2-tuned-q-uncertain = Работает с q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (с масштабом Q); строка набора при ×1: { $paper_att }, { $paper_rate }, { $paper_bias } — таблица 3 в прочтении OCR, в некоторых цифрах неуверенном.
+note-p2-tuned-q-ours = Работает с q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (с масштабом Q); строка набора при ×1: { $paper_att }, { $paper_rate }, { $paper_bias } — наш выбор (OCR потерял значения таблицы 3).
 note-p0-limited = P₀ была бы вырожденной или неопределённой (b₀² ≥ a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с, корреляцию 0,99.
 note-u0-range = Ур. 4: u₀ лежит в [{ $lo }, { $hi }] рад/с²; этому стенду нужно { $needed } рад/с².

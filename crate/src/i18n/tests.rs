@@ -79,6 +79,11 @@ fn every_message_formats_without_an_error_in_both() {
                 "period",
                 "limit",
                 "needed",
+                "att",
+                "bias",
+                "paper_att",
+                "paper_rate",
+                "paper_bias",
             ];
             for name in words.into_iter().chain(more) {
                 args.set(name, "x");

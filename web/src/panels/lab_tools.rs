@@ -44,18 +44,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     .striped(true)
                     .num_columns(7)
                     .show(ui, |ui| {
-                        for h in [
-                            "accuracy-filter",
-                            "accuracy-att",
-                            "accuracy-att-p",
-                            "accuracy-paper-att",
-                            "accuracy-rate",
-                            "accuracy-rate-p",
-                            "accuracy-paper-rate",
-                        ] {
-                            ui.label(egui::RichText::new(tr(app, h)).small().strong());
-                        }
-                        ui.end_row();
+                        header_row(ui, app);
                         for (i, r) in rows.iter().enumerate() {
                             if table.is_some() && r.paper_table != table {
                                 continue;
@@ -91,6 +80,22 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     });
             });
         });
+}
+
+/// The accuracy table's header.
+fn header_row(ui: &mut Ui, app: &AppState) {
+    for h in [
+        "accuracy-filter",
+        "accuracy-att",
+        "accuracy-att-p",
+        "accuracy-paper-att",
+        "accuracy-rate",
+        "accuracy-rate-p",
+        "accuracy-paper-rate",
+    ] {
+        ui.label(egui::RichText::new(tr(app, h)).small().strong());
+    }
+    ui.end_row();
 }
 
 /// One tab per table of the paper the rows' values are from, and one for every row, when

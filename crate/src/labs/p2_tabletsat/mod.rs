@@ -19,8 +19,10 @@ pub mod sensors;
 pub mod sets;
 mod timing;
 pub mod truth;
+pub mod tune;
 
 use crate::estimators::mekf;
+use crate::estimators::mekf::Retune;
 use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
     AccuracyTable, BodyShape, Estimator, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
@@ -84,6 +86,11 @@ const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("rd_scale", "Disturbance filter R_d scale", "", 0.1, 1000.0, 100.0).log().help("R_d as a multiple of each row's innovation variance. The innovations of a running EKF are correlated over many steps, so R_d = S (scale 1) makes the disturbance filter overconfident: it then invents a disturbance where there is none."),
     ParamSpec::real("freeze_after_s", "Constant-gain filters: gain frozen at", "s", 10.0, 6000.0, 150.0).log().help("§3.3: from the first update after this time in which every sensor of the set delivered, the filter keeps that gain and stops propagating P (the paper: once the motion is quasi-steady; the time is ours)."),
     ParamSpec::real("filter_init_err_deg", "Filters' initial attitude error", "°", 0.0, 30.0, 2.0).on_reset(),
+    // "Tune this set" (issue 19): one of Table 3's sets again, its q × these sliders.
+    ParamSpec::choice(tune::SET, "Set to tune", &tune::SET_CHOICES, 8).on_reset().help("Runs this set a second time as the filter 'the set being tuned', with its q multiplied by the three sliders below, beside the same set at Table 3's q. The note says the q it runs with."),
+    ParamSpec::real(tune::Q_ATT, "Tuned set: q_Λ ×", "", 0.001, 1000.0, 1.0).log().help("Multiplies the tuned set's attitude process noise q_Λ (1 = Table 3's, or ours where the OCR lost it)."),
+    ParamSpec::real(tune::Q_RATE, "Tuned set: q_ω ×", "", 0.001, 1000.0, 1.0).log().help("Multiplies the tuned set's rate process noise q_ω."),
+    ParamSpec::real(tune::Q_BIAS, "Tuned set: q_bias ×", "", 0.001, 1000.0, 1.0).log().help("Multiplies the tuned set's bias process noise q_bias (a set without a bias state ignores it)."),
     // Failure: a degenerate geometry.
     ParamSpec::toggle("sun_along_field", "Thought experiment: sun along the field", false).help("Puts the sun (truth and ephemeris) next to the field direction: with two parallel vectors the rotation about them is not observed (H degenerate)."),
     ParamSpec::real("sun_field_angle_deg", "Sun–field angle", "°", 0.0, 90.0, 0.5).requires("sun_along_field"),
@@ -227,7 +234,12 @@ impl Lab for TabletSat {
         let err = p.get("filter_init_err_deg").to_radians();
         let mut estimators: Vec<Box<dyn Estimator>> = Vec::with_capacity(FILTERS.len());
         let mut axes: Vec<(&str, Vector3<f64>)> = Vec::with_capacity(FILTERS.len());
-        for row in FILTERS {
+        let tuned = tune::tuned_row(p);
+        let rows = FILTERS
+            .iter()
+            .map(|row| (row, tuning as Retune))
+            .chain([(&tuned, tune::tuned_tuning as Retune)]);
+        for (row, retune) in rows {
             // Each filter starts off the truth by the same angle about its own random axis;
             // a constant-gain variant about its EKF's (drawing nothing, so adding one
             // changes no other filter's run).
@@ -237,17 +249,17 @@ impl Lab for TabletSat {
             let axis = earlier.unwrap_or_else(|| random_axis(rng));
             axes.push((row.config.id, axis));
             let q0 = state.q_ref_from_body * UnitQuaternion::from_scaled_axis(axis * err);
-            let t = tuning(p, row.q);
+            let t = retune(p, row.q);
             let sigma = err.max(0.5f64.to_radians());
             let w0 = state.rate_body_rad_s;
             let e: Box<dyn Estimator> = match row.config.states.dim() {
                 9 => Box::new(
                     Mekf::<9>::new(row.config, t, q0, w0, p0(row.config.states, sigma))
-                        .with_retune(tuning, row.q),
+                        .with_retune(retune, row.q),
                 ),
                 _ => Box::new(
                     Mekf::<6>::new(row.config, t, q0, w0, p0(row.config.states, sigma))
-                        .with_retune(tuning, row.q),
+                        .with_retune(retune, row.q),
                 ),
             };
             estimators.push(e);
@@ -261,6 +273,10 @@ impl Lab for TabletSat {
 
     fn page(&self) -> &'static Page {
         &PAGE
+    }
+
+    fn param_notes(&self, params: &ParamValues) -> Vec<crate::model::ParamNote> {
+        tune::notes(params)
     }
 
     fn study(&self) -> Option<&dyn Study> {
@@ -287,18 +303,21 @@ impl Study for TabletSat {
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {
-        const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
-            "Tune Q under the unmodelled torque (attitude error, 200 s each)",
-            "q_scale",
-            &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
-            200.0,
-            &[
-                SeriesKey::new("st-gyro", &q::ERR_DEG),
-                SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
-                SeriesKey::new("mag-sun", &q::ERR_DEG),
-            ],
-        )
-        .after(140.0)];
+        const SWEEPS: &[SweepSpec] = &[
+            SweepSpec::new(
+                "Tune Q under the unmodelled torque (attitude error, 200 s each)",
+                "q_scale",
+                &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],
+                200.0,
+                &[
+                    SeriesKey::new("st-gyro", &q::ERR_DEG),
+                    SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
+                    SeriesKey::new("mag-sun", &q::ERR_DEG),
+                ],
+            )
+            .after(140.0),
+            tune::SWEEP,
+        ];
         SWEEPS
     }
 

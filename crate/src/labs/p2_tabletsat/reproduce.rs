@@ -57,6 +57,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(super::constant_gain::rows()?);
     rows.extend(super::fig7::rows()?);
     rows.extend(super::table4::rows()?);
+    rows.extend(super::tune::rows()?);
     Ok(Reproduction {
         lab: "p2".into(),
         rows,
