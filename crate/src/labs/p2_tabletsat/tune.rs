@@ -145,12 +145,12 @@ pub(super) const SWEEP: SweepSpec = SweepSpec::new(
 
 /// Table 3's sets whose optimum the reproduction reports: ST+Gyro (its q readable),
 /// Mag+Sun+Gyro (the OCR unsure), Mag+Sun (ours).
-#[cfg(feature = "study")]
+#[cfg_attr(not(feature = "study"), allow(dead_code))]
 const REPORTED: [&str; 3] = ["st-gyro", "mag-sun-gyro", "mag-sun"];
 
 /// The grid over the chosen set `id` with `assignments`: (σ at ×1, ×1; the best cell's σ,
 /// q_Λ × and q_ω ×).
-#[cfg(feature = "study")]
+#[cfg_attr(not(feature = "study"), allow(dead_code))]
 fn optimum(id: &str, assignments: &[String]) -> Result<[f64; 4], crate::analysis::AnalysisError> {
     use crate::analysis::AnalysisError;
     use crate::analysis::sweep::Sweep;
@@ -184,7 +184,7 @@ fn optimum(id: &str, assignments: &[String]) -> Result<[f64; 4], crate::analysis
 /// The reproduction's rows: for three of Table 3's sets, the best cell of the grid beside
 /// Table 3's q (×1, ×1); for ST+Gyro, whose q is readable, that Table 3's q is within 1.5× of
 /// the best σ (a check, at the sensor rates chosen here, with the rates ±50 % beside it).
-#[cfg(feature = "study")]
+#[cfg_attr(not(feature = "study"), allow(dead_code))]
 pub(super) fn rows() -> Result<Vec<crate::model::Row>, crate::analysis::AnalysisError> {
     use crate::model::{Calibration, Expectation, Row};
     let mut rows = Vec::new();
