@@ -239,7 +239,7 @@ pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static s
         out.push((outage_id(id, i), outage.label));
     }
     for (i, sweep) in lab.sweeps().iter().enumerate() {
-        out.extend(sweep_words(id, i, sweep));
+        out.extend(sweep_words(id, i, sweep, &defaults(lab)));
     }
     for (i, d) in page.diagrams(&defaults(lab)).iter().enumerate() {
         out.push((diagram_id(id, i), d.title));
@@ -320,8 +320,14 @@ fn sweep_words(
     lab_id: &str,
     i: usize,
     sweep: &crate::model::SweepSpec,
+    defaults: &crate::model::ParamValues,
 ) -> Vec<(String, &'static str)> {
     let mut out = vec![(sweep_id(lab_id, i, "title"), sweep.title)];
+    if let Some(overlay) = sweep.scoring.and_then(|s| s.overlay) {
+        for (k, (name, _)) in overlay(defaults).iter().enumerate() {
+            out.push((sweep_id(lab_id, i, &format!("overlay-{k}")), *name));
+        }
+    }
     for (prefix, scoring) in [("", sweep.scoring), ("log-", sweep.log_scoring)] {
         let Some(scoring) = scoring else { continue };
         out.push((sweep_id(lab_id, i, &format!("{prefix}help")), scoring.help));

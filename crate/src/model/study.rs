@@ -108,8 +108,10 @@ pub struct SweepAxis {
 pub type ScoreFn = fn(&ParamValues, &[f64], &[Vec<f64>]) -> Result<Vec<f64>, String>;
 
 /// Lines drawn over a grid's heat map, in (key, grid key) coordinates, for the sweep's
-/// parameters (e.g. paper 4's det Q = γ det R).
-pub type OverlayFn = fn(&ParamValues) -> Vec<(String, Vec<[f64; 2]>)>;
+/// parameters (e.g. paper 4's det Q = γ det R), each with its English name: line `k`'s name
+/// is translated as the sweep's word `overlay-<k>` (the names must not depend on the
+/// parameters, only the lines).
+pub type OverlayFn = fn(&ParamValues) -> Vec<(&'static str, Vec<[f64; 2]>)>;
 
 /// What a lab scores in each run of a sweep beyond the RMS of series, e.g. paper 4's MSE
 /// and transient time, and the weighted sums it minimises, e.g. J = α·MSE + β·t_tr.

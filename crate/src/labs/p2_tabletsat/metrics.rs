@@ -77,7 +77,7 @@ pub(super) fn rows(all: &Runs) -> Result<Vec<Row>, AnalysisError> {
                 format!("{label}, {name} (bias states only slightly worse)"),
                 ratio(all)?,
             );
-            let quantity = format!("{label}, {name}, gyro at 10 Hz, last 60 s of a 1800-s run");
+            let quantity = format!("{label}, {name}, gyro at 10 Hz, last 60 s of an 1800-s run");
             if k == 0 {
                 rows.push(at_200);
                 rows.push(Row::measurement(quantity, "—", ratio(&converged[0])?, "×"));

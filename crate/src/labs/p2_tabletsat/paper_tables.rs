@@ -376,7 +376,10 @@ fn cause_rows(
                 "by 200 s, with the gyro read at 1 Hz, Mag+Sun+Gyro has not converged: only the slow turn of the field and the sun in the body frame separates its states (the paper gives neither its gyro rate nor its run length); the next rows run 1800 s with the gyro at 10 Hz",
             )];
             let converged = Row::check(
-                format!("{}, gyro at 10 Hz, last 60 s of a 1800-s run", v.quantity()),
+                format!(
+                    "{}, gyro at 10 Hz, last 60 s of an 1800-s run",
+                    v.quantity()
+                ),
                 paper_text,
                 v.in_runs(&s.converged[0])?,
                 v.unit,

@@ -118,14 +118,12 @@ const SCORING: SweepScoring = SweepScoring {
     overlay: Some(paper_mark),
 };
 
-/// A cross at ×1, ×1: Table 3's q (the heat map draws it on log axes).
-fn paper_mark(_: &ParamValues) -> Vec<(String, Vec<[f64; 2]>)> {
+/// A cross at ×1, ×1: Table 3's q (the heat map draws it on log axes), one line that
+/// retraces through the centre.
+fn paper_mark(_: &ParamValues) -> Vec<(&'static str, Vec<[f64; 2]>)> {
     let (lo, hi) = (10f64.powf(-0.2), 10f64.powf(0.2));
-    let name = || "Table 3's q (×1, ×1)".to_string();
-    vec![
-        (name(), vec![[lo, 1.0], [hi, 1.0]]),
-        (name(), vec![[1.0, lo], [1.0, hi]]),
-    ]
+    let cross = vec![[lo, 1.0], [hi, 1.0], [1.0, 1.0], [1.0, hi], [1.0, lo]];
+    vec![("Table 3's q (×1, ×1)", cross)]
 }
 
 /// The multipliers the grid runs over.

@@ -251,22 +251,22 @@ fn zero_phase_low_pass(x: &[f64], dt_s: f64, cutoff_hz: f64) -> Vec<f64> {
 /// Lines of constant γ on the Q landscape (q_θ·q_ω = γ·det R, R fixed at the sliders'
 /// σ) for γ* = 2·10⁻³ and the paper's other grid values, and the γ mapping's ray
 /// q_θ/q_ω = dt²/3.
-fn gamma_lines(p: &ParamValues) -> Vec<(String, Vec<[f64; 2]>)> {
+fn gamma_lines(p: &ParamValues) -> Vec<(&'static str, Vec<[f64; 2]>)> {
     let det_r = (p.get(roll_keys::SIGMA_ANGLE) * p.get(roll_keys::SIGMA_RATE)).powi(2);
     let dt = 1.0 / p.get("sample_hz");
     let qa: Vec<f64> = (0..=40)
         .map(|k| 10f64.powf(-10.0 + 8.0 * f64::from(k) / 40.0))
         .collect();
-    let mut lines: Vec<(String, Vec<[f64; 2]>)> =
+    let mut lines: Vec<(&'static str, Vec<[f64; 2]>)> =
         [(2e-3, "γ* = 2·10⁻³"), (0.2, "γ = 0.2"), (1e-5, "γ = 10⁻⁵")]
             .iter()
             .map(|(g, name)| {
                 let pts = qa.iter().map(|a| [*a, g * det_r / a]).collect();
-                ((*name).to_string(), pts)
+                (*name, pts)
             })
             .collect();
     let ray = qa.iter().map(|a| [*a, a * 3.0 / (dt * dt)]).collect();
-    lines.push(("the γ mapping: q_θ/q_ω = dt²/3".into(), ray));
+    lines.push(("the γ mapping: q_θ/q_ω = dt²/3", ray));
     lines
 }
 

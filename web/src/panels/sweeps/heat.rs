@@ -89,7 +89,7 @@ pub(super) fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             plot.add(heat);
             for (k, (label, pts)) in lines.iter().enumerate() {
                 plot.line(
-                    Line::new(label.clone(), grid.clip(pts))
+                    Line::new(w.overlay(k, label), grid.clip(pts))
                         .color(colours.source(k + 1))
                         .width(2.0),
                 );

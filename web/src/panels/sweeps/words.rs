@@ -50,6 +50,11 @@ impl Words<'_> {
         self.word(&part, english)
     }
 
+    /// Overlay line `k`'s name.
+    pub(super) fn overlay(&self, k: usize, english: &str) -> String {
+        self.word(&format!("overlay-{k}"), english)
+    }
+
     fn word(&self, part: &str, english: &str) -> String {
         let lab = self.app.sim().lab().id();
         lab_word(self.app, &i18n::sweep_id(lab, self.sweep, part), english)
