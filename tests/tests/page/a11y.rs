@@ -101,29 +101,34 @@ fn key(session: &Session<'_>, key: &str, code: u32) -> Result<(), String> {
 
 /// Waits until the app has drawn `n` more frames.
 fn frames_later(session: &Session<'_>, n: f64) {
-    let frames = || {
-        session
-            .execute("return window.attlabStatus ? window.attlabStatus.frames : 0;")
-            .ok()
-            .and_then(|v| v.as_f64())
-            .unwrap_or(0.0)
-    };
-    let (start, clock) = (frames(), Instant::now());
-    while frames() < start + n && clock.elapsed() < Duration::from_secs(20) {
-        sleep(Duration::from_millis(30));
-    }
+    let _ = session.execute(&after_frames(n, "null"));
 }
 
-/// The element the canvas names as the control with the keyboard: (role, label).
-fn active_control(session: &Session<'_>) -> (String, String) {
-    let script = "const c = document.getElementById('attlab_canvas'); \
-        const id = c.getAttribute('aria-activedescendant'); \
+/// A script that resolves `result` (an expression) once the app has drawn `n` more frames,
+/// or after 20 s: one WebDriver call, so it waits in the page. (Polling from here cost a
+/// round trip of ~0.6 s each while SwiftShader kept both cores busy, ~1.8 s a Tab.)
+fn after_frames(n: f64, result: &str) -> String {
+    format!(
+        "const frames = () => window.attlabStatus ? window.attlabStatus.frames : 0; \
+         const until = frames() + {n}, t0 = performance.now(); \
+         return new Promise(done => {{ const tick = () => \
+           (frames() >= until || performance.now() - t0 > 20000) \
+             ? done({result}) : requestAnimationFrame(tick); tick(); }});"
+    )
+}
+
+/// The element the canvas names as the control with the keyboard once the app has drawn
+/// two more frames: (role, label).
+fn active_control_after_frames(session: &Session<'_>) -> (String, String) {
+    let control = "(() => { const c = document.getElementById('attlab_canvas'); \
+        const id = c && c.getAttribute('aria-activedescendant'); \
         const e = id && document.getElementById(id); \
-        return [document.activeElement === c, e ? e.getAttribute('role') : '', \
-                e ? e.getAttribute('aria-label') : ''];";
-    let v = session.execute(script).unwrap_or(Value::Null);
+        return [e ? e.getAttribute('role') : '', e ? e.getAttribute('aria-label') : '']; })()";
+    let v = session
+        .execute(&after_frames(2.0, control))
+        .unwrap_or(Value::Null);
     let s = |i: usize| v[i].as_str().unwrap_or_default().to_string();
-    (s(1), s(2))
+    (s(0), s(1))
 }
 
 /// The keyboard-only walk on paper 5 (see the module's doc).
@@ -140,8 +145,7 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
         if let Err(e) = key(session, "Tab", 9) {
             return vec![format!("keyboard walk: Tab failed: {e}")];
         }
-        frames_later(session, 2.0);
-        let (role, label) = active_control(session);
+        let (role, label) = active_control_after_frames(session);
         if role == "slider" && label == WALK_SLIDER {
             reached = Some(presses);
             break;

@@ -2,6 +2,18 @@
 
 use super::*;
 
+/// Runs one phase of a page test and prints how long it took (the CI log's breakdown of the
+/// page step).
+pub(crate) fn timed<T>(phase: &str, body: impl FnOnce() -> T) -> T {
+    let start = Instant::now();
+    let out = body();
+    println!(
+        "page test: phase `{phase}` took {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+    out
+}
+
 /// Problems with the app's own status object.
 pub(crate) fn status_problems(status: &Value) -> Vec<String> {
     let mut problems = Vec::new();

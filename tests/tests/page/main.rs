@@ -76,6 +76,7 @@ fn out_dir() -> PathBuf {
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn page_renders_without_errors() {
     let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
+    let start = Instant::now();
     let driver = Driver::start();
     let session = Session::new(&driver);
     session
@@ -127,10 +128,20 @@ fn page_renders_without_errors() {
         ));
         problems.extend(a11y::tree_problems(&session, *lab));
     }
-    problems.extend(a11y::keyboard_walk_problems(&session, &base));
-    problems.extend(screens::screen_problems(&session, &base));
-    problems.extend(lessons::lesson_problems(&session, &base));
-    problems.extend(png_export_problems(&session, &base));
+    println!(
+        "page test: phase `first load and every lab` took {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+    problems.extend(timed("keyboard walk", || {
+        a11y::keyboard_walk_problems(&session, &base)
+    }));
+    problems.extend(timed("screens", || {
+        screens::screen_problems(&session, &base)
+    }));
+    problems.extend(timed("lessons", || {
+        lessons::lesson_problems(&session, &base)
+    }));
+    problems.extend(timed("png export", || png_export_problems(&session, &base)));
     drop(session);
     assert!(
         problems.is_empty(),
