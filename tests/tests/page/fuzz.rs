@@ -11,17 +11,22 @@ use super::*;
 
 /// Events per lab in `cargo xtask test`.
 pub(crate) const CI_EVENTS_PER_LAB: u32 = 2000;
-/// Events sent in one script call (the page draws between calls).
+/// Events in one burst (the page draws between bursts).
 const BURST: u32 = 40;
-/// The pause between bursts, so the app draws frames in between as it would for a user.
-const BETWEEN_BURSTS: Duration = Duration::from_millis(30);
+/// Frames the app draws between two bursts, as it would between a user's gestures.
+const FRAMES_BETWEEN: u32 = 2;
 
-/// The script that sends one burst: `SEED` and `COUNT` are replaced. Keys include Tab, the
-/// arrows, Space, Enter, Escape, the app's shortcuts and digits; pointers land anywhere on
-/// the canvas, half of them near the last one (drags), with the wheel and touches mixed in.
+/// The script that sends every burst of a window in one WebDriver call (each call took
+/// ~0.6 s while SwiftShader kept both cores busy): `BURST_SEEDS` (a JS array of 32-bit
+/// seeds, one per burst) and `COUNT` are replaced; after each burst it waits for
+/// [`FRAMES_BETWEEN`] frames (at most 5 s). It resolves to one verdict per burst: `ok`, or
+/// what went wrong. Keys include Tab, the arrows, Space, Enter, Escape, the app's shortcuts
+/// and digits; pointers land anywhere on the canvas, half of them near the last one
+/// (drags), with the wheel and touches mixed in.
 const BURST_SCRIPT: &str = r#"
+const burst = (seed) => {
 Error.stackTraceLimit = 64;
-let s = SEED >>> 0;
+let s = seed >>> 0;
 const rnd = () => {
   s = (s + 0x6D2B79F5) >>> 0;
   let t = s;
@@ -72,31 +77,50 @@ for (let i = 0; i < COUNT; i++) {
   }
 }
 return 'ok';
+};
+const frames = () => window.attlabStatus ? window.attlabStatus.frames : 0;
+const later = (n) => new Promise(done => {
+  const until = frames() + n, t0 = performance.now();
+  const tick = () => (frames() >= until || performance.now() - t0 > 5000)
+    ? done() : requestAnimationFrame(tick);
+  tick();
+});
+return (async () => {
+  const verdicts = [];
+  for (const seed of BURST_SEEDS) {
+    try { verdicts.push(burst(seed)); }
+    catch (e) { verdicts.push('threw ' + e + '\n' + (e && e.stack)); }
+    await later(FRAMES_BETWEEN);
+  }
+  return verdicts;
+})();
 "#;
 
 /// Sends `events` random events to the open page from `seed`, in bursts; returns the
 /// problems of sending them.
 fn send_events(session: &Session<'_>, seed: u64, events: u32) -> Vec<String> {
-    let mut problems = Vec::new();
-    let mut sent = 0;
-    let mut burst = 0u64;
-    while sent < events {
-        let count = BURST.min(events - sent);
-        // Each burst its own 32-bit seed, derived from the run's.
-        let burst_seed = (seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ burst) & 0xFFFF_FFFF;
-        let script = BURST_SCRIPT
-            .replace("SEED", &burst_seed.to_string())
-            .replace("COUNT", &count.to_string());
-        match session.execute(&script) {
-            Ok(Value::String(s)) if s == "ok" => {}
-            Ok(other) => problems.push(format!("burst {burst}: the page said {other}")),
-            Err(e) => problems.push(format!("burst {burst}: sending failed: {e}")),
-        }
-        sent += count;
-        burst += 1;
-        sleep(BETWEEN_BURSTS);
+    let bursts = u64::from(events.div_ceil(BURST));
+    // Each burst its own 32-bit seed, derived from the run's.
+    let seeds: Vec<String> = (0..bursts)
+        .map(|burst| ((seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ burst) & 0xFFFF_FFFF).to_string())
+        .collect();
+    let script = BURST_SCRIPT
+        .replace("BURST_SEEDS", &format!("[{}]", seeds.join(",")))
+        .replace("COUNT", &BURST.to_string())
+        .replace("FRAMES_BETWEEN", &FRAMES_BETWEEN.to_string());
+    // The bursts and the frames between them take ~10 s; WebDriver's default script
+    // timeout is 30 s.
+    let _ = session.call("POST", "/timeouts", Some(&json!({ "script": 300_000 })));
+    match session.execute(&script) {
+        Ok(Value::Array(verdicts)) => verdicts
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.as_str() != Some("ok"))
+            .map(|(burst, v)| format!("burst {burst}: the page said {v}"))
+            .collect(),
+        Ok(other) => vec![format!("the bursts returned {other}")],
+        Err(e) => vec![format!("sending the bursts failed: {e}")],
     }
-    problems
 }
 
 /// Whether the page still draws: its frame count grows within a few seconds of a pointer
