@@ -188,7 +188,9 @@ pub(super) fn rows() -> Result<Vec<crate::model::Row>, crate::analysis::Analysis
     let mut rows = Vec::new();
     for id in REPORTED {
         let [at_one, best, q_att, q_rate] = optimum(id, &[])?;
-        let row = super::sets::filter(id).expect("a set of the table");
+        let row = super::sets::filter(id).ok_or_else(|| {
+            crate::analysis::AnalysisError::Scenario(format!("no set `{id}` in Table 3"))
+        })?;
         let label = row.config.label;
         rows.push(Row::measurement(
             format!(
