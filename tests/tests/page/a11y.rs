@@ -105,16 +105,9 @@ fn frames_later(session: &Session<'_>, n: f64) {
 }
 
 /// A script that resolves `result` (an expression) once the app has drawn `n` more frames,
-/// or after 20 s: one WebDriver call, so it waits in the page. (Polling from here cost a
-/// round trip of ~0.6 s each while SwiftShader kept both cores busy, ~1.8 s a Tab.)
+/// or after 20 s (see [`LATER_JS`]).
 fn after_frames(n: f64, result: &str) -> String {
-    format!(
-        "const frames = () => window.attlabStatus ? window.attlabStatus.frames : 0; \
-         const until = frames() + {n}, t0 = performance.now(); \
-         return new Promise(done => {{ const tick = () => \
-           (frames() >= until || performance.now() - t0 > 20000) \
-             ? done({result}) : requestAnimationFrame(tick); tick(); }});"
-    )
+    format!("{LATER_JS} return attlabLater({n}, 20000).then(() => {result});")
 }
 
 /// The element the canvas names as the control with the keyboard once the app has drawn

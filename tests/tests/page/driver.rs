@@ -226,6 +226,17 @@ pub(crate) fn wait_for_frames(session: &Session<'_>) -> Value {
     status
 }
 
+/// JS that defines `attlabLater(n, ms)`: a promise that resolves once the app has drawn `n`
+/// more frames, or after `ms`. A script that waits with it waits in the page, in one
+/// WebDriver call (each call costs ~0.6 s while SwiftShader keeps both cores busy).
+pub(crate) const LATER_JS: &str = "const attlabFrames = () => \
+    window.attlabStatus ? window.attlabStatus.frames : 0; \
+  const attlabLater = (n, ms) => new Promise(done => { \
+    const until = attlabFrames() + n, t0 = performance.now(); \
+    const tick = () => (attlabFrames() >= until || performance.now() - t0 > ms) \
+      ? done() : requestAnimationFrame(tick); \
+    tick(); });\n";
+
 /// Time from the start of navigation to the first drawn frame (ms, `performance.now()` when
 /// a poll every 20 ms first sees a frame; an upper bound by at most one poll).
 pub(crate) fn first_frame_ms(session: &Session<'_>) -> Option<f64> {

@@ -78,19 +78,12 @@ for (let i = 0; i < COUNT; i++) {
 }
 return 'ok';
 };
-const frames = () => window.attlabStatus ? window.attlabStatus.frames : 0;
-const later = (n) => new Promise(done => {
-  const until = frames() + n, t0 = performance.now();
-  const tick = () => (frames() >= until || performance.now() - t0 > 5000)
-    ? done() : requestAnimationFrame(tick);
-  tick();
-});
 return (async () => {
   const verdicts = [];
   for (const seed of BURST_SEEDS) {
     try { verdicts.push(burst(seed)); }
     catch (e) { verdicts.push('threw ' + e + '\n' + (e && e.stack)); }
-    await later(FRAMES_BETWEEN);
+    await attlabLater(FRAMES_BETWEEN, 5000);
   }
   return verdicts;
 })();
@@ -104,7 +97,7 @@ fn send_events(session: &Session<'_>, seed: u64, events: u32) -> Vec<String> {
     let seeds: Vec<String> = (0..bursts)
         .map(|burst| ((seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ burst) & 0xFFFF_FFFF).to_string())
         .collect();
-    let script = BURST_SCRIPT
+    let script = format!("{LATER_JS}{BURST_SCRIPT}")
         .replace("BURST_SEEDS", &format!("[{}]", seeds.join(",")))
         .replace("COUNT", &BURST.to_string())
         .replace("FRAMES_BETWEEN", &FRAMES_BETWEEN.to_string());
