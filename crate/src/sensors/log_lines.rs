@@ -27,7 +27,7 @@ pub(crate) struct Row {
     pub line: usize,
     /// The numbers, as many as the columns.
     pub values: Vec<f64>,
-    /// The line as read (shortened), for messages about it.
+    /// The line as read (trimmed): a live session records it as it came.
     pub text: String,
 }
 
@@ -43,6 +43,8 @@ pub(crate) struct Rows {
     /// How many lines of numbers had each width (the expected one included), as
     /// `(width, lines)` in the order first seen.
     pub widths: Vec<(usize, usize)>,
+    /// The nominal period a `# period_s=` comment states (s), if one does.
+    pub period_s: Option<f64>,
 }
 
 /// A finite number, or `None`.
@@ -90,9 +92,135 @@ fn without_bom(bytes: &[u8]) -> &[u8] {
     bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
 }
 
+/// The comment that states a log's nominal period (a live session's record writes it, so
+/// that its replay applies the clock's rules with the period the session used).
+pub(crate) const PERIOD_DIRECTIVE: &str = "# period_s=";
+
+/// Lines classified one at a time, by the module's rules: a batch read and a live stream
+/// share it.
+#[derive(Clone, Debug)]
+pub(crate) struct LineReader {
+    columns: usize,
+    names: &'static str,
+    /// The delimiter, once known.
+    pub delimiter: Option<u8>,
+    header_seen: bool,
+    rows_seen: bool,
+    /// What was read so far.
+    pub out: Rows,
+}
+
+impl LineReader {
+    /// A reader of rows of `columns` numbers (`names` says which, for the messages),
+    /// split at `delimiter` (`None`: the first line of numbers fixes it).
+    pub(crate) fn new(columns: usize, names: &'static str, delimiter: Option<u8>) -> Self {
+        Self {
+            columns,
+            names,
+            delimiter,
+            header_seen: false,
+            rows_seen: false,
+            out: Rows::default(),
+        }
+    }
+
+    /// Reads line number `line` (its bytes without the line break).
+    pub(crate) fn line(&mut self, line: usize, raw: &[u8]) {
+        let text = match std::str::from_utf8(raw) {
+            Ok(text) => text.trim(),
+            Err(e) => {
+                self.out.data_lines += 1;
+                self.out.errors.push(bad_bytes(line, raw, e.valid_up_to()));
+                return;
+            }
+        };
+        if let Some(p) = text.strip_prefix(PERIOD_DIRECTIVE).and_then(number) {
+            self.out.period_s.get_or_insert(p);
+        }
+        if text.is_empty() || text.starts_with('#') {
+            return;
+        }
+        let delimiter = match self.delimiter {
+            Some(d) => d,
+            None => {
+                let d = line_delimiter(text, self.columns);
+                if all_numbers(&fields(text, d)) {
+                    self.delimiter = Some(d);
+                }
+                d
+            }
+        };
+        self.classify(line, text, &fields(text, delimiter));
+    }
+
+    fn classify(&mut self, line: usize, text: &str, f: &[&str]) {
+        let (columns, out) = (self.columns, &mut self.out);
+        let words = f.iter().all(|c| !c.is_empty() && number(c).is_none());
+        let before_data = !self.rows_seen && !self.header_seen;
+        if before_data && words && f.len() == columns {
+            self.header_seen = true;
+            return;
+        }
+        out.data_lines += 1;
+        let names = self.names;
+        if all_numbers(f) {
+            match out.widths.iter_mut().find(|(w, _)| *w == f.len()) {
+                Some((_, n)) => *n += 1,
+                None => out.widths.push((f.len(), 1)),
+            }
+            if f.len() == columns {
+                let values = f.iter().filter_map(|c| number(c)).collect();
+                let text = text.to_string();
+                out.rows.push(Row { line, values, text });
+                self.rows_seen = true;
+                return;
+            }
+            let merged = if f.len() == 2 * columns {
+                " (two lines merged?)"
+            } else {
+                ""
+            };
+            let reason = format!(
+                "expected {columns} columns ({names}), found {}{merged}",
+                f.len()
+            );
+            let text = shortened(text);
+            out.errors.push(LogLineError { line, text, reason });
+            return;
+        }
+        let reason = if before_data {
+            "before the data (a sketch's banner?)".to_string()
+        } else if f.len() != columns {
+            format!("expected {columns} columns ({names}), found {}", f.len())
+        } else {
+            let bad = f.iter().find(|c| number(c).is_none()).unwrap_or(&"");
+            format!("not a number: `{bad}`")
+        };
+        let text = shortened(text);
+        out.errors.push(LogLineError { line, text, reason });
+    }
+}
+
+/// A line as a message quotes it: its first 80 characters.
+pub(crate) fn shortened(text: &str) -> String {
+    text.chars().take(80).collect()
+}
+
+/// The delimiter of a single line: the first under which it is `columns` numbers, else
+/// `columns` words (a header), else any numbers; a comma when none fits.
+fn line_delimiter(text: &str, columns: usize) -> u8 {
+    let fits = |test: &dyn Fn(&[&str]) -> bool| {
+        DELIMITERS.iter().copied().find(|d| test(&fields(text, *d)))
+    };
+    fits(&|f| f.len() == columns && all_numbers(f))
+        .or_else(|| fits(&|f| f.len() == columns && f.iter().all(|c| number(c).is_none())))
+        .or_else(|| fits(&|f| all_numbers(f)))
+        .unwrap_or(b',')
+}
+
 /// Reads `bytes` as rows of `columns` numbers (`names` says which, for the messages: "time,
 /// rate"). See the module documentation for the rules.
-pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &str) -> Rows {
+pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &'static str) -> Rows {
     let bytes = without_bom(bytes);
     let delimiter = sniff_delimiter(&String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 16)]));
     // One record per line: no quoting (a stray quote must not swallow the lines after it),
@@ -104,70 +232,16 @@ pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &str) -> Rows {
         .delimiter(delimiter)
         .terminator(csv::Terminator::Any(b'\n'))
         .from_reader(bytes);
-    let mut out = Rows::default();
-    let mut header_seen = false;
+    let mut lines = LineReader::new(columns, names, Some(delimiter));
     for record in reader.byte_records().filter_map(Result::ok) {
         let Some(position) = record.position() else {
             continue;
         };
-        let line = position.line() as usize;
         let start = (position.byte() as usize).min(bytes.len());
         let raw = bytes[start..].split(|b| *b == b'\n').next().unwrap_or(&[]);
-        let text = match std::str::from_utf8(raw) {
-            Ok(text) => text.trim(),
-            Err(e) => {
-                out.data_lines += 1;
-                out.errors.push(bad_bytes(line, raw, e.valid_up_to()));
-                continue;
-            }
-        };
-        if text.is_empty() || text.starts_with('#') {
-            continue;
-        }
-        let f = fields(text, delimiter);
-        let words = f.iter().all(|c| !c.is_empty() && number(c).is_none());
-        if out.rows.is_empty() && !header_seen && words && f.len() == columns {
-            header_seen = true;
-            continue;
-        }
-        out.data_lines += 1;
-        let err = |reason: String| LogLineError {
-            line,
-            text: text.chars().take(80).collect(),
-            reason,
-        };
-        if all_numbers(&f) {
-            match out.widths.iter_mut().find(|(w, _)| *w == f.len()) {
-                Some((_, n)) => *n += 1,
-                None => out.widths.push((f.len(), 1)),
-            }
-            if f.len() == columns {
-                let values = f.iter().filter_map(|c| number(c)).collect();
-                let text = text.chars().take(80).collect();
-                out.rows.push(Row { line, values, text });
-            } else {
-                let merged = if f.len() == 2 * columns {
-                    " (two lines merged?)"
-                } else {
-                    ""
-                };
-                out.errors.push(err(format!(
-                    "expected {columns} columns ({names}), found {}{merged}",
-                    f.len()
-                )));
-            }
-            continue;
-        }
-        out.errors.push(err(if out.rows.is_empty() && !header_seen {
-            "before the data (a sketch's banner?)".to_string()
-        } else if f.len() != columns {
-            format!("expected {columns} columns ({names}), found {}", f.len())
-        } else {
-            let bad = f.iter().find(|c| number(c).is_none()).unwrap_or(&"");
-            format!("not a number: `{bad}`")
-        }));
+        lines.line(position.line() as usize, raw);
     }
-    out
+    lines.out
 }
 
 /// What one row of a log holds once decoded: a rate (rad/s) and, for an IMU log, an
@@ -182,7 +256,7 @@ pub(crate) type Decoded = Result<(f64, Option<Vector3<f64>>), String>;
 pub(crate) fn read_log(
     bytes: &[u8],
     columns: usize,
-    names: &str,
+    names: &'static str,
     time_scale: f64,
     sample: impl Fn(&[f64]) -> Decoded,
 ) -> RateLog {
@@ -191,11 +265,12 @@ pub(crate) fn read_log(
         errors,
         data_lines,
         widths,
+        period_s,
     } = read_rows(bytes, columns, names);
     let (rows, undecodable) = decode_rows(rows, sample);
     let errors = merge_by_line(errors, undecodable);
     let mut glitches = Vec::new();
-    let timeline = timeline::order(rows, time_scale, &mut glitches);
+    let timeline = timeline::order(rows, time_scale, period_s, &mut glitches);
     let errors = merge_by_line(errors, glitches);
     let mut log = RateLog {
         period_s: timeline.period_s.unwrap_or(0.0),
@@ -205,12 +280,7 @@ pub(crate) fn read_log(
         ..RateLog::default()
     };
     for s in &timeline.samples {
-        let v = &s.row.values;
-        log.t_s.push(s.t_s);
-        log.rate_rad_s.push(v[1]);
-        if let [_, _, x, y, z] = v[..] {
-            log.accel_g.push(Vector3::new(x, y, z));
-        }
+        push_sample(&mut log, s);
     }
     log.counts = LogCounts {
         data_lines,
@@ -221,6 +291,17 @@ pub(crate) fn read_log(
     };
     log.errors = errors;
     log
+}
+
+/// Appends a kept sample (its row decoded: `[time, rate]` or `[time, rate, ax, ay, az]`)
+/// to `log`.
+pub(crate) fn push_sample(log: &mut RateLog, s: &timeline::Timed) {
+    let v = &s.row.values;
+    log.t_s.push(s.t_s);
+    log.rate_rad_s.push(v[1]);
+    if let [_, _, x, y, z] = v[..] {
+        log.accel_g.push(Vector3::new(x, y, z));
+    }
 }
 
 /// Each row as `[time, rate]` or `[time, rate, ax, ay, az]` (decoded by `sample`), and the
@@ -241,7 +322,7 @@ fn decode_rows(
             Err(reason) => {
                 errors.push(LogLineError {
                     line: row.line,
-                    text: row.text,
+                    text: shortened(&row.text),
                     reason,
                 });
                 None
@@ -252,7 +333,7 @@ fn decode_rows(
 }
 
 /// Two lists of line errors, each in line order, as one in line order.
-fn merge_by_line(a: Vec<LogLineError>, b: Vec<LogLineError>) -> Vec<LogLineError> {
+pub(crate) fn merge_by_line(a: Vec<LogLineError>, b: Vec<LogLineError>) -> Vec<LogLineError> {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut a, mut b) = (a.into_iter().peekable(), b.into_iter().peekable());
     loop {

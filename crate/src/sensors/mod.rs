@@ -2,6 +2,7 @@
 
 mod gyro;
 mod imu_log;
+pub mod live;
 pub mod log_lines;
 mod noise;
 mod rate_log;

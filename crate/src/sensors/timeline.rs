@@ -58,7 +58,7 @@ pub(crate) struct Timeline {
 fn note(row: &Row, reason: String) -> LogLineError {
     LogLineError {
         line: row.line,
-        text: row.text.clone(),
+        text: super::log_lines::shortened(&row.text),
         reason,
     }
 }
@@ -74,66 +74,144 @@ fn nominal_period(times: &[f64]) -> Option<f64> {
     d.get(d.len() / 2).copied()
 }
 
-/// Orders `rows` (time in `values[0]`, in units of `time_scale` s) by the module's rules;
-/// rejected lines go to `errors`.
-pub(crate) fn order(rows: Vec<Row>, time_scale: f64, errors: &mut Vec<LogLineError>) -> Timeline {
-    let times: Vec<f64> = rows.iter().map(|r| r.values[0] * time_scale).collect();
+/// Orders `rows` (time in `values[0]`, in units of `time_scale` s) by the module's rules
+/// with the nominal period `period_s`, or the median step of `rows` when `None`; rejected
+/// lines go to `errors`. It is [`Orderer`] fed every row and finished, so a log read at
+/// once and one read as it arrives are ordered alike.
+pub(crate) fn order(
+    rows: Vec<Row>,
+    time_scale: f64,
+    period_s: Option<f64>,
+    errors: &mut Vec<LogLineError>,
+) -> Timeline {
+    let period_s = period_s.or_else(|| {
+        let times: Vec<f64> = rows.iter().map(|r| r.values[0] * time_scale).collect();
+        nominal_period(&times)
+    });
+    let mut orderer = Orderer::new(time_scale, period_s);
     let mut out = Timeline {
-        period_s: nominal_period(&times),
+        period_s,
         ..Timeline::default()
     };
-    // Without a step forward there is no period: equal times still merge, and every step
-    // back is a reset, so the kept times still increase.
-    let p = out.period_s.unwrap_or(f64::MIN_POSITIVE);
-    let mut segment: Vec<Timed> = Vec::new();
-    // Offset from the logged clock to the joined one, for the current segment.
-    let mut shift = 0.0;
-    for (i, row) in rows.into_iter().enumerate() {
-        let t = times[i];
-        let Some(last) = segment.last().map(|s| s.t_s - shift) else {
-            segment.push(Timed {
-                t_s: t,
+    for row in rows {
+        orderer.push(row);
+        orderer.drain(&mut out, errors, false);
+    }
+    orderer.drain(&mut out, errors, true);
+    out
+}
+
+/// The median positive step of the times of `rows` (in units of `time_scale` s): the
+/// nominal period of a log whose first rows are these.
+pub(crate) fn period_of(rows: &[Row], time_scale: f64) -> Option<f64> {
+    let times: Vec<f64> = rows.iter().map(|r| r.values[0] * time_scale).collect();
+    nominal_period(&times)
+}
+
+/// The module's rules applied to rows as they arrive. A row that jumps waits for the next
+/// [`GLITCH_LOOKAHEAD`] rows (or the end) to be judged; a kept sample is final once no
+/// later row can be put before it or merged into it (it is more than 3 P before the latest,
+/// or its segment has ended).
+#[derive(Clone, Debug)]
+pub(crate) struct Orderer {
+    time_scale: f64,
+    p: f64,
+    /// Rows not yet judged, in arrival order.
+    waiting: std::collections::VecDeque<Row>,
+    /// The current segment's samples, in time order; some may still move.
+    segment: Vec<Timed>,
+    /// Offset from the logged clock to the joined one, for the current segment.
+    shift: f64,
+}
+
+impl Orderer {
+    /// Rules with nominal period `period_s` (without one, equal times still merge and
+    /// every step back is a reset, so the kept times still increase).
+    pub(crate) fn new(time_scale: f64, period_s: Option<f64>) -> Self {
+        Self {
+            time_scale,
+            p: period_s.unwrap_or(f64::MIN_POSITIVE),
+            waiting: Default::default(),
+            segment: Vec::new(),
+            shift: 0.0,
+        }
+    }
+
+    /// Takes the next row (time in `values[0]`).
+    pub(crate) fn push(&mut self, row: Row) {
+        self.waiting.push_back(row);
+    }
+
+    /// Judges every waiting row that can be judged (all of them at the `end`), then moves
+    /// the samples that are final into `out` (all of them at the `end`).
+    pub(crate) fn drain(&mut self, out: &mut Timeline, errors: &mut Vec<LogLineError>, end: bool) {
+        while let Some(row) = self.waiting.front() {
+            let t = row.values[0] * self.time_scale;
+            let Some(last) = self.segment.last().map(|s| s.t_s - self.shift) else {
+                let row = self.waiting.pop_front().expect("a front row");
+                let t_s = t + self.shift;
+                self.segment.push(Timed {
+                    t_s,
+                    row,
+                    weight: 1.0,
+                });
+                continue;
+            };
+            let d = t - last;
+            let p = self.p;
+            if (-REORDER_PERIODS * p..=GAP_PERIODS * p).contains(&d) {
+                let row = self.waiting.pop_front().expect("a front row");
+                place(&mut self.segment, out, row, t + self.shift, p);
+                continue;
+            }
+            if !end && self.waiting.len() <= GLITCH_LOOKAHEAD {
+                break;
+            }
+            let row = self.waiting.pop_front().expect("a front row");
+            // A later line continues the clock from before the jump: within its steps of
+            // `last`, and (for a jump forward) before the jumped time, which a real gap's
+            // lines are not.
+            let continues = |k: usize| {
+                self.waiting.get(k - 1).is_some_and(|r| {
+                    let dk = r.values[0] * self.time_scale - last;
+                    (0.0..=(k + 1) as f64 * GAP_PERIODS * p).contains(&dk) && (d < 0.0 || dk < d)
+                })
+            };
+            if (1..=GLITCH_LOOKAHEAD).any(continues) {
+                errors.push(note(
+                    &row,
+                    format!("time glitch: {t} s between {last} s and the lines after it"),
+                ));
+                continue;
+            }
+            let joined_end = last + self.shift;
+            let join =
+                if d > 0.0 { d } else { f64::INFINITY }.min((GAP_PERIODS * p).max(MIN_JOIN_S));
+            self.shift = joined_end + join - t;
+            out.gaps.push(LogGap {
+                line: row.line,
+                from_s: joined_end,
+                to_s: joined_end + join,
+                logged_from_s: last,
+                logged_to_s: t,
+            });
+            out.samples.append(&mut self.segment);
+            let t_s = t + self.shift;
+            self.segment.push(Timed {
+                t_s,
                 row,
                 weight: 1.0,
             });
-            continue;
-        };
-        let d = t - last;
-        if (-REORDER_PERIODS * p..=GAP_PERIODS * p).contains(&d) {
-            place(&mut segment, &mut out, row, t + shift, p);
-            continue;
         }
-        let continues = |k: usize| {
-            times
-                .get(i + k)
-                .is_some_and(|tk| (0.0..=(k + 1) as f64 * GAP_PERIODS * p).contains(&(tk - last)))
+        let settled = if end {
+            self.segment.len()
+        } else {
+            let latest = self.segment.last().map_or(f64::NEG_INFINITY, |s| s.t_s);
+            let before = latest - (REORDER_PERIODS + 2.0 * SAME_TIME_PERIODS) * self.p;
+            self.segment.partition_point(|s| s.t_s < before)
         };
-        if (1..=GLITCH_LOOKAHEAD).any(continues) {
-            errors.push(note(
-                &row,
-                format!("time glitch: {t} s between {last} s and the lines after it"),
-            ));
-            continue;
-        }
-        let joined_end = last + shift;
-        let join = if d > 0.0 { d } else { f64::INFINITY }.min((GAP_PERIODS * p).max(MIN_JOIN_S));
-        shift = joined_end + join - t;
-        out.gaps.push(LogGap {
-            line: row.line,
-            from_s: joined_end,
-            to_s: joined_end + join,
-            logged_from_s: last,
-            logged_to_s: t,
-        });
-        out.samples.append(&mut segment);
-        segment.push(Timed {
-            t_s: t + shift,
-            row,
-            weight: 1.0,
-        });
+        out.samples.extend(self.segment.drain(..settled));
     }
-    out.samples.append(&mut segment);
-    out
 }
 
 /// Puts `row` (at joined time `t`) into `segment`: merged into a sample at the same time,
@@ -203,7 +281,7 @@ mod tests {
     fn a_glitch_is_rejected_and_a_reset_joins_a_new_segment_after_a_gap() {
         let times = [0.0, 10.0, 20.0, 4.29e9, 30.0, 40.0, 0.0, 10.0, 20.0];
         let mut errors = Vec::new();
-        let t = order(rows(&times), 1e-3, &mut errors);
+        let t = order(rows(&times), 1e-3, None, &mut errors);
         assert_eq!(t.period_s, Some(0.01));
         assert_eq!(errors.iter().map(|e| e.line).collect::<Vec<_>>(), vec![4]);
         assert_eq!(kept_lines(&t), vec![1, 2, 3, 5, 6, 7, 8, 9]);
@@ -218,7 +296,7 @@ mod tests {
     fn jitter_is_kept_swaps_are_reordered_and_equal_times_merged() {
         let times = [0.0, 12.0, 19.0, 31.0, 29.0, 40.0, 40.0, 50.0];
         let mut errors = Vec::new();
-        let t = order(rows(&times), 1e-3, &mut errors);
+        let t = order(rows(&times), 1e-3, None, &mut errors);
         assert!(errors.is_empty() && t.gaps.is_empty());
         assert_eq!(kept_lines(&t), vec![1, 2, 3, 5, 4, 6, 8]);
         assert_eq!((t.reordered, t.merged), (1, 1));
@@ -229,17 +307,29 @@ mod tests {
     #[test]
     fn without_a_step_forward_equal_times_merge_and_a_step_back_is_a_reset() {
         let mut errors = Vec::new();
-        let t = order(rows(&[5.0, 5.0, 3.0, 3.0]), 1.0, &mut errors);
+        let t = order(rows(&[5.0, 5.0, 3.0, 3.0]), 1.0, None, &mut errors);
         assert_eq!(t.period_s, None);
         assert_eq!((kept_lines(&t), t.merged, t.gaps.len()), (vec![1, 3], 2, 1));
         assert!(t.samples[0].t_s < t.samples[1].t_s);
     }
 
     #[test]
+    fn a_stall_of_fifteen_periods_is_a_gap_and_loses_no_sample() {
+        // The lines after a stall are after its jumped time: not a glitch's clock.
+        let times: Vec<f64> = (0..10).chain(25..60).map(|k| 10.0 * k as f64).collect();
+        let mut errors = Vec::new();
+        let t = order(rows(&times), 1e-3, None, &mut errors);
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(t.samples.len(), times.len());
+        assert_eq!(t.gaps.len(), 1);
+        assert!((t.samples[10].t_s - 0.25).abs() < 1e-12, "joined as logged");
+    }
+
+    #[test]
     fn a_long_stop_is_a_gap_shortened_to_one_second() {
         let times = [0.0, 0.1, 0.2, 100.2, 100.3];
         let mut errors = Vec::new();
-        let t = order(rows(&times), 1.0, &mut errors);
+        let t = order(rows(&times), 1.0, None, &mut errors);
         assert_eq!(t.gaps.len(), 1);
         assert!((t.samples[3].t_s - 1.2).abs() < 1e-12, "{:?}", t.samples[3]);
         assert!((t.gaps[0].logged_to_s - t.gaps[0].logged_from_s - 100.0).abs() < 1e-9);

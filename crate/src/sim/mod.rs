@@ -41,8 +41,8 @@ use health::Health;
 use journal::Journal;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+pub use replay::SharedLog;
 use replay::{LogSensor, LogTruth};
-use std::sync::Arc;
 
 /// What a simulation records, and in how much memory.
 #[derive(Clone, Debug, PartialEq)]
@@ -138,7 +138,7 @@ pub struct Simulation {
     estimates: Vec<Estimate>,
     health: Health,
     options: SimOptions,
-    replay: Option<Arc<RateLog>>,
+    replay: Option<SharedLog>,
     journal: Journal,
     accuracy: Option<AccuracyTracker>,
 }
@@ -192,10 +192,22 @@ impl Simulation {
         log: RateLog,
         options: SimOptions,
     ) -> Result<Self, String> {
-        log.median_dt_s()
+        Self::live(lab, params, SharedLog::new(log), options)
+    }
+
+    /// [`Simulation::replay`] of a log that may still grow (a live session appends its
+    /// samples as they become final): [`Simulation::step`] goes onto samples the log has,
+    /// and [`Simulation::can_step`] says whether the next step's sample has arrived.
+    pub fn live(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        log: SharedLog,
+        options: SimOptions,
+    ) -> Result<Self, String> {
+        log.read()
+            .median_dt_s()
             .filter(|d| *d > 0.0)
             .ok_or("the log needs at least two samples with increasing times")?;
-        let log = Arc::new(log);
         let mut rng = ChaCha8Rng::seed_from_u64(0);
         let mut run = lab.build(&params, &mut rng);
         run.truth = Box::new(LogTruth::new(log.clone()));
@@ -222,11 +234,11 @@ impl Simulation {
         run: LabRun,
         options: SimOptions,
         layout: Layout,
-        replay: Option<Arc<RateLog>>,
+        replay: Option<SharedLog>,
     ) -> Self {
         let recorder = Recorder::with_budget(layout.specs().to_vec(), options.budget_bytes);
         let n = run.estimators.len();
-        let dt_s = match replay.as_ref().and_then(|l| l.median_dt_s()) {
+        let dt_s = match replay.as_ref().and_then(|l| l.read().median_dt_s()) {
             Some(dt) => dt,
             None => lab.dt_s(&params),
         };
@@ -264,8 +276,21 @@ impl Simulation {
     }
 
     /// The log being replayed, if this is a replay.
-    pub fn replay_log(&self) -> Option<&RateLog> {
-        self.replay.as_deref()
+    pub fn replay_log(&self) -> Option<std::sync::RwLockReadGuard<'_, RateLog>> {
+        self.replay.as_ref().map(SharedLog::read)
+    }
+
+    /// Whether a step can be taken now: always, except in a replay whose log has no sample
+    /// after the current time yet (a live session waiting for its data).
+    pub fn can_step(&self) -> bool {
+        self.replay.as_ref().is_none_or(|log| {
+            let log = log.read();
+            let tol = 1e-6 * log.period_s;
+            log.t_s
+                .last()
+                .zip(log.t_s.first())
+                .is_some_and(|(b, a)| b - a > self.t_s + tol)
+        })
     }
 
     /// The lab.
@@ -412,7 +437,7 @@ impl Simulation {
     pub fn reset(&mut self, seed: u64) {
         let options = self.options.clone();
         let fresh = match self.replay.take() {
-            Some(log) => Self::replay(self.lab, self.params.clone(), (*log).clone(), options),
+            Some(log) => Self::live(self.lab, self.params.clone(), log, options),
             None => Self::with_options(self.lab, self.params.clone(), seed, options)
                 .map_err(|e| e.to_string()),
         };
@@ -424,7 +449,7 @@ impl Simulation {
     /// One step: the lab's fixed one, or a replay's to its next sample.
     pub fn step(&mut self) {
         let dt_s = match &self.replay {
-            Some(log) => log.step_after(self.t_s),
+            Some(log) => log.read().step_after(self.t_s),
             None => self.dt_s,
         };
         self.run.truth.draw_noise(&mut self.rng);

@@ -8,7 +8,40 @@ use crate::model::{
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
 use rand_chacha::ChaCha8Rng;
-use std::sync::Arc;
+use std::sync::{Arc, PoisonError, RwLock, RwLockReadGuard};
+
+/// A log a replay reads, shared by the replay's truth, sensor and simulation. A replayed
+/// file never changes; a live session's log grows as its samples become final
+/// ([`SharedLog::append`]), and the replay steps only onto samples it already has.
+#[derive(Clone, Debug, Default)]
+pub struct SharedLog(Arc<RwLock<RateLog>>);
+
+impl SharedLog {
+    /// Shares `log`.
+    pub fn new(log: RateLog) -> Self {
+        Self(Arc::new(RwLock::new(log)))
+    }
+
+    /// The log as it is now.
+    pub fn read(&self) -> RwLockReadGuard<'_, RateLog> {
+        self.0.read().unwrap_or_else(PoisonError::into_inner)
+    }
+
+    /// Appends samples (times after the last one) and takes the log's lines, gaps and
+    /// counts as they are now: `more` holds only the new samples.
+    pub fn append(&self, more: &RateLog) {
+        let mut log = self.0.write().unwrap_or_else(PoisonError::into_inner);
+        log.t_s.extend_from_slice(&more.t_s);
+        log.rate_rad_s.extend_from_slice(&more.rate_rad_s);
+        log.accel_g.extend_from_slice(&more.accel_g);
+        log.errors.clone_from(&more.errors);
+        log.notes.clone_from(&more.notes);
+        log.gaps.clone_from(&more.gaps);
+        log.counts = more.counts;
+        log.period_s = more.period_s;
+        log.widths.clone_from(&more.widths);
+    }
+}
 
 /// The logged gyro reading (deg/s), a series of the replayed sensors (labelled as paper
 /// 4's simulated MPU-6050 labels its own: one key, one label, one translation).
@@ -24,16 +57,17 @@ const LOGGED_ACCEL_ANGLE_DEG: Quantity = Quantity::new(
 /// sample), the logged rate stands in for the true rate, the angle is unknown (so every
 /// error is missing).
 pub struct LogTruth {
-    log: Arc<RateLog>,
+    log: SharedLog,
     t_s: f64,
     index: Option<usize>,
 }
 
 impl LogTruth {
     /// Starts one period before the log's first sample.
-    pub fn new(log: Arc<RateLog>) -> Self {
+    pub fn new(log: SharedLog) -> Self {
+        let period_s = log.read().period_s;
         Self {
-            t_s: -log.period_s,
+            t_s: -period_s,
             log,
             index: None,
         }
@@ -48,9 +82,10 @@ impl TruthModel for LogTruth {
 
     fn step(&mut self, dt_s: f64) {
         self.t_s += dt_s;
-        let tol = SNAP_PERIODS * self.log.period_s;
+        let log = self.log.read();
+        let tol = SNAP_PERIODS * log.period_s;
         let next = self.index.map_or(0, |k| k + 1);
-        if let Some(t) = self.log.replay_time_s(next) {
+        if let Some(t) = log.replay_time_s(next) {
             if (t - self.t_s).abs() <= tol {
                 self.t_s = t;
             }
@@ -63,8 +98,7 @@ impl TruthModel for LogTruth {
     fn state(&self) -> TruthState {
         let rate = self
             .index
-            .and_then(|k| self.log.rate_rad_s.get(k))
-            .copied()
+            .and_then(|k| self.log.read().rate_rad_s.get(k).copied())
             .unwrap_or(f64::NAN);
         TruthState {
             t_s: self.t_s,
@@ -84,14 +118,14 @@ impl TruthModel for LogTruth {
 /// roll the accelerometer gives, atan2(a_y, a_z); missing at a step without a sample (a
 /// gap shows as a break).
 pub struct LogSensor {
-    log: Arc<RateLog>,
+    log: SharedLog,
     next: usize,
     current: Option<usize>,
 }
 
 impl LogSensor {
     /// Starts before the log's first sample.
-    pub fn new(log: Arc<RateLog>) -> Self {
+    pub fn new(log: SharedLog) -> Self {
         Self {
             log,
             next: 0,
@@ -104,9 +138,9 @@ impl SensorModel for LogSensor {
     fn apply_params(&mut self, _params: &ParamValues) {}
 
     fn sample(&mut self, truth: &TruthState, _dt_s: f64, _rng: &mut ChaCha8Rng) -> Measurements {
-        let tol = SNAP_PERIODS * self.log.period_s;
-        self.current = self
-            .log
+        let log = self.log.read();
+        let tol = SNAP_PERIODS * log.period_s;
+        self.current = log
             .replay_time_s(self.next)
             .filter(|t| *t <= truth.t_s + tol)
             .map(|_| self.next);
@@ -115,8 +149,8 @@ impl SensorModel for LogSensor {
         }
         Measurements {
             t_s: truth.t_s,
-            gyro_axis_rad_s: self.current.map(|k| self.log.rate_rad_s[k]),
-            accel_body_g: self.current.and_then(|k| self.log.accel_g.get(k).copied()),
+            gyro_axis_rad_s: self.current.map(|k| log.rate_rad_s[k]),
+            accel_body_g: self.current.and_then(|k| log.accel_g.get(k).copied()),
             ..Default::default()
         }
     }
@@ -126,7 +160,7 @@ impl SensorModel for LogSensor {
             SeriesSpec::of(SeriesKey::sensors(&LOGGED_GYRO_DEG_S), SeriesGroup::Rate),
             SeriesSpec::of(SeriesKey::sensors(&LOGGED_SAMPLE), SeriesGroup::Lab),
         ];
-        if !self.log.accel_g.is_empty() {
+        if !self.log.read().accel_g.is_empty() {
             s.push(SeriesSpec::of(
                 SeriesKey::sensors(&LOGGED_ACCEL_ANGLE_DEG),
                 SeriesGroup::Attitude,
@@ -137,15 +171,16 @@ impl SensorModel for LogSensor {
 
     fn extra_values(&self, out: &mut Extras<'_>) {
         let k = self.current;
-        let rate = k.and_then(|k| self.log.rate_rad_s.get(k));
+        let log = self.log.read();
+        let rate = k.and_then(|k| log.rate_rad_s.get(k));
         out.put(
             &LOGGED_GYRO_DEG_S,
             rate.map_or(f64::NAN, |w| w.to_degrees()),
         );
         out.put(&LOGGED_SAMPLE, if k.is_some() { 1.0 } else { 0.0 });
-        if !self.log.accel_g.is_empty() {
+        if !log.accel_g.is_empty() {
             let angle = k
-                .and_then(|k| self.log.accel_g.get(k))
+                .and_then(|k| log.accel_g.get(k))
                 .map_or(f64::NAN, |a| a.y.atan2(a.z).to_degrees());
             out.put(&LOGGED_ACCEL_ANGLE_DEG, angle);
         }

@@ -31,12 +31,7 @@ impl Simulation {
     /// what `options` selects.
     fn restart(&self, options: SimOptions) -> Result<Simulation, String> {
         match &self.replay {
-            Some(log) => Self::replay(
-                self.lab,
-                self.initial_params.clone(),
-                (**log).clone(),
-                options,
-            ),
+            Some(log) => Self::live(self.lab, self.initial_params.clone(), log.clone(), options),
             None => Self::with_options(self.lab, self.initial_params.clone(), self.seed, options)
                 .map_err(|e| e.to_string()),
         }

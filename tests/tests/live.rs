@@ -1,0 +1,166 @@
+//! A live session (a phone's samples arriving in bursts, with the real world's trouble)
+//! run as the page runs it — samples appended to the replay's log as they become final,
+//! the loop stepping only onto samples it has — against the replay of its record, as
+//! `attlab replay --lab p4 --log record.csv --accel-unit g --gyro-unit deg_s` makes it.
+#![cfg(not(target_arch = "wasm32"))]
+
+use attlab::model::ParamValues;
+use attlab::sensors::IMU_LOG;
+use attlab::sensors::live::{LiveStream, PHONE_SCALES, phone_line, zero_mount};
+use attlab::sim::{Selection, SharedLog, SimOptions, Simulation};
+use nalgebra::{UnitQuaternion, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+/// The phone's true roll (rad) at `t` s: held level, then turned to 90° and held.
+fn roll_rad(t: f64) -> f64 {
+    let s = ((t - 4.0) / 3.0).clamp(0.0, 1.0);
+    std::f64::consts::FRAC_PI_2 * (3.0 * s * s - 2.0 * s * s * s)
+}
+
+/// A phone at 60 Hz rolled about its long axis, with the Gyroscope sensor's rad/s and a
+/// few real-world faults: jitter, a repeated event, two swapped, a 0.4-s stall (the tab in
+/// the background), a wild timestamp. Each item is (arrival frame, line).
+fn phone_session(mount: &UnitQuaternion<f64>) -> Vec<(usize, String)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let mut out = Vec::new();
+    let dt = 1.0 / 60.0;
+    for k in 0..1200 {
+        let t = k as f64 * dt;
+        if (6.0..6.4).contains(&t) {
+            continue; // the stall
+        }
+        let jitter = rng.random_range(-0.5..0.5);
+        let phi = roll_rad(t);
+        let rate = (roll_rad(t + 1e-4) - roll_rad(t - 1e-4)) / 2e-4;
+        // What the accelerometer reads (up, 1 g) in the phone's axes after a right-handed
+        // turn φ about its long axis y (body x, the roll axis): x = −g sin φ, z = g cos φ.
+        let g = 9.80665;
+        let accel = Vector3::new(-g * phi.sin(), 0.0, g * phi.cos())
+            + Vector3::from_fn(|_, _| rng.random_range(-0.05..0.05));
+        let gyro =
+            Vector3::new(0.0, rate, 0.0) + Vector3::from_fn(|_, _| rng.random_range(-0.002..0.002));
+        let deg = 180.0 / std::f64::consts::PI;
+        let line = phone_line(1000.0 * t + jitter, accel, gyro, deg, mount);
+        let frame = (t / 0.05) as usize; // bursts of three
+        out.push((frame, line.clone()));
+        if k == 300 {
+            out.push((frame, line.clone())); // the same event twice
+        }
+        if k == 400 {
+            out.push((frame, format!("9e9{}", &line[line.find(',').unwrap()..])));
+        }
+    }
+    out.swap(500, 501);
+    out
+}
+
+fn options() -> SimOptions {
+    SimOptions {
+        selection: Selection::All,
+        ..Default::default()
+    }
+}
+
+/// Runs the session as the page does; returns every recorded row and the record.
+fn run_live(session: &[(usize, String)]) -> (Vec<Vec<f64>>, String, Simulation) {
+    let lab = attlab_tests::lab("p4");
+    let params = ParamValues::defaults(lab.params());
+    let mut stream = LiveStream::new(PHONE_SCALES);
+    let log = SharedLog::default();
+    let mut sim: Option<Simulation> = None;
+    let mut rows = Vec::new();
+    let last_frame = session.last().map_or(0, |(f, _)| *f);
+    for frame in 0..=last_frame + 1 {
+        for (_, line) in session.iter().filter(|(f, _)| *f == frame) {
+            stream.push_line(line);
+        }
+        if frame > last_frame {
+            stream.finish();
+        }
+        log.append(&stream.take_new());
+        if sim.is_none() && log.read().t_s.len() >= 2 {
+            let s = Simulation::live(lab, params.clone(), log.clone(), options()).unwrap();
+            rows.push(s.last_row().to_vec());
+            sim = Some(s);
+        }
+        if let Some(s) = sim.as_mut() {
+            while s.can_step() {
+                s.step();
+                rows.push(s.last_row().to_vec());
+            }
+        }
+    }
+    let record = stream.record("test session");
+    (rows, record, sim.expect("the session ran"))
+}
+
+#[test]
+fn a_recorded_live_session_replays_to_the_same_estimates() {
+    let session = phone_session(&UnitQuaternion::identity());
+    let (live_rows, record, live) = run_live(&session);
+    // What `attlab replay --lab p4 --log record.csv --accel-unit g --gyro-unit deg_s` reads.
+    let lab = attlab_tests::lab("p4");
+    let mut units = IMU_LOG.default_units();
+    for (key, value) in [
+        ("accel_unit", "g"),
+        ("gyro_unit", "deg_s"),
+        ("time_unit", "ms"),
+    ] {
+        units.set_text(IMU_LOG.units, key, value).unwrap();
+    }
+    let log = attlab::labs::read_log(lab, record.as_bytes(), &units).unwrap();
+    assert_eq!(
+        log.errors.len(),
+        1,
+        "the wild time, again: {:?}",
+        log.errors
+    );
+    let span = log.span_s();
+    let params = ParamValues::defaults(lab.params());
+    let mut replay = Simulation::replay(lab, params, log, options()).unwrap();
+    let mut rows = vec![replay.last_row().to_vec()];
+    while replay.t_s() < span - 1e-9 {
+        replay.step();
+        rows.push(replay.last_row().to_vec());
+    }
+    assert_eq!(replay.specs(), live.specs());
+    assert_eq!(rows.len(), live_rows.len(), "steps");
+    let mut compared = 0;
+    for (k, (a, b)) in live_rows.iter().zip(&rows).enumerate() {
+        for (j, (x, y)) in a.iter().zip(b).enumerate() {
+            let same = (x.is_nan() && y.is_nan()) || (x - y).abs() <= 1e-9 * x.abs().max(1e-300);
+            assert!(
+                same,
+                "step {k}, {}: live {x}, replay {y}",
+                live.specs()[j].name
+            );
+            compared += usize::from(!x.is_nan());
+        }
+    }
+    assert!(compared > 10_000, "{compared} numbers compared");
+    // The estimate followed the phone: held at 90° after the turn.
+    let kf = live.value("kf.angle_deg").unwrap();
+    assert!((kf - 90.0).abs() < 3.0, "KF roll at the end: {kf}°");
+}
+
+#[test]
+fn zero_takes_the_pose_held_then_as_level() {
+    // "Zero" pressed while the phone was at 90° (its accelerometer read +1 g on body y):
+    // from then on that pose is level, and the level start reads as a roll of −90°.
+    let mount = zero_mount(Vector3::new(0.0, 1.0, 0.0));
+    let session = phone_session(&mount);
+    let (rows, _, live) = run_live(&session);
+    let angle = live.series_index("kf.angle_deg").unwrap();
+    let time = live.series_index("t_s").unwrap();
+    let before_turn = rows
+        .iter()
+        .find(|r| r[time] >= 3.5)
+        .expect("a row at 3.5 s");
+    let (start, end) = (before_turn[angle], live.value("kf.angle_deg").unwrap());
+    assert!(
+        (start + 90.0).abs() < 3.0,
+        "KF roll before the turn: {start}°"
+    );
+    assert!(end.abs() < 3.0, "KF roll at the end: {end}°");
+}
