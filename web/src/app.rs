@@ -240,6 +240,10 @@ impl AttLabApp {
             last_png: self.last_png.as_ref(),
             lesson_step: self.state.lesson().map(|l| l.step),
             playing: self.state.run().playing,
+            t_s: self.state.sim().t_s(),
+            angles_rad: (self.state.sim().estimates().iter())
+                .map(|e| e.angle_rad.unwrap_or(f64::NAN))
+                .collect(),
             views: self
                 .regions
                 .views

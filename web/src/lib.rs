@@ -11,6 +11,7 @@
 pub mod a11y;
 pub mod app;
 pub mod export;
+pub mod live_io;
 pub mod panels;
 pub mod platform;
 pub mod python;

@@ -115,6 +115,11 @@ pub struct Status<'a> {
     pub lesson_step: Option<usize>,
     /// The run is playing (not paused).
     pub playing: bool,
+    /// Simulation time (s).
+    pub t_s: f64,
+    /// Each estimator's angle now (rad; NaN for one without an angle): what a live
+    /// session's page test compares with the replay of its record.
+    pub angles_rad: Vec<f64>,
 }
 
 /// Publishes the status (browser only).
@@ -169,6 +174,13 @@ pub fn publish_status(status: &Status<'_>) {
             let _ = Reflect::set(&o, &"lessonStep".into(), &JsValue::from_f64(step as f64));
         }
         let _ = Reflect::set(&o, &"playing".into(), &JsValue::from_bool(status.playing));
+        let _ = Reflect::set(&o, &"tS".into(), &JsValue::from_f64(status.t_s));
+        let angles: Array = status
+            .angles_rad
+            .iter()
+            .map(|a| JsValue::from_f64(*a))
+            .collect();
+        let _ = Reflect::set(&o, &"anglesRad".into(), &angles);
         let _ = Reflect::set(
             &o,
             &"recorderBytes".into(),

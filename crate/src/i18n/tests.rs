@@ -84,11 +84,16 @@ fn every_message_formats_without_an_error_in_both() {
                 "paper_att",
                 "paper_rate",
                 "paper_bias",
+                "source",
+                "api",
+                "state",
             ];
             for name in words.into_iter().chain(more) {
                 args.set(name, "x");
             }
-            for name in ["realtime", "asked", "step", "rate", "frame", "sim", "mib"] {
+            for name in [
+                "realtime", "asked", "step", "rate", "frame", "sim", "mib", "baud",
+            ] {
                 args.set(name, "1");
             }
             for name in ["series", "id", "why"] {

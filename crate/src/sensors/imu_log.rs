@@ -252,8 +252,13 @@ fn check_accel_unit(log: &RateLog, units: &ParamValues) -> Result<(), String> {
 
 /// [`parse_imu_log`] with the unit choices of [`IMU_LOG`].
 fn parse_imu_with(text: &[u8], units: &ParamValues) -> RateLog {
+    parse_imu_log(text, imu_scales(units))
+}
+
+/// The scales the unit choices `units` of [`IMU_LOG`] name.
+pub fn imu_scales(units: &ParamValues) -> ImuScales {
     let defaults = ImuScales::default();
-    let scales = ImuScales {
+    ImuScales {
         time: time_unit(units, "time_unit"),
         accel: AccelUnit::ALL
             .get(units.index("accel_unit"))
@@ -261,8 +266,7 @@ fn parse_imu_with(text: &[u8], units: &ParamValues) -> RateLog {
         gyro: GyroUnit::ALL
             .get(units.index("gyro_unit"))
             .map_or(defaults.gyro, |(u, _)| *u),
-    };
-    parse_imu_log(text, scales)
+    }
 }
 
 #[cfg(test)]

@@ -36,13 +36,11 @@ use crate::model::{
     SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
-use crate::sensors::RateLog;
 use health::Health;
 use journal::Journal;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 pub use replay::SharedLog;
-use replay::{LogSensor, LogTruth};
 
 /// What a simulation records, and in how much memory.
 #[derive(Clone, Debug, PartialEq)]
@@ -181,50 +179,6 @@ impl Simulation {
         ))
     }
 
-    /// Runs `lab`'s estimators on a recorded gyro log instead of simulated truth and sensors
-    /// (paper 1's laboratory mode). The clock is the log's (less its first time), starting
-    /// one period P before the first sample; each step goes to the next sample and delivers
-    /// it, so every sample is delivered once (a gap is stepped through at P, without
-    /// samples). There is no truth, so every error series is missing.
-    pub fn replay(
-        lab: &'static dyn Lab,
-        params: ParamValues,
-        log: RateLog,
-        options: SimOptions,
-    ) -> Result<Self, String> {
-        Self::live(lab, params, SharedLog::new(log), options)
-    }
-
-    /// [`Simulation::replay`] of a log that may still grow (a live session appends its
-    /// samples as they become final): [`Simulation::step`] goes onto samples the log has,
-    /// and [`Simulation::can_step`] says whether the next step's sample has arrived.
-    pub fn live(
-        lab: &'static dyn Lab,
-        params: ParamValues,
-        log: SharedLog,
-        options: SimOptions,
-    ) -> Result<Self, String> {
-        log.read()
-            .median_dt_s()
-            .filter(|d| *d > 0.0)
-            .ok_or("the log needs at least two samples with increasing times")?;
-        let mut rng = ChaCha8Rng::seed_from_u64(0);
-        let mut run = lab.build(&params, &mut rng);
-        run.truth = Box::new(LogTruth::new(log.clone()));
-        run.sensors = Box::new(LogSensor::new(log.clone()));
-        let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
-        Ok(Self::assemble(
-            lab,
-            params,
-            0,
-            rng,
-            run,
-            options,
-            layout,
-            Some(log),
-        ))
-    }
-
     #[allow(clippy::too_many_arguments)]
     fn assemble(
         lab: &'static dyn Lab,
@@ -273,24 +227,6 @@ impl Simulation {
     /// simulation about to be replaced, so the old and the new budget are never held at once.
     pub fn release_recorder(&mut self) {
         self.recorder = Recorder::with_window(Vec::new(), 2);
-    }
-
-    /// The log being replayed, if this is a replay.
-    pub fn replay_log(&self) -> Option<std::sync::RwLockReadGuard<'_, RateLog>> {
-        self.replay.as_ref().map(SharedLog::read)
-    }
-
-    /// Whether a step can be taken now: always, except in a replay whose log has no sample
-    /// after the current time yet (a live session waiting for its data).
-    pub fn can_step(&self) -> bool {
-        self.replay.as_ref().is_none_or(|log| {
-            let log = log.read();
-            let tol = 1e-6 * log.period_s;
-            log.t_s
-                .last()
-                .zip(log.t_s.first())
-                .is_some_and(|(b, a)| b - a > self.t_s + tol)
-        })
     }
 
     /// The lab.

@@ -1,12 +1,14 @@
 //! Replaying a recorded gyro log (paper 1's laboratory mode) or IMU log (paper 4's rig)
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
+use super::{SimOptions, Simulation, layout_of};
 use crate::model::{
-    Extras, LOGGED_SAMPLE, LabData, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup,
-    SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, LOGGED_SAMPLE, Lab, LabData, Measurements, ParamValues, Quantity, SensorModel,
+    SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use crate::sensors::RateLog;
 use nalgebra::{UnitQuaternion, Vector3};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::sync::{Arc, PoisonError, RwLock, RwLockReadGuard};
 
@@ -52,6 +54,70 @@ const LOGGED_ACCEL_ANGLE_DEG: Quantity = Quantity::new(
     "accelerometer angle θ_acc = atan2(a_y, a_z)",
     "deg",
 );
+
+impl Simulation {
+    /// Runs `lab`'s estimators on a recorded gyro log instead of simulated truth and sensors
+    /// (paper 1's laboratory mode). The clock is the log's (less its first time), starting
+    /// one period P before the first sample; each step goes to the next sample and delivers
+    /// it, so every sample is delivered once (a gap is stepped through at P, without
+    /// samples). There is no truth, so every error series is missing.
+    pub fn replay(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        log: RateLog,
+        options: SimOptions,
+    ) -> Result<Self, String> {
+        Self::live(lab, params, SharedLog::new(log), options)
+    }
+
+    /// [`Simulation::replay`] of a log that may still grow (a live session appends its
+    /// samples as they become final): [`Simulation::step`] goes onto samples the log has,
+    /// and [`Simulation::can_step`] says whether the next step's sample has arrived.
+    pub fn live(
+        lab: &'static dyn Lab,
+        params: ParamValues,
+        log: SharedLog,
+        options: SimOptions,
+    ) -> Result<Self, String> {
+        log.read()
+            .median_dt_s()
+            .filter(|d| *d > 0.0)
+            .ok_or("the log needs at least two samples with increasing times")?;
+        let mut rng = ChaCha8Rng::seed_from_u64(0);
+        let mut run = lab.build(&params, &mut rng);
+        run.truth = Box::new(LogTruth::new(log.clone()));
+        run.sensors = Box::new(LogSensor::new(log.clone()));
+        let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
+        Ok(Self::assemble(
+            lab,
+            params,
+            0,
+            rng,
+            run,
+            options,
+            layout,
+            Some(log),
+        ))
+    }
+
+    /// The log being replayed, if this is a replay.
+    pub fn replay_log(&self) -> Option<std::sync::RwLockReadGuard<'_, RateLog>> {
+        self.replay.as_ref().map(SharedLog::read)
+    }
+
+    /// Whether a step can be taken now: always, except in a replay whose log has no sample
+    /// after the current time yet (a live session waiting for its data).
+    pub fn can_step(&self) -> bool {
+        self.replay.as_ref().is_none_or(|log| {
+            let log = log.read();
+            let tol = 1e-6 * log.period_s;
+            log.t_s
+                .last()
+                .zip(log.t_s.first())
+                .is_some_and(|(b, a)| b - a > self.t_s + tol)
+        })
+    }
+}
 
 /// "Truth" of a replay: time runs on the log's clock (from one period before its first
 /// sample), the logged rate stands in for the true rate, the angle is unknown (so every

@@ -22,6 +22,7 @@ mod checks;
 mod driver;
 mod fuzz;
 mod lessons;
+mod live;
 mod replay;
 mod screens;
 mod server;
@@ -29,6 +30,7 @@ mod soak;
 
 use checks::*;
 use driver::*;
+use replay::{click_mirrored, eventually, mirror_says};
 use server::*;
 
 /// The real Chromium binary (`/usr/bin/chromium` is a wrapper script).

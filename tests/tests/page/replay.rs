@@ -31,7 +31,7 @@ fn restarted_log() -> String {
 }
 
 /// Clicks the mirrored control labelled `label`; whether it was there.
-fn click_mirrored(session: &Session<'_>, label: &str) -> bool {
+pub(crate) fn click_mirrored(session: &Session<'_>, label: &str) -> bool {
     let script = format!(
         "const e = [...document.querySelectorAll('#attlab_a11y [aria-label]')]\
            .find(e => e.getAttribute('aria-label') === {label:?}); \
@@ -43,7 +43,7 @@ fn click_mirrored(session: &Session<'_>, label: &str) -> bool {
 }
 
 /// Whether some mirrored text contains every part of `parts`.
-fn mirror_says(session: &Session<'_>, parts: &[&str]) -> bool {
+pub(crate) fn mirror_says(session: &Session<'_>, parts: &[&str]) -> bool {
     let script = format!(
         "const parts = {}; return [...document.querySelectorAll('#attlab_a11y *')]\
            .some(e => {{ const t = (e.getAttribute('aria-label') || '') + ' ' + e.textContent; \
@@ -56,7 +56,7 @@ fn mirror_says(session: &Session<'_>, parts: &[&str]) -> bool {
 }
 
 /// Polls `ready` every 100 ms for up to 20 s.
-fn eventually(mut ready: impl FnMut() -> bool) -> bool {
+pub(crate) fn eventually(mut ready: impl FnMut() -> bool) -> bool {
     let start = Instant::now();
     while start.elapsed() < Duration::from_secs(20) {
         if ready() {

@@ -240,5 +240,8 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
                     }
                 }
             });
+            if format.id == attlab::sensors::IMU_LOG.id {
+                commands.extend(super::live::live_sensors(ui, app));
+            }
         });
 }

@@ -8,6 +8,7 @@ mod cycle;
 mod keys;
 mod lab_tools;
 mod lesson;
+mod live;
 mod narration;
 mod narrow;
 mod share;

@@ -15,6 +15,7 @@ mod io;
 mod jobs;
 mod lesson;
 mod link_words;
+mod live;
 mod run;
 mod share;
 mod slicer;
@@ -25,6 +26,7 @@ pub use io::{IoCommand, IoState};
 pub use jobs::Job;
 pub use lesson::{LessonCommand, LessonState};
 pub use link_words::link_problem;
+pub use live::{BAUDS, LiveCommand, LiveSource, LiveState};
 pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
 pub use share::{QrModules, ShareCommand, ShareOptions, qr};
 pub use url::UrlCommand;
@@ -78,6 +80,8 @@ pub enum Command {
     Lesson(LessonCommand),
     /// The share dialog.
     Share(ShareCommand),
+    /// Live sensors.
+    Live(LiveCommand),
     /// Show this message.
     Notify(Message),
     /// Remove message `i`.
@@ -111,6 +115,12 @@ impl From<LessonCommand> for Command {
 impl From<ShareCommand> for Command {
     fn from(c: ShareCommand) -> Self {
         Self::Share(c)
+    }
+}
+
+impl From<LiveCommand> for Command {
+    fn from(c: LiveCommand) -> Self {
+        Self::Live(c)
     }
 }
 
@@ -165,6 +175,8 @@ pub struct AppState {
     lesson: Option<LessonState>,
     /// The share dialog's choices, while it is open.
     share: Option<ShareOptions>,
+    /// A live session (a phone's sensors, a serial port), while one is open.
+    live: Option<LiveState>,
 }
 
 impl AppState {
@@ -181,6 +193,7 @@ impl AppState {
             link_problems: Vec::new(),
             lesson: None,
             share: None,
+            live: None,
         }
     }
 
@@ -243,6 +256,7 @@ impl AppState {
             Command::Url(c) => return self.apply_url(c),
             Command::Lesson(c) => self.apply_lesson(c),
             Command::Share(c) => return self.apply_share(c),
+            Command::Live(c) => self.apply_live(c),
             Command::Notify(m) => self.messages.push(m),
             Command::Dismiss(i) => {
                 if i < self.messages.len() {

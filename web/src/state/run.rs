@@ -153,7 +153,10 @@ impl AppState {
                 self.apply_view(super::ViewCommand::SelectTab(self.view.plots.tab));
             }
             // The run holds while a job brings a re-run up to it.
-            RunCommand::StepOnce if self.run.jobs.is_empty() => self.sim.step(),
+            // A live run steps only onto samples that have arrived.
+            RunCommand::StepOnce if self.run.jobs.is_empty() && self.sim.can_step() => {
+                self.sim.step()
+            }
             RunCommand::StepOnce => {}
             RunCommand::SetSeed(seed) => self.run.seed = seed,
             RunCommand::NewSeed => {
@@ -195,6 +198,9 @@ impl AppState {
     /// A fresh run of `lab` with `params`, recording the tab shown and the lesson step's
     /// tiles; the jobs under way and a replayed log end with the old run.
     pub(super) fn restart(&mut self, lab: &'static dyn Lab, params: ParamValues) {
+        if self.live.take().is_some() {
+            crate::live_io::stop();
+        }
         self.drop_jobs();
         self.sim.release_recorder();
         let tab = self.view.plots.tab;
@@ -264,6 +270,11 @@ impl AppState {
             self.run.last_frame = Some(now);
             self.advance_job(STEP_BUDGET);
             return;
+        }
+        if self.live.is_some() {
+            // A live run goes at the pace its samples arrive.
+            self.run.last_frame = Some(now);
+            return self.advance_live(now);
         }
         let run = &mut self.run;
         // The stats report the interval as it was; the stepping takes at most 0.1 s of it

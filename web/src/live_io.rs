@@ -1,0 +1,218 @@
+//! The browser's live sensors, as a platform part beside [`crate::platform`]: the phone's
+//! gyro and accelerometer (the Generic Sensor API's `Gyroscope` and `Accelerometer` where
+//! present, otherwise the `devicemotion` event, with iOS's permission prompt) and a serial
+//! port (Web Serial: an Arduino printing MPU-6050 lines).
+//!
+//! A small script (installed once, as `window.attlabLive`) listens to the browser and
+//! queues what arrives; the frame loop takes the queue every frame ([`poll`]), so the page
+//! never waits for data. The queues are bounded: a tab in the background does not grow
+//! them without end, and what was dropped is counted. On the desktop there are no such
+//! sensors: starting one says so.
+
+/// What arrived since the last [`poll`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Polled {
+    /// Phone samples, eight numbers each: time (ms), accelerometer x, y, z (m/s², with
+    /// gravity, the phone's axes), gyro x, y, z (the phone's axes), and the gyro's unit in
+    /// °/s (1 for `devicemotion`'s °/s, 180/π for the Gyroscope sensor's rad/s).
+    pub samples: Vec<f64>,
+    /// Bytes from the serial port.
+    pub bytes: Vec<u8>,
+    /// The source is starting (a prompt open) or delivering.
+    pub running: bool,
+    /// Why it stopped or failed, if it did.
+    pub error: Option<String>,
+    /// Something the user must do (iOS: tap once more to allow the sensors).
+    pub note: Option<String>,
+    /// Which browser API delivers (`Gyroscope + Accelerometer`, `devicemotion`, `Web Serial`).
+    pub api: String,
+    /// Samples or bytes dropped because the queue was full (the page was not drawing).
+    pub dropped: u64,
+}
+
+#[cfg(target_arch = "wasm32")]
+const GLUE: &str = r#"
+if (!window.attlabLive) {
+  const MAX_SAMPLES = 8 * 60000, MAX_BYTES = 4 << 20;
+  const L = window.attlabLive = { samples: [], chunks: [], bytes: 0, running: false,
+    starting: false, error: null, note: null, api: '', dropped: 0, halt: null };
+  L.reset = () => { if (L.halt) { try { L.halt(); } catch (e) {} } L.samples = []; L.chunks = [];
+    L.bytes = 0; L.running = false; L.starting = true; L.error = null; L.note = null; L.api = '';
+    L.dropped = 0; L.halt = null; };
+  L.fail = (why) => { if (L.running || L.starting) { L.error = why; } L.running = false;
+    L.starting = false; };
+  L.run = (api) => { L.running = true; L.starting = false; L.api = api; };
+  L.push = (t, a, g, unit) => {
+    if (L.samples.length >= MAX_SAMPLES) { L.samples.splice(0, 8); L.dropped++; }
+    L.samples.push(t, a[0], a[1], a[2], g[0], g[1], g[2], unit);
+  };
+  const motion = () => {
+    const h = (e) => { const a = e.accelerationIncludingGravity, r = e.rotationRate;
+      if (!a || !r || a.x === null || r.alpha === null) return;
+      L.push(e.timeStamp, [a.x, a.y, a.z], [r.beta, r.gamma, r.alpha], 1); };
+    window.addEventListener('devicemotion', h);
+    L.run('devicemotion');
+    L.halt = () => window.removeEventListener('devicemotion', h);
+  };
+  const askThenMotion = () => DeviceMotionEvent.requestPermission().then((s) => {
+      if (s === 'granted') { motion(); } else { L.fail('motion sensors: permission denied'); } });
+  L.startPhone = (hz) => {
+    L.reset();
+    if ('Gyroscope' in window && 'Accelerometer' in window) {
+      try {
+        const acc = new Accelerometer({ frequency: hz }), gyr = new Gyroscope({ frequency: hz });
+        let a = null;
+        acc.addEventListener('reading', () => { a = [acc.x, acc.y, acc.z]; });
+        gyr.addEventListener('reading', () => {
+          if (a) L.push(gyr.timestamp, a, [gyr.x, gyr.y, gyr.z], 180 / Math.PI); });
+        const onError = (e) => L.fail('motion sensors: ' + e.error.name + ': ' + e.error.message);
+        acc.addEventListener('error', onError); gyr.addEventListener('error', onError);
+        acc.start(); gyr.start();
+        L.run('Gyroscope + Accelerometer');
+        L.halt = () => { acc.stop(); gyr.stop(); };
+        return;
+      } catch (e) { /* no access: the event below */ }
+    }
+    if (!('DeviceMotionEvent' in window)) { L.fail('this browser has no motion sensors'); return; }
+    if (typeof DeviceMotionEvent.requestPermission !== 'function') { motion(); return; }
+    // iOS asks inside a tap: now, if this tap still counts, else at the next one.
+    askThenMotion().catch(() => {
+      L.note = 'tap the page once more to allow the motion sensors';
+      const again = () => askThenMotion().catch((e) => L.fail('motion sensors: ' + e));
+      window.addEventListener('touchend', again, { once: true });
+      window.addEventListener('click', again, { once: true });
+    });
+  };
+  L.startSerial = async (baud) => {
+    L.reset();
+    if (!('serial' in navigator)) {
+      L.fail('this browser has no Web Serial (Chrome, Edge and Opera on a computer; Firefox from 151)');
+      return;
+    }
+    let port, reader;
+    try { port = await navigator.serial.requestPort(); }
+    catch (e) { L.fail('no port chosen (' + e.message + ')'); return; }
+    try { await port.open({ baudRate: baud }); }
+    catch (e) { L.fail('cannot open the port: ' + e.message); return; }
+    L.run('Web Serial');
+    let stopped = false;
+    L.halt = () => { stopped = true; if (reader) reader.cancel().catch(() => {}); };
+    const gone = (e) => { if (e.target === port) L.fail('the device was unplugged'); };
+    navigator.serial.addEventListener('disconnect', gone);
+    // A read error (a framing error, an overrun) is not the end: the port gives a new
+    // stream. The end is the device closing it, unplugging, or Stop.
+    let closed = false;
+    while (!stopped && !closed && L.running) {
+      if (!port.readable) { L.fail('the device was unplugged'); break; }
+      reader = port.readable.getReader();
+      try {
+        for (;;) {
+          const { value, done } = await reader.read();
+          if (done) { closed = true; break; }
+          if (L.bytes + value.length > MAX_BYTES) { L.dropped += value.length; continue; }
+          L.chunks.push(value); L.bytes += value.length;
+        }
+      } catch (e) { L.note = 'serial read error, reading on: ' + e.message; }
+      finally { reader.releaseLock(); }
+    }
+    if (closed && !stopped) L.fail('the device closed the stream');
+    navigator.serial.removeEventListener('disconnect', gone);
+    L.running = false;
+    try { await port.close(); } catch (e) {}
+  };
+  L.stop = () => { if (L.halt) { try { L.halt(); } catch (e) {} } L.halt = null; L.running = false;
+    L.starting = false; };
+  L.poll = () => {
+    const bytes = new Uint8Array(L.bytes); let at = 0;
+    for (const c of L.chunks) { bytes.set(c, at); at += c.length; }
+    const out = { samples: new Float64Array(L.samples), bytes, running: L.running || L.starting,
+      error: L.error, note: L.note, api: L.api, dropped: L.dropped };
+    L.samples = []; L.chunks = []; L.bytes = 0; L.error = null; L.note = null; L.dropped = 0;
+    return out;
+  };
+}
+"#;
+
+/// The script's object, installed on first use.
+#[cfg(target_arch = "wasm32")]
+fn glue() -> Result<wasm_bindgen::JsValue, String> {
+    use wasm_bindgen::JsValue;
+    let window = web_sys::window().ok_or("no window")?;
+    let get = || js_sys::Reflect::get(&window, &JsValue::from_str("attlabLive"));
+    if get().map_or(true, |v| v.is_undefined()) {
+        js_sys::Function::new_no_args(GLUE)
+            .call0(&JsValue::NULL)
+            .map_err(|e| format!("{e:?}"))?;
+    }
+    get().map_err(|e| format!("{e:?}"))
+}
+
+/// Calls the script's `method` with `args`.
+#[cfg(target_arch = "wasm32")]
+fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
+    use wasm_bindgen::JsCast as _;
+    let live = glue()?;
+    let f: js_sys::Function = js_sys::Reflect::get(&live, &method.into())
+        .map_err(|e| format!("{e:?}"))?
+        .dyn_into()
+        .map_err(|_| format!("attlabLive.{method} is not a function"))?;
+    let args: js_sys::Array = args.iter().collect();
+    f.apply(&live, &args).map_err(|e| format!("{e:?}"))
+}
+
+/// Starts the phone's motion sensors at `hz` (the iOS prompt appears inside this tap).
+pub fn start_phone(hz: f64) -> Result<(), String> {
+    #[cfg(target_arch = "wasm32")]
+    return call("startPhone", &[hz.into()]).map(|_| ());
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = hz;
+        Err("live sensors run in the web page (a phone's browser)".into())
+    }
+}
+
+/// Asks for a serial port and reads it at `baud`.
+pub fn start_serial(baud: u32) -> Result<(), String> {
+    #[cfg(target_arch = "wasm32")]
+    return call("startSerial", &[baud.into()]).map(|_| ());
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = baud;
+        Err("Web Serial runs in the web page (Chrome or Edge on a computer)".into())
+    }
+}
+
+/// Stops the source (the queue keeps what arrived).
+pub fn stop() {
+    #[cfg(target_arch = "wasm32")]
+    let _ = call("stop", &[]);
+}
+
+/// Takes what arrived since the last call.
+pub fn poll() -> Polled {
+    #[cfg(target_arch = "wasm32")]
+    {
+        use wasm_bindgen::JsCast as _;
+        let Ok(o) = call("poll", &[]) else {
+            return Polled::default();
+        };
+        let get = |k: &str| js_sys::Reflect::get(&o, &k.into()).unwrap_or_default();
+        Polled {
+            samples: get("samples")
+                .dyn_into::<js_sys::Float64Array>()
+                .map(|a| a.to_vec())
+                .unwrap_or_default(),
+            bytes: get("bytes")
+                .dyn_into::<js_sys::Uint8Array>()
+                .map(|a| a.to_vec())
+                .unwrap_or_default(),
+            running: get("running").as_bool().unwrap_or(false),
+            error: get("error").as_string(),
+            note: get("note").as_string(),
+            api: get("api").as_string().unwrap_or_default(),
+            dropped: get("dropped").as_f64().unwrap_or(0.0) as u64,
+        }
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    Polled::default()
+}
