@@ -269,7 +269,7 @@ fn a_log_of_another_labs_format_is_refused_naming_it() {
     };
     let err = read("p1", imu.as_bytes()).unwrap_err();
     assert!(
-        err.contains("have 7 numbers") && err.contains("MPU-6050") && err.contains("lab p4"),
+        err.contains("have 7 numbers") && err.contains("MPU-6050") && err.contains("labs p3, p4"),
         "{err}"
     );
     let rate_log: String = (0..50).map(|k| format!("{},{}\n", 10 * k, k)).collect();
@@ -287,7 +287,7 @@ fn a_log_of_another_labs_format_is_refused_naming_it() {
     let lab = attlab_tests::lab("p2");
     let err = attlab::labs::read_log(lab, imu.as_bytes(), &ParamValues::defaults(&[])).unwrap_err();
     assert!(
-        err.contains("does not replay logs; these do: p1, p4"),
+        err.contains("does not replay logs; these do: p1, p3, p4"),
         "{err}"
     );
     assert!(read("p4", imu.as_bytes()).is_ok());

@@ -62,9 +62,14 @@ fn options() -> SimOptions {
     }
 }
 
-/// Runs the session as the page does; returns every recorded row and the record.
+/// Runs the session through paper 4's lab as the page does; returns every recorded row and
+/// the record.
 fn run_live(session: &[(usize, String)]) -> (Vec<Vec<f64>>, String, Simulation) {
-    let lab = attlab_tests::lab("p4");
+    run_live_in("p4", session)
+}
+
+fn run_live_in(lab: &str, session: &[(usize, String)]) -> (Vec<Vec<f64>>, String, Simulation) {
+    let lab = attlab_tests::lab(lab);
     let params = ParamValues::defaults(lab.params());
     let mut stream = LiveStream::new(PHONE_SCALES);
     let log = SharedLog::default();
@@ -163,4 +168,43 @@ fn zero_takes_the_pose_held_then_as_level() {
         "KF roll before the turn: {start}°"
     );
     assert!(end.abs() < 3.0, "KF roll at the end: {end}°");
+}
+
+/// The roll (deg) of estimator `id`'s vertical in body axes.
+fn roll_of(sim: &Simulation, id: &str) -> f64 {
+    let k = (sim.estimators().iter())
+        .position(|e| e.id() == id)
+        .unwrap_or_else(|| panic!("{} has no estimator {id}", sim.lab().id()));
+    let up = sim.estimates()[k]
+        .attitude
+        .vertical_in_body()
+        .expect("a vertical");
+    up.y.atan2(up.z).to_degrees()
+}
+
+#[test]
+fn a_phone_turns_paper_3s_estimates_on_the_sphere() {
+    // Paper 3's estimators take the three gyro axes and the accelerometer: the tilt of the
+    // accelerometer-aided ones (accelerometer only, the blend, the KF) follows the turn.
+    let session = phone_session(&UnitQuaternion::identity());
+    let (_, _, live) = run_live_in("p3", &session);
+    for id in ["accel", "blend", "kf-uv"] {
+        let roll = roll_of(&live, id);
+        assert!((roll - 90.0).abs() < 3.0, "p3 {id}: roll {roll}°");
+    }
+    // The gyro-only integrators turn with the phone's gyro until the stall at 6 s.
+    let before_stall: Vec<(usize, String)> = (session.iter())
+        .filter(|(f, _)| (*f as f64) * 0.05 < 5.9)
+        .cloned()
+        .collect();
+    let (_, _, live) = run_live_in("p3", &before_stall);
+    let truth = roll_rad(live.t_s()).to_degrees();
+    for id in ["uvz-rk4", "quat-rk4"] {
+        let roll = roll_of(&live, id);
+        assert!(
+            (roll - truth).abs() < 1.0,
+            "p3 {id}: {roll}° at {} s, phone at {truth}°",
+            live.t_s()
+        );
+    }
 }

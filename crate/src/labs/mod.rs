@@ -16,7 +16,7 @@ pub use p3_wz_sphere::WzSphere;
 pub use p4_quadrotor::QuadrotorRoll;
 pub use p5_sensitivity::SensitivityLab;
 
-use crate::model::Lab;
+use crate::model::{Lab, LogFormat};
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {
@@ -71,14 +71,24 @@ pub fn read_log(
     let own = count(format.columns);
     let widest = log.widths.iter().max_by_key(|(_, n)| *n);
     if let Some(&(width, n)) = widest.filter(|(w, n)| *w != format.columns && *n > own) {
-        let readers: Vec<String> = all()
+        let readers: Vec<(&str, &LogFormat)> = all()
             .iter()
             .filter_map(|l| l.page().log_format.map(|f| (l.id(), f)))
             .filter(|(_, f)| f.columns == width)
-            .map(|(id, f)| format!("{} (read by lab {id})", f.name))
             .collect();
         let looks = match readers.first() {
-            Some(r) => format!(" It looks like {r}."),
+            Some((_, f)) => {
+                let labs: Vec<&str> = (readers.iter())
+                    .filter(|(_, g)| g.id == f.id)
+                    .map(|(id, _)| *id)
+                    .collect();
+                let s = if labs.len() == 1 { "" } else { "s" };
+                format!(
+                    " It looks like {} (read by lab{s} {}).",
+                    f.name,
+                    labs.join(", ")
+                )
+            }
             None => String::new(),
         };
         return Err(format!(

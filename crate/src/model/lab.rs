@@ -176,6 +176,12 @@ pub trait Lab: Sync {
     fn dt_s(&self, params: &ParamValues) -> f64;
     /// A fresh run. Initial-condition randomness comes from `rng`.
     fn build(&self, params: &ParamValues, rng: &mut ChaCha8Rng) -> LabRun;
+    /// The run whose truth and sensors a recorded or live log replaces: by default
+    /// [`Lab::build`]. A log has no truth, so a lab whose estimators start from the simulated
+    /// truth's attitude starts them level instead (heading 0, where the log's clock starts).
+    fn build_for_log(&self, params: &ParamValues, rng: &mut ChaCha8Rng) -> LabRun {
+        self.build(params, rng)
+    }
     /// What the page shows (views, body, figures, outages, diagrams, log formats), as data.
     fn page(&self) -> &'static Page {
         &Page::DEFAULT

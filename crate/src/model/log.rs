@@ -81,6 +81,9 @@ pub struct RateLog {
     pub rate_rad_s: Vec<f64>,
     /// Accelerometer readings (g), one per sample for an IMU log, empty for a rate log.
     pub accel_g: Vec<nalgebra::Vector3<f64>>,
+    /// Three-axis gyro readings (rad/s, body axes), one per sample for an IMU log, empty
+    /// for a rate log (whose one axis is [`RateLog::rate_rad_s`]; an IMU's x is too).
+    pub gyro_body_rad_s: Vec<nalgebra::Vector3<f64>>,
     /// Lines that were rejected, with the reason.
     pub errors: Vec<LogLineError>,
     /// Lines kept but moved or merged, with what was done.

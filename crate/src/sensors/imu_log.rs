@@ -13,7 +13,7 @@
 //!
 //! The roll axis is x: the rate is gx and the accelerometer angle atan2(ay, az).
 
-use super::log_lines::{Decoded, read_log};
+use super::log_lines::{Decoded, Sample, read_log};
 use super::rate_log::{TIME_UNIT_NAMES, TimeUnit, time_unit};
 use crate::model::{LogFormat, ParamSpec, ParamValues, RateLog};
 use nalgebra::Vector3;
@@ -167,11 +167,18 @@ pub fn parse_imu_log(bytes: impl AsRef<[u8]>, scales: ImuScales) -> RateLog {
     )
 }
 
-/// One row's numbers (time, ax, ay, az, gx, gy, gz in `scales`) as the roll rate gx (rad/s)
-/// and the acceleration (g): what a replay and a live stream both use.
+/// One row's numbers (time, ax, ay, az, gx, gy, gz in `scales`) as the roll rate gx (rad/s),
+/// the acceleration (g) and the three gyro axes (rad/s): what a replay and a live stream
+/// both use.
 pub(crate) fn decoder(scales: ImuScales) -> impl Fn(&[f64]) -> Decoded {
     let (ka, kg) = (scales.accel.to_g(), scales.gyro.to_rad_s());
-    move |v| Ok((v[4] * kg, Some(Vector3::new(v[1], v[2], v[3]) * ka)))
+    move |v| {
+        let gyro = Vector3::new(v[4], v[5], v[6]) * kg;
+        Ok(Sample {
+            rate_rad_s: gyro.x,
+            imu: Some((Vector3::new(v[1], v[2], v[3]) * ka, gyro)),
+        })
+    }
 }
 
 /// Names of the accelerometer units, as [`AccelUnit::ALL`] orders them (`--accel-unit`).

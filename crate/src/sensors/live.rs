@@ -138,14 +138,13 @@ impl LiveStream {
     fn process(&mut self) {
         // A row is recorded as it came, then decoded (an IMU row always decodes).
         for row in std::mem::take(&mut self.reader.out.rows) {
-            let Ok((rate, accel)) = decoder(self.scales)(&row.values) else {
+            let Ok(decoded) = decoder(self.scales)(&row.values) else {
                 continue;
             };
             self.record.push_str(&row.text);
             self.record.push('\n');
             self.recorded += 1;
-            let mut values = vec![row.values[0], rate];
-            values.extend(accel.iter().flat_map(|a| a.iter().copied()));
+            let values = decoded.values(row.values[0]);
             self.startup.push(Row { values, ..row });
         }
         let time_scale = self.time_scale();

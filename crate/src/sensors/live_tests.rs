@@ -52,6 +52,7 @@ fn append(all: &mut RateLog, new: RateLog) {
     all.t_s.extend(new.t_s);
     all.rate_rad_s.extend(new.rate_rad_s);
     all.accel_g.extend(new.accel_g);
+    all.gyro_body_rad_s.extend(new.gyro_body_rad_s);
     all.errors = new.errors;
     all.counts = new.counts;
     all.gaps = new.gaps;

@@ -244,9 +244,30 @@ pub(crate) fn read_rows(bytes: &[u8], columns: usize, names: &'static str) -> Ro
     lines.out
 }
 
-/// What one row of a log holds once decoded: a rate (rad/s) and, for an IMU log, an
-/// acceleration (g); or why the row cannot be used.
-pub(crate) type Decoded = Result<(f64, Option<Vector3<f64>>), String>;
+/// What one row of a log holds once decoded: the rate about the lab's axis (rad/s) and, for
+/// an IMU log, the acceleration (g) and the three gyro axes (rad/s, body axes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Sample {
+    /// The rate about the lab's axis (rad/s): a rate log's column, an IMU's gx.
+    pub rate_rad_s: f64,
+    /// An IMU's accelerometer (g) and gyro (rad/s), in body axes.
+    pub imu: Option<(Vector3<f64>, Vector3<f64>)>,
+}
+
+impl Sample {
+    /// The row's values once decoded, time first: `[t, rate]` or
+    /// `[t, rate, ax, ay, az, gx, gy, gz]` (what the clock's rules merge and order).
+    pub(crate) fn values(&self, t: f64) -> Vec<f64> {
+        let mut v = vec![t, self.rate_rad_s];
+        if let Some((a, g)) = self.imu {
+            v.extend(a.iter().chain(g.iter()).copied());
+        }
+        v
+    }
+}
+
+/// A decoded row, or why the row cannot be used.
+pub(crate) type Decoded = Result<Sample, String>;
 
 /// Reads `bytes` as a log of `columns` numbers per line (`names` says which), time first
 /// in units of `time_scale` s, its clock repaired ([`timeline`]); `sample` turns one row's
@@ -293,18 +314,18 @@ pub(crate) fn read_log(
     log
 }
 
-/// Appends a kept sample (its row decoded: `[time, rate]` or `[time, rate, ax, ay, az]`)
-/// to `log`.
+/// Appends a kept sample (its row decoded: [`Sample::values`]) to `log`.
 pub(crate) fn push_sample(log: &mut RateLog, s: &timeline::Timed) {
     let v = &s.row.values;
     log.t_s.push(s.t_s);
     log.rate_rad_s.push(v[1]);
-    if let [_, _, x, y, z] = v[..] {
-        log.accel_g.push(Vector3::new(x, y, z));
+    if let [_, _, ax, ay, az, gx, gy, gz] = v[..] {
+        log.accel_g.push(Vector3::new(ax, ay, az));
+        log.gyro_body_rad_s.push(Vector3::new(gx, gy, gz));
     }
 }
 
-/// Each row as `[time, rate]` or `[time, rate, ax, ay, az]` (decoded by `sample`), and the
+/// Each row decoded by `sample` ([`Sample::values`]), and the
 /// rows `sample` rejects as line errors, both in line order.
 fn decode_rows(
     rows: Vec<Row>,
@@ -314,9 +335,8 @@ fn decode_rows(
     let rows = rows
         .into_iter()
         .filter_map(|row| match sample(&row.values) {
-            Ok((rate, accel)) => {
-                let mut values = vec![row.values[0], rate];
-                values.extend(accel.iter().flat_map(|a| a.iter().copied()));
+            Ok(decoded) => {
+                let values = decoded.values(row.values[0]);
                 Some(Row { values, ..row })
             }
             Err(reason) => {

@@ -2,7 +2,7 @@
 //! (and, read by [`super::parse_imu_log`], paper 4's IMU logs with their accelerometer),
 //! parsed leniently — every good line is kept, every bad one reported with its line number.
 
-use super::log_lines::read_log;
+use super::log_lines::{Sample, read_log};
 use crate::model::{LogFormat, ParamSpec, ParamValues, RateLog};
 
 /// Unit of the rate column.
@@ -128,7 +128,10 @@ pub fn parse_rate_counts(
             Some(c) => c.rate(v[1])?,
             None => v[1],
         };
-        Ok((rate * k, None))
+        Ok(Sample {
+            rate_rad_s: rate * k,
+            imu: None,
+        })
     })
 }
 

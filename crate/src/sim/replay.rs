@@ -36,6 +36,7 @@ impl SharedLog {
         log.t_s.extend_from_slice(&more.t_s);
         log.rate_rad_s.extend_from_slice(&more.rate_rad_s);
         log.accel_g.extend_from_slice(&more.accel_g);
+        log.gyro_body_rad_s.extend_from_slice(&more.gyro_body_rad_s);
         log.errors.clone_from(&more.errors);
         log.notes.clone_from(&more.notes);
         log.gaps.clone_from(&more.gaps);
@@ -84,7 +85,7 @@ impl Simulation {
             .filter(|d| *d > 0.0)
             .ok_or("the log needs at least two samples with increasing times")?;
         let mut rng = ChaCha8Rng::seed_from_u64(0);
-        let mut run = lab.build(&params, &mut rng);
+        let mut run = lab.build_for_log(&params, &mut rng);
         run.truth = Box::new(LogTruth::new(log.clone()));
         run.sensors = Box::new(LogSensor::new(log.clone()));
         let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
@@ -217,6 +218,9 @@ impl SensorModel for LogSensor {
             t_s: truth.t_s,
             gyro_axis_rad_s: self.current.map(|k| log.rate_rad_s[k]),
             accel_body_g: self.current.and_then(|k| log.accel_g.get(k).copied()),
+            gyro_body_rad_s: self
+                .current
+                .and_then(|k| log.gyro_body_rad_s.get(k).copied()),
             ..Default::default()
         }
     }

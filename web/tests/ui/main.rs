@@ -15,6 +15,7 @@ mod a11y;
 mod accuracy;
 mod keyboard;
 mod lessons;
+mod live;
 mod narrow;
 mod png;
 mod replay;
@@ -29,6 +30,21 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
         .with_size(egui::vec2(1400.0, 900.0))
         .with_context_setup(attlab_web::render::fonts::install)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
+}
+
+/// Lab `lab_id`'s page with the collapsed section `heading` opened and `button` in it
+/// pressed (both found by their accessible names).
+fn press_in_section(lab_id: &str, heading: &str, button: &str) -> Harness<'static, AttLabApp> {
+    let mut h = harness(lab_id);
+    h.get_by_label(heading).scroll_to_me();
+    h.run();
+    h.get_by_label(heading).click();
+    h.run_steps(3);
+    h.get_by_label(button).scroll_to_me();
+    h.run();
+    h.get_by_label(button).click();
+    h.run();
+    h
 }
 
 /// A harness for `lab_id` whose exports go to a fresh folder named after `tag`.

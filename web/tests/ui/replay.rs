@@ -1,7 +1,7 @@
 //! Replaying a recorded log in the page: every line accounted for, every sample delivered,
 //! a restarted clock joined and shaded.
 
-use super::harness;
+use super::{harness, press_in_section};
 use attlab_web::state::{IoCommand, RunCommand};
 use egui_kittest::kittest::Queryable;
 
@@ -13,15 +13,7 @@ fn replay_example(
     lines: &str,
     rejected: &str,
 ) -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
-    let mut h = harness(lab);
-    h.get_by_label(heading).scroll_to_me();
-    h.run();
-    h.get_by_label(heading).click();
-    h.run_steps(3);
-    h.get_by_label("Replay the example log").scroll_to_me();
-    h.run();
-    h.get_by_label("Replay the example log").click();
-    h.run();
+    let h = press_in_section(lab, heading, "Replay the example log");
     let said = h.state().state.messages().iter().any(|m| {
         !m.is_error && m.text.contains(&format!("replaying {lines}")) && m.text.contains(rejected)
     });

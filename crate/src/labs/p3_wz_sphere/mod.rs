@@ -245,6 +245,8 @@ const SPEC: LabSpec = LabSpec {
 
 const PAGE: Page = Page {
     figures: FIGURES,
+    // An IMU's log, or a live phone or Arduino: the three gyro axes and the accelerometer.
+    log_format: Some(&crate::sensors::IMU_LOG),
     ..Page::DEFAULT
 };
 
@@ -263,28 +265,16 @@ impl Lab for WzSphere {
     fn build(&self, params: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
         let truth = P3Truth::new(params);
         let q0 = truth.state().q_ref_from_body;
-        let wz0 = WzAttitude::from_quaternion(&q0);
-        let mut sensors = GyroAccel {
-            gyro: Gyro3::new(Gyro3Config::default()),
-            accel_sigma_g: 0.0,
-            bump: (0.0, 0.0),
-        };
-        sensors.apply_params(params);
-        let model = IntegrationErrorModel::new(0.0, 0.0);
-        let p0 = Matrix2::identity() * 1e-6;
-        let mut estimators: Vec<Box<dyn Estimator>> = vec![
-            Box::new(WzIntegration::new(wz0, model).tuned_by(gyro_errors)),
-            Box::new(AccelWz::new()),
-            Box::new(BlendedWz::new(wz0, 1.0).tuned_by(|p| p.get("blend_time_const_s"))),
-            Box::new(WzKalman::new(wz0, p0).tuned_by(kf_tuning)),
-            Box::new(QuaternionIntegration::new(q0, model).tuned_by(gyro_errors)),
-        ];
-        estimators.iter_mut().for_each(|e| e.apply_params(params));
-        LabRun {
-            truth: Box::new(truth),
-            sensors: Box::new(sensors),
-            estimators,
-        }
+        build_from(params, truth, q0)
+    }
+
+    /// A log's run: the estimators start level (a phone held flat, screen up).
+    fn build_for_log(&self, params: &ParamValues, _rng: &mut ChaCha8Rng) -> LabRun {
+        build_from(
+            params,
+            P3Truth::new(params),
+            nalgebra::UnitQuaternion::identity(),
+        )
     }
 
     fn page(&self) -> &'static Page {
@@ -293,6 +283,32 @@ impl Lab for WzSphere {
 
     fn study(&self) -> Option<&dyn Study> {
         Some(self)
+    }
+}
+
+/// The run of `truth` with the estimators started at attitude `q0`.
+fn build_from(params: &ParamValues, truth: P3Truth, q0: nalgebra::UnitQuaternion<f64>) -> LabRun {
+    let wz0 = WzAttitude::from_quaternion(&q0);
+    let mut sensors = GyroAccel {
+        gyro: Gyro3::new(Gyro3Config::default()),
+        accel_sigma_g: 0.0,
+        bump: (0.0, 0.0),
+    };
+    sensors.apply_params(params);
+    let model = IntegrationErrorModel::new(0.0, 0.0);
+    let p0 = Matrix2::identity() * 1e-6;
+    let mut estimators: Vec<Box<dyn Estimator>> = vec![
+        Box::new(WzIntegration::new(wz0, model).tuned_by(gyro_errors)),
+        Box::new(AccelWz::new()),
+        Box::new(BlendedWz::new(wz0, 1.0).tuned_by(|p| p.get("blend_time_const_s"))),
+        Box::new(WzKalman::new(wz0, p0).tuned_by(kf_tuning)),
+        Box::new(QuaternionIntegration::new(q0, model).tuned_by(gyro_errors)),
+    ];
+    estimators.iter_mut().for_each(|e| e.apply_params(params));
+    LabRun {
+        truth: Box::new(truth),
+        sensors: Box::new(sensors),
+        estimators,
     }
 }
 
