@@ -42,8 +42,10 @@ if (!window.attlabLive) {
   L.fail = (why) => { if (L.running || L.starting) { L.error = why; } L.running = false;
     L.starting = false; };
   L.run = (api) => { L.running = true; L.starting = false; L.api = api; };
+  // Full (the page has not drawn for minutes): a new sample is dropped and counted; the
+  // gap it leaves is the clock's to show.
   L.push = (t, a, g, unit) => {
-    if (L.samples.length >= MAX_SAMPLES) { L.samples.splice(0, 8); L.dropped++; }
+    if (L.samples.length >= MAX_SAMPLES) { L.dropped++; return; }
     L.samples.push(t, a[0], a[1], a[2], g[0], g[1], g[2], unit);
   };
   const motion = () => {
