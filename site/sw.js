@@ -4,7 +4,7 @@
 // (and refreshes the cache); without a network the last build seen is served. Only
 // same-origin GET requests are handled. The core files are cached at install, so the first
 // visit alone is enough.
-const CACHE = 'attitude-lab-v3';
+const CACHE = 'attitude-lab-v4';
 const CORE = [
   './',
   './index.html',
@@ -13,6 +13,7 @@ const CORE = [
   './icon-512.png',
   './pkg/attlab_web.js',
   './pkg/attlab_web_bg.wasm',
+  './sweep-worker.js',
   './assets/fonts/AttLabSans.ttf',
   './assets/fonts/AttLabMono.ttf',
   './assets/fonts/DejaVuSans-symbols.ttf',

@@ -241,6 +241,21 @@ impl AttLabApp {
             lesson_step: self.state.lesson().map(|l| l.step),
             playing: self.state.run().playing,
             t_s: self.state.sim().t_s(),
+            sweep_progress: self.state.run().sweep.as_ref().map(|(_, s)| s.progress()),
+            sweep_timing: {
+                let t = self.state.run().sweep_timing;
+                (t.workers, t.wall_s)
+            },
+            sweep_values: (self.state.run().sweep.iter())
+                .flat_map(|(_, s)| s.points.iter())
+                .map(|p| {
+                    p.objectives
+                        .first()
+                        .or(p.rms.first())
+                        .copied()
+                        .unwrap_or(f64::NAN)
+                })
+                .collect(),
             angles_rad: (self.state.sim().estimates().iter())
                 .map(|e| e.angle_rad.unwrap_or(f64::NAN))
                 .collect(),

@@ -17,8 +17,18 @@ pub mod platform;
 pub mod python;
 pub mod render;
 pub mod state;
+pub mod sweep_workers;
 
 pub use app::AttLabApp;
+
+/// Runs one point of a sweep in a Web Worker (`sweep-worker.js`): a
+/// [`attlab::analysis::sweep::PointJob`] as JSON in, `{"ok": PointDone}` or `{"err": why}`
+/// as JSON out ([`sweep_workers::answer`]).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn sweep_point(job: &str) -> String {
+    sweep_workers::answer(job)
+}
 
 /// Starts the app on the canvas with id `canvas_id` with the page's three fonts (sans,
 /// mono, symbols: `render::fonts::FILES`) and its Russian catalogue (`assets/locales/ru.ftl`),

@@ -135,31 +135,37 @@ if (!window.attlabLive) {
 }
 "#;
 
-/// The script's object, installed on first use.
+/// Calls `method` of the page script `window[global]` with `args`, installing the script
+/// (`glue`, which defines it) on first use. The page's small scripts (live sensors, sweep
+/// workers) are called through here.
 #[cfg(target_arch = "wasm32")]
-fn glue() -> Result<wasm_bindgen::JsValue, String> {
-    use wasm_bindgen::JsValue;
+pub(crate) fn call_glue(
+    global: &str,
+    glue: &str,
+    method: &str,
+    args: &[wasm_bindgen::JsValue],
+) -> Result<wasm_bindgen::JsValue, String> {
+    use wasm_bindgen::{JsCast as _, JsValue};
     let window = web_sys::window().ok_or("no window")?;
-    let get = || js_sys::Reflect::get(&window, &JsValue::from_str("attlabLive"));
+    let get = || js_sys::Reflect::get(&window, &JsValue::from_str(global));
     if get().map_or(true, |v| v.is_undefined()) {
-        js_sys::Function::new_no_args(GLUE)
+        js_sys::Function::new_no_args(glue)
             .call0(&JsValue::NULL)
             .map_err(|e| format!("{e:?}"))?;
     }
-    get().map_err(|e| format!("{e:?}"))
-}
-
-/// Calls the script's `method` with `args`.
-#[cfg(target_arch = "wasm32")]
-fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
-    use wasm_bindgen::JsCast as _;
-    let live = glue()?;
-    let f: js_sys::Function = js_sys::Reflect::get(&live, &method.into())
+    let object = get().map_err(|e| format!("{e:?}"))?;
+    let f: js_sys::Function = js_sys::Reflect::get(&object, &method.into())
         .map_err(|e| format!("{e:?}"))?
         .dyn_into()
-        .map_err(|_| format!("attlabLive.{method} is not a function"))?;
+        .map_err(|_| format!("{global}.{method} is not a function"))?;
     let args: js_sys::Array = args.iter().collect();
-    f.apply(&live, &args).map_err(|e| format!("{e:?}"))
+    f.apply(&object, &args).map_err(|e| format!("{e:?}"))
+}
+
+/// Calls the live script's `method` with `args`.
+#[cfg(target_arch = "wasm32")]
+fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
+    call_glue("attlabLive", GLUE, method, args)
 }
 
 /// Starts the phone's motion sensors at `hz` (the iOS prompt appears inside this tap).

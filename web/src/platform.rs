@@ -120,6 +120,35 @@ pub struct Status<'a> {
     /// Each estimator's angle now (rad; NaN for one without an angle): what a live
     /// session's page test compares with the replay of its record.
     pub angles_rad: Vec<f64>,
+    /// The sweep's progress (0…1), if one is open.
+    pub sweep_progress: Option<f64>,
+    /// How the last sweep ran: workers (0: slices) and wall time (s) once done.
+    pub sweep_timing: (usize, Option<f64>),
+    /// Each finished point's first objective (or first RMS without a scoring).
+    pub sweep_values: Vec<f64>,
+}
+
+/// The sweep part of the status (`progress`, `workers`, `wallS`, `values`), if a sweep is open.
+#[cfg(target_arch = "wasm32")]
+fn sweep_status(status: &Status<'_>) -> Option<js_sys::Object> {
+    use js_sys::{Array, Object, Reflect};
+    use wasm_bindgen::JsValue;
+    let p = status.sweep_progress?;
+    let sweep = Object::new();
+    let (workers, wall_s) = status.sweep_timing;
+    let values: Array = (status.sweep_values.iter())
+        .map(|v| JsValue::from_f64(*v))
+        .collect();
+    let _ = Reflect::set(&sweep, &"progress".into(), &JsValue::from_f64(p));
+    let _ = Reflect::set(
+        &sweep,
+        &"workers".into(),
+        &JsValue::from_f64(workers as f64),
+    );
+    let wall = wall_s.map_or(JsValue::NULL, JsValue::from_f64);
+    let _ = Reflect::set(&sweep, &"wallS".into(), &wall);
+    let _ = Reflect::set(&sweep, &"values".into(), &values);
+    Some(sweep)
 }
 
 /// Publishes the status (browser only).
@@ -181,6 +210,9 @@ pub fn publish_status(status: &Status<'_>) {
             .map(|a| JsValue::from_f64(*a))
             .collect();
         let _ = Reflect::set(&o, &"anglesRad".into(), &angles);
+        if let Some(sweep) = sweep_status(status) {
+            let _ = Reflect::set(&o, &"sweep".into(), &sweep);
+        }
         let _ = Reflect::set(
             &o,
             &"recorderBytes".into(),

@@ -20,7 +20,13 @@ const WEB_PROFILE: &str = "web";
 const OPT_LEVEL: &str = "-O2";
 
 /// Files of `site/` copied to the root of `dist/`.
-const SITE_FILES: &[&str] = &["sw.js", "manifest.json", "icon-192.png", "icon-512.png"];
+const SITE_FILES: &[&str] = &[
+    "sw.js",
+    "sweep-worker.js",
+    "manifest.json",
+    "icon-192.png",
+    "icon-512.png",
+];
 
 /// The `dist/` folder.
 pub fn dist_dir() -> PathBuf {

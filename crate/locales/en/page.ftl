@@ -184,6 +184,10 @@ sweep-size-grid = { $cells } cells × { $seeds ->
    *[other] { $seeds } seeds
 }
 sweep-each = { $s } s each
+sweep-workers = { $n ->
+    [one] in 1 background worker
+   *[other] in { $n } background workers
+}
 sweep-on-log = on the replayed log
 sweep-diverged = { $at }: a filter diverged (missing samples)
 sweep-unscored = { $at }: not scored: { $why }
@@ -206,6 +210,7 @@ msg-log-skipped = { $name }: skipped { $why }
 msg-log-more-bad = { $name }: … and { $n } more bad lines
 msg-log-replaying = { $name }: replaying { $n } samples of { $lines } lines ({ $reordered } put back in order, { $merged } merged, { $rejected } rejected; clock gaps: { $gaps })
 msg-log-failed = { $name }: { $why }
+msg-workers-failed = sweep workers stopped ({ $why }); the sweep goes on in slices on the page's thread
 
 ## Live sensors (a phone's gyro and accelerometer, an Arduino over Web Serial)
 live-title = Live sensors

@@ -186,6 +186,10 @@ sweep-size-grid = { $cells } клеток × { $seeds ->
    *[many] { $seeds } зёрен
 }
 sweep-each = по { $s } с
+sweep-workers = { $n ->
+    [one] в { $n } фоновом потоке
+   *[other] в { $n } фоновых потоках
+}
 sweep-on-log = по воспроизводимой записи
 sweep-diverged = { $at }: фильтр разошёлся (пропущенные отсчёты)
 sweep-unscored = { $at }: не оценено: { $why }
@@ -208,6 +212,7 @@ msg-log-skipped = { $name }: пропущено — { $why }
 msg-log-more-bad = { $name }: … и ещё плохих строк: { $n }
 msg-log-replaying = { $name }: воспроизводится { $n } отсчётов из { $lines } строк (переставлено по времени: { $reordered }, слито: { $merged }, отброшено: { $rejected }; разрывов времени: { $gaps })
 msg-log-failed = { $name }: { $why }
+msg-workers-failed = фоновые потоки перебора остановились ({ $why }); перебор продолжается частями в потоке страницы
 
 ## Живые датчики (гироскоп и акселерометр телефона, Arduino через Web Serial)
 live-title = Живые датчики

@@ -11,9 +11,12 @@ use crate::sim::{SimOptions, Simulation};
 
 #[cfg(not(target_arch = "wasm32"))]
 mod parallel;
+mod points;
+
+pub use points::{PointDone, PointJob, run_point_job};
 
 /// Statistics of each series for one value (one cell of a grid).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SweepPoint {
     /// Parameter value.
     pub value: f64,
@@ -21,16 +24,21 @@ pub struct SweepPoint {
     pub grid_value: Option<f64>,
     /// RMS per series over every seed's samples, in the order of [`SweepSpec::series`];
     /// NaN when a sample was missing.
+    #[serde(with = "points::f64_bits")]
     pub rms: Vec<f64>,
     /// Largest |value| per series; NaN when a sample was missing.
+    #[serde(with = "points::f64_bits")]
     pub max_abs: Vec<f64>,
     /// Samples that were NaN, per series (a diverged filter, a missing value).
     pub missing: Vec<usize>,
     /// The lab's scores, medians over the seeds that could be scored (NaN when none could).
+    #[serde(with = "points::f64_bits")]
     pub scores: Vec<f64>,
     /// Smallest and largest of each score over those seeds.
+    #[serde(with = "points::pair_bits")]
     pub score_range: Vec<[f64; 2]>,
     /// The scoring's weighted sums of the median scores.
+    #[serde(with = "points::f64_bits")]
     pub objectives: Vec<f64>,
     /// Seeds run for this point.
     pub runs: u64,

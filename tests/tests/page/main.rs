@@ -27,6 +27,7 @@ mod replay;
 mod screens;
 mod server;
 mod soak;
+mod workers;
 
 use checks::*;
 use driver::*;

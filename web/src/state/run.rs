@@ -44,6 +44,11 @@ pub struct RunState {
     pub sweep: Option<(usize, Sweep)>,
     /// How many sweep steps fit in a frame's budget, from their measured cost.
     sweep_slicer: Slicer,
+    /// The Web Workers running the sweep, if they do.
+    pub(super) pool: Option<super::pool::Pool>,
+    /// How the last sweep ran (workers, wall time).
+    pub sweep_timing: super::pool::SweepTiming,
+    pub(super) sweep_started: Option<Instant>,
     /// Re-runs and exports under way, the first one advancing.
     pub(super) jobs: Vec<Job>,
     /// How many job steps fit in a frame's budget.
@@ -64,6 +69,9 @@ impl RunState {
             stats: Stats::default(),
             sweep: None,
             sweep_slicer: Slicer::default(),
+            pool: None,
+            sweep_timing: Default::default(),
+            sweep_started: None,
             jobs: Vec::new(),
             job_slicer: Slicer::default(),
             pause_at_s: None,
@@ -242,10 +250,14 @@ impl AppState {
             _ => fresh(),
         };
         self.run.sweep = Some((i, sweep));
+        self.start_pool();
     }
 
     /// Runs the background sweep for at most `budget` of wall time.
     fn advance_sweep(&mut self, budget: Duration) {
+        if self.advance_pool() {
+            return;
+        }
         let Some((_, sweep)) = self.run.sweep.as_mut() else {
             return;
         };
@@ -257,6 +269,10 @@ impl AppState {
             let done = sweep.advance(steps);
             slicer.measured(steps, t0.elapsed());
             if done {
+                let timing = &mut self.run.sweep_timing;
+                if timing.wall_s.is_none() {
+                    timing.wall_s = self.run.sweep_started.map(|t| t.elapsed().as_secs_f64());
+                }
                 break;
             }
         }

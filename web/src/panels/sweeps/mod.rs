@@ -65,6 +65,10 @@ fn controls(
                         .show_percentage()
                         .desired_width(180.0),
                 );
+                let workers = app.run().sweep_timing.workers;
+                if workers > 0 {
+                    ui.label(tr_with(app, "sweep-workers", &[("n", workers.into())]));
+                }
                 if ui.button(tr(app, "cancel")).clicked() {
                     commands.push(Command::from(RunCommand::CancelSweep));
                 }

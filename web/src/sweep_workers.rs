@@ -1,0 +1,135 @@
+//! Sweeps on every core in the page: Web Workers (`sweep-worker.js`), each with its own
+//! wasm instance, are handed a sweep's points one at a time as messages ([`PointJob`] as
+//! JSON; no SharedArrayBuffer, which static hosts cannot enable) and answer with the
+//! point's result. The frame loop takes the answers every frame ([`poll`]), so the page
+//! keeps drawing at full rate. Where workers cannot start (the desktop, a browser without
+//! module workers, a worker that fails), the caller falls back to per-frame slices.
+//!
+//! [`PointJob`]: attlab::analysis::sweep::PointJob
+
+#[cfg(target_arch = "wasm32")]
+const GLUE: &str = r#"
+if (!window.attlabWorkers) {
+  const W = window.attlabWorkers = { pool: [], queue: [], done: [], failed: null };
+  const next = (w) => { const j = W.queue.shift(); if (j) { w.postMessage(j); } };
+  W.cancel = () => { for (const w of W.pool) { w.terminate(); } W.pool = []; W.queue = []; };
+  W.start = (jobs, cores) => {
+    W.cancel(); W.done = []; W.failed = null;
+    if (typeof Worker === 'undefined') { return 0; }
+    W.queue = jobs.map((job, id) => ({ id, job }));
+    const n = Math.max(1, Math.min(cores, jobs.length));
+    try {
+      for (let i = 0; i < n; i++) {
+        const w = new Worker('./sweep-worker.js', { type: 'module' });
+        w.onmessage = (e) => { W.done.push(e.data.id, e.data.out); next(w); };
+        w.onerror = (e) => { e.preventDefault(); W.failed = e.message || 'a worker could not start'; W.cancel(); };
+        W.pool.push(w); next(w);
+      }
+    } catch (e) { W.failed = String(e); W.cancel(); return 0; }
+    return W.pool.length;
+  };
+  W.poll = () => { const out = { done: W.done, failed: W.failed }; W.done = []; W.failed = null; return out; };
+}
+"#;
+
+/// What the workers answered since the last [`poll`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Answers {
+    /// `(job index, answer JSON)`, in the order they arrived.
+    pub done: Vec<(usize, String)>,
+    /// Why the workers stopped, if they failed (what is left falls back to slices).
+    pub failed: Option<String>,
+}
+
+#[cfg(target_arch = "wasm32")]
+fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
+    crate::live_io::call_glue("attlabWorkers", GLUE, method, args)
+}
+
+/// The cores a sweep may use besides the page's own thread (at least one).
+pub fn cores() -> usize {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let n = web_sys::window().map_or(2.0, |w| w.navigator().hardware_concurrency());
+        ((n as usize).saturating_sub(1)).clamp(1, 8)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    1
+}
+
+/// Hands `jobs` (JSON) to up to `cores` workers; how many started (0: none, use slices).
+pub fn start(jobs: &[String], cores: usize) -> usize {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let list: js_sys::Array = jobs
+            .iter()
+            .map(|j| wasm_bindgen::JsValue::from_str(j))
+            .collect();
+        call("start", &[list.into(), (cores as f64).into()])
+            .ok()
+            .and_then(|n| n.as_f64())
+            .map_or(0, |n| n as usize)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = (jobs, cores);
+        0
+    }
+}
+
+/// Stops every worker.
+pub fn cancel() {
+    #[cfg(target_arch = "wasm32")]
+    let _ = call("cancel", &[]);
+}
+
+/// Takes the answers that arrived.
+pub fn poll() -> Answers {
+    #[cfg(target_arch = "wasm32")]
+    {
+        let Ok(o) = call("poll", &[]) else {
+            return Answers::default();
+        };
+        let get = |k: &str| js_sys::Reflect::get(&o, &k.into()).unwrap_or_default();
+        let flat: Vec<wasm_bindgen::JsValue> = js_sys::Array::from(&get("done")).to_vec();
+        let done = flat
+            .chunks_exact(2)
+            .filter_map(|p| Some((p[0].as_f64()? as usize, p[1].as_string()?)))
+            .collect();
+        Answers {
+            done,
+            failed: get("failed").as_string(),
+        }
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    Answers::default()
+}
+
+/// A worker's answer to a [`attlab::analysis::sweep::PointJob`]: the JSON of
+/// `{"ok": PointDone}` or `{"err": why}`.
+pub fn answer(job: &str) -> String {
+    use attlab::analysis::sweep::{PointJob, run_point_job};
+    let done = serde_json::from_str::<PointJob>(job)
+        .map_err(|e| format!("a bad sweep job: {e}"))
+        .and_then(|j| run_point_job(&j));
+    let answer = match done {
+        Ok(done) => serde_json::json!({ "ok": done }),
+        Err(why) => serde_json::json!({ "err": why }),
+    };
+    answer.to_string()
+}
+
+/// Reads an [`answer`].
+pub fn read_answer(text: &str) -> Result<attlab::analysis::sweep::PointDone, String> {
+    #[derive(serde::Deserialize)]
+    #[serde(rename_all = "lowercase")]
+    enum Answer {
+        Ok(attlab::analysis::sweep::PointDone),
+        Err(String),
+    }
+    match serde_json::from_str::<Answer>(text) {
+        Ok(Answer::Ok(done)) => Ok(done),
+        Ok(Answer::Err(why)) => Err(why),
+        Err(e) => Err(format!("an unreadable answer: {e}")),
+    }
+}
