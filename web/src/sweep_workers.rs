@@ -111,7 +111,10 @@ pub fn answer(job: &str) -> String {
     use attlab::analysis::sweep::{PointJob, run_point_job};
     let done = serde_json::from_str::<PointJob>(job)
         .map_err(|e| format!("a bad sweep job: {e}"))
-        .and_then(|j| run_point_job(&j));
+        .and_then(|j| {
+            let lab = attlab::labs::find(&j.lab).ok_or_else(|| format!("no lab `{}`", j.lab))?;
+            run_point_job(lab, &j)
+        });
     let answer = match done {
         Ok(done) => serde_json::json!({ "ok": done }),
         Err(why) => serde_json::json!({ "err": why }),

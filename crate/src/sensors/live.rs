@@ -206,7 +206,7 @@ impl LiveStream {
     }
 
     /// The samples that became final since the last call (with the stream's lines, gaps
-    /// and counts as they are now), for [`crate::sim::SharedLog::append`].
+    /// and counts as they are now), for the replay's shared log to append.
     pub fn take_new(&mut self) -> RateLog {
         let mut new = std::mem::take(&mut self.fresh);
         new.period_s = self.timeline.period_s.unwrap_or(0.0);

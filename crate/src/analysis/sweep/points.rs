@@ -127,9 +127,15 @@ impl From<Sweep> for PointDone {
     }
 }
 
-/// Runs `job` (in a worker): its lab's sweep from its base, to the end of its point.
-pub fn run_point_job(job: &PointJob) -> Result<PointDone, String> {
-    let lab = crate::labs::find(&job.lab).ok_or_else(|| format!("no lab `{}`", job.lab))?;
+/// Runs `job` (in a worker) on `lab`, the lab it names (the caller looks it up in the
+/// registry): its sweep from its base, to the end of its point.
+pub fn run_point_job(
+    lab: &'static dyn crate::model::Lab,
+    job: &PointJob,
+) -> Result<PointDone, String> {
+    if lab.id() != job.lab {
+        return Err(format!("the job is for lab {}, not {}", job.lab, lab.id()));
+    }
     let spec = lab
         .sweeps()
         .get(job.sweep)
@@ -194,7 +200,7 @@ mod tests {
         let job: PointJob =
             serde_json::from_str(&serde_json::to_string(&jobs[1]).unwrap()).unwrap();
         assert_eq!(job, jobs[1]);
-        let mut done = run_point_job(&job).unwrap();
+        let mut done = run_point_job(lab, &job).unwrap();
         // A missing score and an infinite one survive the trip.
         done.points[0].scores.push(f64::NAN);
         done.points[0]
@@ -206,7 +212,7 @@ mod tests {
         assert_eq!(back.points[0].rms, done.points[0].rms);
         // The job's point is the sweep's own second point, run alone.
         let whole = sweep.run_in_order();
-        assert_eq!(whole.points[1], run_point_job(&job).unwrap().points[0]);
-        assert!(run_point_job(&PointJob { point: 2, ..job }).is_err());
+        assert_eq!(whole.points[1], run_point_job(lab, &job).unwrap().points[0]);
+        assert!(run_point_job(lab, &PointJob { point: 2, ..job }).is_err());
     }
 }
