@@ -24,8 +24,8 @@ mod runge_kutta;
 mod wz;
 
 pub use covariance::{
-    all_finite, is_symmetric_positive_definite, joseph_update, joseph_update_scalar, nees,
-    propagate_first_order, sparse_mul, symmetrize,
+    NonZeros, all_finite, is_symmetric_positive_definite, joseph_update, joseph_update_scalar,
+    nees, pattern_mul, propagate_first_order, symmetrize,
 };
 pub use euler::EulerYpr;
 pub use integrate::{

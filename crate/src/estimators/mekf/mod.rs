@@ -23,7 +23,7 @@
 //! * Q = diag(q_Λ²·E, q_ω²·E, q_bias²·E) per prediction step, the paper's tuning knobs.
 
 use super::kf::KalmanState;
-use crate::math::{all_finite, propagate_first_order, sparse_mul, symmetrize};
+use crate::math::{all_finite, pattern_mul, propagate_first_order, symmetrize};
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues,
     Quantity, StateInfo,
@@ -188,9 +188,46 @@ pub const fn full_step_flops(n: u64, rows: u64, h_nonzeros: u64, f_nonzeros: u64
     predict + updates + tail
 }
 
+/// F's structurally non-zero entries, row by row (see [`propagate_first_order`]): in the
+/// attitude rows −[ω×] off its diagonal and ½E on ω (the reduced variant: −½E on the gyro
+/// bias, which sits in the same columns 3–5); with ω a state, the rate rows' gravity-gradient
+/// and gyroscopic blocks, dense over columns 0–5. The bias columns 6–8 are zero when ω is a
+/// state; a bias row is always zero.
+const F_NONZEROS: [(usize, usize); 27] = {
+    let mut out = [(0, 0); 27];
+    let mut n = 0;
+    let mut i = 0;
+    while i < 3 {
+        let mut k = 0;
+        while k < 3 {
+            if k != i {
+                out[n] = (i, k);
+                n += 1;
+            }
+            k += 1;
+        }
+        out[n] = (i, 3 + i);
+        n += 1;
+        i += 1;
+    }
+    while i < 6 {
+        let mut k = 0;
+        while k < 6 {
+            out[n] = (i, k);
+            n += 1;
+            k += 1;
+        }
+        i += 1;
+    }
+    out
+};
+
+/// How many of [`F_NONZEROS`] are in the attitude rows: the whole F of the reduced variant.
+const F_ATT_NONZEROS: usize = 9;
+
 /// Non-zero entries of F for [λ, ω, Δω] (the bias columns are zero when ω is a state):
 /// −[ω×] 6, ½E 3, the gravity-gradient block 9 and the gyroscopic block 9.
-pub const FULL_F_NONZEROS: u64 = 27;
+pub const FULL_F_NONZEROS: u64 = F_NONZEROS.len() as u64;
 
 /// Non-zero entries of the twelve H rows of a filter with all four sensors and a gyro bias:
 /// star 1 a row, gyro 2 (ω and its bias), magnetometer and sun 2 (a row of [m×] is zero on
@@ -369,11 +406,14 @@ impl<const N: usize> Estimator for Mekf<N> {
                 d.p *= DIST_P_MAX / peak;
             }
         }
-        self.update(m, &ob);
+        let updated = self.update(m, &ob);
         self.publish();
         let finite = all_finite(self.q.coords.as_slice())
             && all_finite(self.omega.as_slice())
             && all_finite(self.p.as_slice());
+        // Only an update can cost P its definiteness: a prediction adds Φ P Φᵀ and a
+        // diagonal Q ≥ 0 to a P that passed, and a frozen gain leaves P as it is. (Nine steps
+        // in ten are predictions; the check is a Cholesky factor.)
         let att_sigma = 2.0
             * (0..3)
                 .map(|i| self.p[(i, i)])
@@ -381,7 +421,7 @@ impl<const N: usize> Estimator for Mekf<N> {
                 .sqrt();
         if !finite {
             self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
-        } else if !positive_semidefinite(&self.p) {
+        } else if updated && !positive_semidefinite(&self.p) {
             self.status = EstimatorStatus::Diverged(
                 "the covariance lost positive definiteness: R is too small beside P for double precision".into(),
             );

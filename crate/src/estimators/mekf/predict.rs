@@ -12,15 +12,20 @@ impl<const N: usize> Mekf<N> {
         }
     }
 
-    /// q̇ and ω̇ of the model at (q, ω).
+    /// q̇ and ω̇ of the model at (q, ω); ω̇ is zero when `with_rate` is false (the reduced
+    /// variant holds ω at the gyro reading, so its dynamics are not evaluated).
     pub(super) fn derivative(
         &self,
         q: &UnitQuaternion<f64>,
         omega: &Vector3<f64>,
         ob: &Onboard,
+        with_rate: bool,
     ) -> (nalgebra::Quaternion<f64>, Vector3<f64>) {
         let w_rel = omega - q.inverse_transform_vector(&ob.frame_rate_orbit_rad_s);
         let q_dot = q.into_inner() * nalgebra::Quaternion::from_imag(w_rel) * 0.5;
+        if !with_rate {
+            return (q_dot, Vector3::zeros());
+        }
         let eta = q.inverse_transform_vector(&Vector3::z());
         let m_gg = eta.cross(&(self.j * eta)) * ob.gravity_gradient_coeff;
         let h = ob.wheel_momentum_body;
@@ -34,10 +39,7 @@ impl<const N: usize> Mekf<N> {
         let has_omega = self.cfg.states.omega().is_some();
         let (q0, w0) = (self.q, self.rate());
         // RK4 of (q, ω); the reduced variant holds ω at the gyro reading.
-        let step = |q: &UnitQuaternion<f64>, w: &Vector3<f64>| {
-            let (qd, wd) = self.derivative(q, w, ob);
-            (qd, if has_omega { wd } else { Vector3::zeros() })
-        };
+        let step = |q: &UnitQuaternion<f64>, w: &Vector3<f64>| self.derivative(q, w, ob, has_omega);
         let add = |q: &UnitQuaternion<f64>, dq: &nalgebra::Quaternion<f64>, h: f64| {
             UnitQuaternion::new_normalize(q.into_inner() + dq * h)
         };
@@ -68,7 +70,7 @@ impl<const N: usize> Mekf<N> {
                     gamma[(o + i, i)] = dt;
                 }
             }
-            self.dist_sens += sparse_mul(&f, &self.dist_sens) * dt + gamma;
+            self.dist_sens += pattern_mul(&f, self.f_nonzeros(), &self.dist_sens) * dt + gamma;
         }
     }
 
@@ -98,9 +100,17 @@ impl<const N: usize> Mekf<N> {
             }
         }
         // Φ P Φᵀ for Φ = E + F·dt from F's block structure, then the diagonal Q.
-        self.p = propagate_first_order(&self.p, f, dt);
+        self.p = propagate_first_order(&self.p, f, self.f_nonzeros(), dt);
         for i in 0..N {
             self.p[(i, i)] += q[i];
+        }
+    }
+
+    /// Where [`Self::jacobian`] can be non-zero.
+    pub(super) fn f_nonzeros(&self) -> &'static [(usize, usize)] {
+        match self.cfg.states.omega() {
+            Some(_) => &F_NONZEROS,
+            None => &F_NONZEROS[..F_ATT_NONZEROS],
         }
     }
 
@@ -113,13 +123,13 @@ impl<const N: usize> Mekf<N> {
                 f.fixed_view_mut::<3, 3>(0, o)
                     .copy_from(&(Matrix3::identity() * 0.5));
                 let eta = self.q.inverse_transform_vector(&Vector3::z());
-                let (se, sje) = (skew(&eta), skew(&(self.j * eta)));
-                let fg = se * self.j * se - sje * se;
+                let fg = mul_skew(&skew_mul(&eta, &self.j), &eta)
+                    - skew_mul(&(self.j * eta), &skew(&eta));
                 let k = 2.0 * ob.gravity_gradient_coeff;
                 f.fixed_view_mut::<3, 3>(o, 0)
                     .copy_from(&(self.j_inv * fg * k));
                 let h = ob.wheel_momentum_body;
-                let gyro = skew(&(self.j * w + h)) - skew(w) * self.j;
+                let gyro = skew(&(self.j * w + h)) - skew_mul(w, &self.j);
                 f.fixed_view_mut::<3, 3>(o, o)
                     .copy_from(&(self.j_inv * gyro));
             }
@@ -132,4 +142,26 @@ impl<const N: usize> Mekf<N> {
         }
         f
     }
+}
+
+/// `[v×] m` with the same terms in the same order as the dense product, less the three
+/// products with the zero diagonal of `[v×]` (which add an exact zero): so the same to the last
+/// bit, in 18 multiplications and 9 additions instead of 27 and 18.
+pub(super) fn skew_mul(v: &Vector3<f64>, m: &Matrix3<f64>) -> Matrix3<f64> {
+    let s = skew(v);
+    Matrix3::from_fn(|i, j| match i {
+        0 => s[(0, 1)] * m[(1, j)] + s[(0, 2)] * m[(2, j)],
+        1 => s[(1, 0)] * m[(0, j)] + s[(1, 2)] * m[(2, j)],
+        _ => s[(2, 0)] * m[(0, j)] + s[(2, 1)] * m[(1, j)],
+    })
+}
+
+/// `m [v×]`, likewise.
+pub(super) fn mul_skew(m: &Matrix3<f64>, v: &Vector3<f64>) -> Matrix3<f64> {
+    let s = skew(v);
+    Matrix3::from_fn(|i, j| match j {
+        0 => m[(i, 1)] * s[(1, 0)] + m[(i, 2)] * s[(2, 0)],
+        1 => m[(i, 0)] * s[(0, 1)] + m[(i, 2)] * s[(2, 1)],
+        _ => m[(i, 0)] * s[(0, 2)] + m[(i, 1)] * s[(1, 2)],
+    })
 }

@@ -251,3 +251,80 @@ fn a_turn_of_the_field_about_itself_is_not_observed() {
         "the best-learnt turn: {least:e} of {p0:e}"
     );
 }
+
+/// Every state set's F at a generic point is non-zero only where its pattern says, so the
+/// propagation that reads the pattern alone drops no term; and the propagation equals the
+/// dense Φ P Φᵀ to rounding.
+fn check_pattern<const N: usize>(states: StateSet) {
+    let cfg = MekfConfig {
+        id: "pattern",
+        label: "pattern",
+        sensors: SensorSet::ALL,
+        states,
+        ..filter().cfg
+    };
+    // A generic P: correlations everywhere, positive definite.
+    let a = SMatrix::<f64, N, N>::from_fn(|i, j| ((i * 7 + j * 3) % 11) as f64 * 1e-4 - 4e-4);
+    let p = a * a.transpose() + SMatrix::identity() * 1e-6;
+    let mut f = Mekf::<N>::new(
+        cfg,
+        filter().tuning,
+        UnitQuaternion::from_euler_angles(0.3, -0.2, 0.5),
+        Vector3::new(0.01, -0.02, 0.015),
+        p,
+    );
+    f.last_gyro = Some(Vector3::new(0.011, -0.019, 0.016));
+    let ob = onboard();
+    let jac = f.jacobian(&f.rate(), &ob);
+    let pattern = f.f_nonzeros();
+    for (index, value) in jac.iter().enumerate() {
+        let (i, k) = (index % N, index / N);
+        assert!(
+            *value == 0.0 || pattern.contains(&(i, k)),
+            "{states:?}: F[{i},{k}] = {value} is outside the pattern"
+        );
+    }
+    assert!(
+        pattern.windows(2).all(|w| w[0] < w[1]),
+        "row by row, ascending"
+    );
+    let dt = 0.1;
+    let phi = SMatrix::<f64, N, N>::identity() + jac * dt;
+    let dense = phi * p * phi.transpose();
+    let fast = propagate_first_order(&p, &jac, pattern, dt);
+    assert!(
+        (fast - dense).amax() <= 1e-15 * p.amax(),
+        "{states:?}: {fast} against {dense}"
+    );
+}
+
+#[test]
+fn the_jacobian_is_non_zero_only_in_its_pattern() {
+    check_pattern::<6>(StateSet::AttRate);
+    check_pattern::<6>(StateSet::AttGyroBias);
+    check_pattern::<9>(StateSet::AttRateGyroBias);
+    check_pattern::<9>(StateSet::AttRateMagBias);
+    check_pattern::<9>(StateSet::AttRateMagTurn);
+}
+
+#[test]
+fn the_skew_products_equal_the_dense_ones_to_the_last_bit() {
+    use super::predict::{mul_skew, skew_mul};
+    let mut x = 0.618_033_988_749_895_f64;
+    let mut next = || {
+        x = (x * 997.0 + 0.123).fract();
+        x * 2.0 - 1.0
+    };
+    for _ in 0..1000 {
+        let v = Vector3::new(next(), next() * 1e-3, next() * 1e3);
+        let m = Matrix3::from_fn(|_, _| next() * 0.7);
+        let (a, b) = (skew_mul(&v, &m), mul_skew(&m, &v));
+        let (da, db) = (skew(&v) * m, m * skew(&v));
+        // Bit for bit; only the sign of an exact zero may differ.
+        let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x == 0.0 && y == 0.0);
+        for k in 0..9 {
+            assert!(same(a[k], da[k]), "[v×]m: {a} against {da}");
+            assert!(same(b[k], db[k]), "m[v×]: {b} against {db}");
+        }
+    }
+}

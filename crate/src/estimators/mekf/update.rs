@@ -91,10 +91,24 @@ impl<const N: usize> Mekf<N> {
         }
     }
 
-    pub(super) fn update(&mut self, m: &Measurements, ob: &Onboard) {
+    /// Whether any of this filter's sensors delivered this step (what [`Self::rows`] turns
+    /// into rows): most steps none did, and the rows need not be assembled.
+    fn delivered(&self, m: &Measurements) -> bool {
+        let s = self.cfg.sensors;
+        (s.star && m.star_q_ref_from_body.is_some())
+            || (s.gyro && m.gyro_body_rad_s.is_some() && self.cfg.states.omega().is_some())
+            || (s.mag && m.mag_body_nt.is_some())
+            || (s.sun && m.sun_body.is_some())
+    }
+
+    /// The measurement update; whether it changed P.
+    pub(super) fn update(&mut self, m: &Measurements, ob: &Onboard) -> bool {
+        if !self.delivered(m) {
+            return false;
+        }
         let (rows, present) = self.rows(m, ob);
         if !present.iter().any(|p| *p) {
-            return;
+            return false;
         }
         self.check_geometry(&present, ob);
         // One reference vector and no star tracker: the turn about that vector is not seen.
@@ -153,7 +167,7 @@ impl<const N: usize> Mekf<N> {
                     self.status = EstimatorStatus::Diverged(format!(
                         "update refused: {e} (degenerate geometry?)"
                     ));
-                    return;
+                    return false;
                 }
             }
         }
@@ -161,10 +175,12 @@ impl<const N: usize> Mekf<N> {
             self.gains = Some(new_gains);
         }
         self.nis = [nis, dof];
-        if self.gains.is_none() || freeze {
+        let p_changed = self.gains.is_none() || freeze;
+        if p_changed {
             self.p = err.p;
         }
         self.apply_correction(&err.x);
+        p_changed
     }
 
     /// Two parallel reference vectors and no star tracker: the rotation about them is not
