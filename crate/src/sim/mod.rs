@@ -28,8 +28,10 @@ pub use layout::Layout;
 pub use rerun::{RerunError, RerunItem, RerunJob};
 pub use selection::{Selection, UnknownSeries};
 
-/// Speeds the page offers (simulated seconds per wall-clock second).
-pub const SPEED_RANGE: (f64, f64) = (0.1, 1000.0);
+/// Speeds the page offers (simulated seconds per wall-clock second): up to an orbit of
+/// paper 2 (5 800 s) a second; where the steps do not fit the frame, the page says it is
+/// behind.
+pub const SPEED_RANGE: (f64, f64) = (0.1, 10_000.0);
 
 use crate::model::{
     Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
