@@ -21,8 +21,8 @@ pub mod wz_kalman;
 pub use accel_wz::AccelWz;
 pub use blended_wz::BlendedWz;
 pub use mekf::{
-    FULL_F_NONZEROS, FULL_H_NONZEROS, Mekf, MekfConfig, MekfTuning, Onboard, Retune, SensorSet,
-    StateSet, full_step_flops,
+    FULL_F, FULL_F_NONZEROS, FULL_H_NONZEROS, Mekf, MekfConfig, MekfTuning, Onboard, Retune,
+    SensorSet, StateSet, full_step_flops,
 };
 pub use one_axis_kf::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 pub use quaternion_integration::QuaternionIntegration;

@@ -171,18 +171,25 @@ pub type Retune = fn(&ParamValues, [f64; 3]) -> MekfTuning;
 
 /// Floating-point operations of one [`Mekf`] step with `n` states that processes `rows`
 /// scalar measurement rows whose H rows hold `h_nonzeros` non-zero entries in all, with a
-/// Jacobian F of `f_nonzeros` non-zero entries; counted from the code (a multiply-add is
+/// Jacobian F whose non-zero entries are at `f` (row, column); counted from the code (a multiply-add is
 /// two; a square root or division one):
-/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 367, Φ P Φᵀ by
-///   [`propagate_first_order`] (F P and F (F P)ᵀ 2n per non-zero of F each, the upper
-///   triangle 5n(n + 1)/2), the diagonal Q n: 1207 + 4n·f + 5n(n + 1)/2 + n;
+/// * prediction — RK4 of (q, ω) ≈ 840, the Jacobian ≈ 295 (its four products with a
+///   `[v×]` skip their zero terms), Φ P Φᵀ by [`propagate_first_order`] (F P 2n per entry
+///   of F's pattern `f`, F (F P)ᵀ on the upper triangle 2(n − i) per entry in row i, the
+///   sum 5n(n + 1)/2), the diagonal Q n;
 /// * each scalar row — the residual at the corrected prior 2n, v = P h 2n per non-zero of
 ///   h, s 2 per non-zero, k n, x 2n, the expanded Joseph form of [`crate::math::joseph_update_scalar`]
 ///   3n(n + 1) + n, the NIS 2: 3n² + 9n + 2 + (2n + 2) per non-zero of h;
 /// * assembling the rows ≈ 200, folding the correction ≈ 55, publishing P 2n², the
 ///   positive-definiteness check (scaling 3n² + 2n, Cholesky ≈ n³/3).
-pub const fn full_step_flops(n: u64, rows: u64, h_nonzeros: u64, f_nonzeros: u64) -> u64 {
-    let predict = 1207 + 4 * n * f_nonzeros + 5 * n * (n + 1) / 2 + n;
+pub const fn full_step_flops(n: u64, rows: u64, h_nonzeros: u64, f: &[(usize, usize)]) -> u64 {
+    let mut fpf = 0;
+    let mut e = 0;
+    while e < f.len() {
+        fpf += 2 * (n - f[e].0 as u64);
+        e += 1;
+    }
+    let predict = 1135 + 2 * n * f.len() as u64 + fpf + 5 * n * (n + 1) / 2 + n;
     let updates = rows * (3 * n * n + 9 * n + 2) + (2 * n + 2) * h_nonzeros;
     let tail = 200 + 55 + 2 * n * n + 3 * n * n + 2 * n + n * n * n / 3;
     predict + updates + tail
@@ -221,6 +228,9 @@ const F_NONZEROS: [(usize, usize); 27] = {
     }
     out
 };
+
+/// F's pattern for [λ, ω, Δω], the full filter of [`full_step_flops`].
+pub const FULL_F: &[(usize, usize)] = &F_NONZEROS;
 
 /// How many of [`F_NONZEROS`] are in the attitude rows: the whole F of the reduced variant.
 const F_ATT_NONZEROS: usize = 9;
