@@ -145,10 +145,9 @@ impl Orderer {
     /// Judges every waiting row that can be judged (all of them at the `end`), then moves
     /// the samples that are final into `out` (all of them at the `end`).
     pub(crate) fn drain(&mut self, out: &mut Timeline, errors: &mut Vec<LogLineError>, end: bool) {
-        while let Some(row) = self.waiting.front() {
+        while let Some(row) = self.waiting.pop_front() {
             let t = row.values[0] * self.time_scale;
             let Some(last) = self.segment.last().map(|s| s.t_s - self.shift) else {
-                let row = self.waiting.pop_front().expect("a front row");
                 let t_s = t + self.shift;
                 self.segment.push(Timed {
                     t_s,
@@ -160,14 +159,14 @@ impl Orderer {
             let d = t - last;
             let p = self.p;
             if (-REORDER_PERIODS * p..=GAP_PERIODS * p).contains(&d) {
-                let row = self.waiting.pop_front().expect("a front row");
                 place(&mut self.segment, out, row, t + self.shift, p);
                 continue;
             }
-            if !end && self.waiting.len() <= GLITCH_LOOKAHEAD {
+            // A jump is judged by the lines after it: wait for them (the row goes back).
+            if !end && self.waiting.len() < GLITCH_LOOKAHEAD {
+                self.waiting.push_front(row);
                 break;
             }
-            let row = self.waiting.pop_front().expect("a front row");
             // A later line continues the clock from before the jump: within its steps of
             // `last`, and (for a jump forward) before the jumped time, which a real gap's
             // lines are not.
