@@ -241,7 +241,7 @@ impl AttLabApp {
             lesson_step: self.state.lesson().map(|l| l.step),
             playing: self.state.run().playing,
             t_s: self.state.sim().t_s(),
-            sweep_progress: self.state.run().sweep.as_ref().map(|(_, s)| s.progress()),
+            sweep_progress: self.state.sweep_progress(),
             sweep_timing: {
                 let t = self.state.run().sweep_timing;
                 (t.workers, t.wall_s)

@@ -56,6 +56,7 @@ fn run_sweep(
     }
     let start = Instant::now();
     let frames0 = status["frames"].as_f64().unwrap_or(0.0);
+    let mut last_progress = 0.0;
     loop {
         sleep(Duration::from_millis(500));
         let s = seen(session).ok_or_else(|| {
@@ -65,6 +66,14 @@ fn run_sweep(
                 status.map(|s| s["sweep"].clone())
             )
         })?;
+        // The bar counts finished runs: it never goes back and never passes 1.
+        if !(last_progress..=1.0).contains(&s.progress) {
+            return Err(format!(
+                "{lab}: the sweep's progress went from {last_progress} to {}",
+                s.progress
+            ));
+        }
+        last_progress = s.progress;
         let waited = start.elapsed().as_secs_f64();
         if s.wall_s.is_some() || waited > window_s {
             let fps = (s.frames - frames0) / waited;

@@ -54,6 +54,20 @@ impl AppState {
         }
     }
 
+    /// The running sweep's finished fraction. With workers every answered point counts, in
+    /// order or not: a point answered early waits for the one before it before the sweep
+    /// takes it, and the bar would lag the work done.
+    pub fn sweep_progress(&self) -> Option<f64> {
+        let (_, sweep) = self.run.sweep.as_ref()?;
+        Some(match &self.run.pool {
+            Some(pool) if !sweep.is_done() => {
+                let answered = pool.next + pool.waiting.len();
+                answered as f64 / sweep.point_count().max(1) as f64
+            }
+            _ => sweep.progress(),
+        })
+    }
+
     /// Takes the workers' answers in order; true while they run the sweep (no slices).
     pub(super) fn advance_pool(&mut self) -> bool {
         let Some(pool) = self.run.pool.as_mut() else {

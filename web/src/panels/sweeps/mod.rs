@@ -61,9 +61,11 @@ fn controls(
         Some(s) if !s.is_done() => {
             ui.horizontal(|ui| {
                 ui.add(
-                    egui::ProgressBar::new(s.progress() as f32)
-                        .show_percentage()
-                        .desired_width(180.0),
+                    egui::ProgressBar::new(
+                        app.sweep_progress().unwrap_or_else(|| s.progress()) as f32
+                    )
+                    .show_percentage()
+                    .desired_width(180.0),
                 );
                 let workers = app.run().sweep_timing.workers;
                 if workers > 0 {
