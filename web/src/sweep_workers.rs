@@ -1,6 +1,7 @@
 //! Sweeps on every core in the page: Web Workers (`sweep-worker.js`), each with its own
-//! wasm instance, are handed a sweep's points one at a time as messages ([`PointJob`] as
-//! JSON; no SharedArrayBuffer, which static hosts cannot enable) and answer with the
+//! wasm instance (the page's compiled module, instantiated again), are handed a sweep's
+//! points as messages, one per point and up to sixteen queued in each worker ([`PointJob`] as
+//! JSON; no SharedArrayBuffer, which static hosts cannot enable), and answer with each
 //! point's result. The frame loop takes the answers every frame ([`poll`]), so the page
 //! keeps drawing at full rate. Where workers cannot start (the desktop, a browser without
 //! module workers, a worker that fails), the caller falls back to per-frame slices.
@@ -10,23 +11,42 @@
 #[cfg(target_arch = "wasm32")]
 const GLUE: &str = r#"
 if (!window.attlabWorkers) {
-  const W = window.attlabWorkers = { pool: [], queue: [], done: [], failed: null };
-  const next = (w) => { const j = W.queue.shift(); if (j) { w.postMessage(j); } };
-  W.cancel = () => { for (const w of W.pool) { w.terminate(); } W.pool = []; W.queue = []; };
+  const W = window.attlabWorkers = { pool: [], queue: [], done: [], failed: null, pending: 0, broken: false };
+  // Points queued in each worker: it goes on to the next without waiting for the page's
+  // thread to hand it over, which is busy drawing (a frame can take 100 ms on a slow
+  // machine; a point of p4 takes 5-30). Handed out in turns, so the workers share evenly.
+  const DEPTH = 16;
+  const next = (w) => { const j = W.queue.shift(); if (j) { W.pending++; w.postMessage(j); } };
+  const spawn = () => {
+    const w = new Worker('./sweep-worker.js', { type: 'module' });
+    w.onmessage = (e) => { W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; next(w); };
+    w.onerror = (e) => { e.preventDefault(); W.broken = true; W.failed = e.message || 'a worker could not start'; W.cancel(); };
+    // The page's compiled module, so the worker need not compile the wasm again; a
+    // browser that cannot send one leaves the worker to fetch it.
+    if (window.attlabWasmModule) {
+      try { w.postMessage({ module: window.attlabWasmModule }); } catch (e) { console.info('Attitude Lab: a worker compiles its own wasm:', e); }
+    }
+    W.pool.push(w);
+  };
+  W.cancel = () => { for (const w of W.pool) { w.terminate(); } W.pool = []; W.queue = []; W.pending = 0; };
+  // Workers loaded ahead, while a sweep can be started: loading one takes about half a
+  // second on a slow machine, which a sweep would otherwise wait for.
+  W.warm = (n) => {
+    if (W.broken || typeof Worker === 'undefined') { return 0; }
+    try { while (W.pool.length < n) { spawn(); } } catch (e) { W.broken = true; W.cancel(); }
+    return W.pool.length;
+  };
   W.start = (jobs, cores) => {
-    W.cancel(); W.done = []; W.failed = null;
+    // Idle workers are reused; workers still busy with a stopped sweep are dropped.
+    if (W.pending > 0) { W.cancel(); }
+    W.queue = []; W.done = []; W.failed = null;
     if (typeof Worker === 'undefined') { return 0; }
     W.queue = jobs.map((job, id) => ({ id, job }));
     const n = Math.max(1, Math.min(cores, jobs.length));
-    try {
-      for (let i = 0; i < n; i++) {
-        const w = new Worker('./sweep-worker.js', { type: 'module' });
-        w.onmessage = (e) => { W.done.push(e.data.id, e.data.out); next(w); };
-        w.onerror = (e) => { e.preventDefault(); W.failed = e.message || 'a worker could not start'; W.cancel(); };
-        W.pool.push(w); next(w);
-      }
-    } catch (e) { W.failed = String(e); W.cancel(); return 0; }
-    return W.pool.length;
+    try { while (W.pool.length < n) { spawn(); } } catch (e) { W.failed = String(e); W.cancel(); return 0; }
+    const used = W.pool.slice(0, n);
+    for (let k = 0; k < DEPTH; k++) { for (const w of used) { next(w); } }
+    return used.length;
   };
   W.poll = () => { const out = { done: W.done, failed: W.failed }; W.done = []; W.failed = null; return out; };
 }
@@ -75,6 +95,15 @@ pub fn start(jobs: &[String], cores: usize) -> usize {
         let _ = (jobs, cores);
         0
     }
+}
+
+/// Loads up to `cores` workers ahead of a sweep, so it need not wait for them; nothing
+/// where workers cannot start (or failed once).
+pub fn warm(cores: usize) {
+    #[cfg(target_arch = "wasm32")]
+    let _ = call("warm", &[(cores as f64).into()]);
+    #[cfg(not(target_arch = "wasm32"))]
+    let _ = cores;
 }
 
 /// Stops every worker.

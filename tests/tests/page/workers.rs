@@ -104,6 +104,10 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
         Ok(r) => r,
         Err(e) => return vec![format!("workers: {e}")],
     };
+    // The workers were handed the page's compiled module, not left to compile their own.
+    let shared = session
+        .execute("return window.attlabWorkers ? window.attlabWorkers.shared === true : null;")
+        .ok();
     let (s, s_waited, s_fps) = match run_sweep(session, base, lab, false, window_s) {
         Ok(r) => r,
         Err(e) => return vec![format!("workers: {e}")],
@@ -111,6 +115,11 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
     let mut problems = Vec::new();
     if w.workers == 0 {
         problems.push(format!("workers: {lab}: the sweep did not run in workers"));
+    }
+    if shared != Some(Value::Bool(true)) {
+        problems.push(format!(
+            "workers: {lab}: the workers did not use the page's compiled module ({shared:?})"
+        ));
     }
     if s.workers != 0 {
         problems.push(format!(

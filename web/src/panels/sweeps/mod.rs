@@ -18,6 +18,10 @@ use words::Words;
 
 /// The lab's sweeps.
 pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    if !app.sim().lab().sweeps().is_empty() {
+        // A sweep can be started from here: have its workers loaded before it is.
+        crate::sweep_workers::warm(crate::sweep_workers::cores());
+    }
     for (i, spec) in app.sim().lab().sweeps().iter().enumerate() {
         let title = lab_word(
             app,
