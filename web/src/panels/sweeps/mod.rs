@@ -19,8 +19,9 @@ use words::Words;
 /// The lab's sweeps.
 pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if !app.sim().lab().sweeps().is_empty() {
-        // A sweep can be started from here: have its workers loaded before it is.
-        crate::sweep_workers::warm(crate::sweep_workers::cores());
+        // A sweep can be started from here: have workers loaded before it is. At most two
+        // wait idle (each holds a wasm instance); a sweep starts the rest it may use.
+        crate::sweep_workers::warm(crate::sweep_workers::cores().min(2));
     }
     for (i, spec) in app.sim().lab().sweeps().iter().enumerate() {
         let title = lab_word(
