@@ -204,23 +204,11 @@ impl Drop for Session<'_> {
 }
 
 /// Polls `window.attlabStatus` until it reports `MIN_FRAMES` frames or the timeout passes.
-/// Returns the last status seen (`Null` if the app never set one).
-///
-/// A page that in that time neither started nor showed its error box (the loader hung:
-/// seen once, on the first page of a CI run, with nothing in the console) is reloaded
-/// once, and the output says so with what the loader had reached. A page that failed
-/// visibly, or started and then drew too few frames, is not retried.
+/// Returns the last status seen (`Null` if the app never set one). A page that drew too
+/// few frames gets what its loader had reached printed, with the console: a page that
+/// never started (attlab-serve's tiny_http once left the wasm's request unanswered) says
+/// where it stopped.
 pub(crate) fn wait_for_frames(session: &Session<'_>) -> Value {
-    let status = poll_frames(session);
-    if status["frames"].as_f64().is_some_and(|f| f >= MIN_FRAMES) {
-        return status;
-    }
-    let (state, severe) = print_start_state(session);
-    let hung = status.is_null() && state["errorShown"] != true && !severe;
-    if !hung || session.execute("location.reload(); return true;").is_err() {
-        return status;
-    }
-    println!("page test: RETRY: the page had not started in {FRAME_TIMEOUT:?}; reloaded once");
     let status = poll_frames(session);
     if status["frames"].as_f64().is_none_or(|f| f < MIN_FRAMES) {
         print_start_state(session);
@@ -251,9 +239,8 @@ fn poll_frames(session: &Session<'_>) -> Value {
 
 /// Prints what the page's loader got to, for a page that drew too few frames: where the
 /// start-up reached (`attlabTimings`), whether the error box shows and what it says, and
-/// the console. Returns that state (`Null` if it could not be read) and whether the console
-/// had an error.
-fn print_start_state(session: &Session<'_>) -> (Value, bool) {
+/// the console.
+fn print_start_state(session: &Session<'_>) {
     let script = "const e = document.getElementById('attlab_error'); \
       const l = document.getElementById('attlab_loading'); \
       return JSON.stringify({ url: location.href, readyState: document.readyState, \
@@ -261,28 +248,16 @@ fn print_start_state(session: &Session<'_>) -> (Value, bool) {
         loadingShown: l ? !l.hidden : null, errorShown: e ? !e.hidden : null, \
         errorText: e && !e.hidden ? e.textContent.trim().slice(0, 2000) : null, \
         status: window.attlabStatus || null });";
-    let state = match session.execute(script) {
-        Ok(Value::String(text)) => {
-            println!("page test: the page's loader: {text}");
-            serde_json::from_str(&text).unwrap_or(Value::Null)
+    match session.execute(script) {
+        Ok(state) => println!("page test: the page's loader: {state}"),
+        Err(e) => println!("page test: reading the page's loader state failed: {e}"),
+    }
+    match session.console() {
+        Ok(entries) => {
+            console_problems(&entries);
         }
-        Ok(other) => {
-            println!("page test: the page's loader state is unreadable: {other}");
-            Value::Null
-        }
-        Err(e) => {
-            println!("page test: reading the page's loader state failed: {e}");
-            Value::Null
-        }
-    };
-    let severe = match session.console() {
-        Ok(entries) => !console_problems(&entries).is_empty(),
-        Err(e) => {
-            println!("page test: reading the console failed: {e}");
-            true
-        }
-    };
-    (state, severe)
+        Err(e) => println!("page test: reading the console failed: {e}"),
+    }
 }
 
 /// JS that defines `attlabLater(n, ms)`: a promise that resolves once the app has drawn `n`

@@ -25,14 +25,12 @@ mod lessons;
 mod live;
 mod replay;
 mod screens;
-mod server;
 mod soak;
 mod workers;
 
 use checks::*;
 use driver::*;
 use replay::{click_mirrored, eventually, mirror_says};
-use server::*;
 
 /// The real Chromium binary (`/usr/bin/chromium` is a wrapper script).
 const CHROMIUM: &str = "/usr/lib/chromium/chromium";
@@ -158,10 +156,9 @@ fn page_renders_without_errors() {
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_DIST"]
 fn page_works_offline_after_one_visit() {
     let dist = PathBuf::from(std::env::var("ATTLAB_DIST").expect("set ATTLAB_DIST to dist/"));
-    // Its own server, not attlab-serve's: a network cut must drop the connections Chromium
-    // keeps alive, and tiny_http (which attlab-serve uses) keeps them open when stopped and
-    // cannot send `Connection: close`, so the reload would wait on them for ever.
-    let mut server = StaticServer::start(dist);
+    // A server of its own, to cut: attlab-serve closes every connection after its response,
+    // so once stopped nothing is left for the reload to wait on.
+    let mut server = attlab_serve::start(&dist, 0).expect("serve dist/");
     let url = server.url();
     let driver = Driver::start();
     let session = Session::new(&driver);
@@ -185,10 +182,10 @@ fn page_works_offline_after_one_visit() {
         start.elapsed().as_secs_f64()
     );
     let _ = session.console();
-    server.cut();
+    server.stop();
     // The network is cut: nothing listens on the port any more.
     assert!(
-        TcpStream::connect(("127.0.0.1", server.port)).is_err(),
+        TcpStream::connect(server.addr).is_err(),
         "the server still answers"
     );
     session
