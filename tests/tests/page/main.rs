@@ -99,24 +99,7 @@ fn page_renders_without_errors() {
         }
         None => println!("page test: no first frame within {FRAME_TIMEOUT:?}"),
     }
-    let mut status = wait_for_frames(&session);
-    let more = STEADY_FRAMES - status["frames"].as_f64().unwrap_or(0.0);
-    if more > 0.0 {
-        let _ = session.execute(&format!("{LATER_JS} return attlabLater({more}, 30000);"));
-        status = session
-            .execute(STATUS_SCRIPT)
-            .ok()
-            .and_then(|v| serde_json::from_str(v.as_str()?).ok())
-            .unwrap_or(Value::Null);
-    }
-    println!("page test: attlabStatus = {status}");
-    let mut problems = status_problems(&status);
-    let frames = status["frames"].as_f64().unwrap_or(0.0);
-    if frames < STEADY_FRAMES {
-        problems.push(format!(
-            "first load: {frames} frames, want {STEADY_FRAMES} (it stopped drawing)"
-        ));
-    }
+    let mut problems = steady_problems(&session);
     problems.extend(console_and_screenshot(
         &session,
         "first load",
@@ -167,6 +150,30 @@ fn page_renders_without_errors() {
         "page test failed:\n  - {}",
         problems.join("\n  - ")
     );
+}
+
+/// Problems of the first load: its status once it has drawn [`STEADY_FRAMES`] frames (it
+/// keeps drawing), printed.
+fn steady_problems(session: &Session<'_>) -> Vec<String> {
+    let mut status = wait_for_frames(session);
+    let more = STEADY_FRAMES - status["frames"].as_f64().unwrap_or(0.0);
+    if more > 0.0 {
+        let _ = session.execute(&format!("{LATER_JS} return attlabLater({more}, 30000);"));
+        status = session
+            .execute(STATUS_SCRIPT)
+            .ok()
+            .and_then(|v| serde_json::from_str(v.as_str()?).ok())
+            .unwrap_or(Value::Null);
+    }
+    println!("page test: attlabStatus = {status}");
+    let mut problems = status_problems(&status);
+    let frames = status["frames"].as_f64().unwrap_or(0.0);
+    if frames < STEADY_FRAMES {
+        problems.push(format!(
+            "first load: {frames} frames, want {STEADY_FRAMES} (it stopped drawing)"
+        ));
+    }
+    problems
 }
 
 /// The page works with the network cut after one visit: the service worker serves it.
