@@ -130,34 +130,3 @@ fn the_fuzzer_counts_each_sets_heap_where_the_binary_counts_it() {
         report.max_memory_bytes
     );
 }
-
-#[test]
-fn a_timed_filter_step_allocates_nothing() {
-    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let mut timed = 0;
-    for lab in labs::all() {
-        for mut item in lab.timing_items() {
-            // The first repetitions may start a filter afresh (a clone, on the stack).
-            for _ in 0..1000 {
-                (item.run)();
-            }
-            let region = Region::new(GLOBAL);
-            for _ in 0..5000 {
-                (item.run)();
-            }
-            let allocations = region.change().allocations + region.change().reallocations;
-            assert_eq!(
-                allocations,
-                0,
-                "{}: {} allocated {allocations} times in 5000 steps",
-                lab.id(),
-                item.name
-            );
-            timed += 1;
-        }
-    }
-    assert!(
-        timed >= 2,
-        "the MEKF step and paper 3's integrators are timed ({timed} items)"
-    );
-}
