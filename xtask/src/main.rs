@@ -18,6 +18,7 @@ mod suite;
 mod tools;
 mod wasm;
 
+use site::SizeReport;
 use std::process::ExitCode;
 
 /// Default port for `serve`.
@@ -28,7 +29,8 @@ const USAGE: &str = "usage: cargo xtask <command>
 
 commands:
   serve [--port N] [--no-opt]   build dist/ and serve it on 127.0.0.1:N (default 8080)
-  dist [--no-opt]               build dist/ only
+  dist [--no-opt]               build dist/ only, and print the wasm raw, gzipped and
+                                brotli'd
   test                          run every check and test suite (what CI runs)
   bench                         time every lab natively (attlab bench) and in headless
                                 Chromium (wasm criterion bench of the labs' timing items)
@@ -127,7 +129,7 @@ fn parse(args: &[String]) -> Result<Task, String> {
 fn run(task: Task) -> cmd::Result<()> {
     match task {
         Task::Serve { port, optimise } => {
-            let dist = site::build(optimise)?;
+            let dist = site::build(optimise, SizeReport::Gzip)?;
             let server = serve::start(&dist, port)?;
             println!(
                 "xtask: serving {} at {} (Ctrl-C to stop)",
@@ -137,19 +139,19 @@ fn run(task: Task) -> cmd::Result<()> {
             server.wait();
             Ok(())
         }
-        Task::Dist { optimise } => site::build(optimise).map(|_| ()),
+        Task::Dist { optimise } => site::build(optimise, SizeReport::WithBrotli).map(|_| ()),
         Task::Test => suite::run(),
         Task::Bench => bench(),
         Task::Soak { minutes } => {
             tools::ensure_browser()?;
-            let dist = site::build(true)?;
+            let dist = site::build(true, SizeReport::Gzip)?;
             let server = serve::start(&dist, 0)?;
             println!("xtask: soak of {minutes} min against {}", server.url());
             cmd::run(&mut suite::soak_command(&server.url(), minutes))
         }
         Task::FuzzPage { minutes } => {
             tools::ensure_browser()?;
-            let dist = site::build(true)?;
+            let dist = site::build(true, SizeReport::Gzip)?;
             let server = serve::start(&dist, 0)?;
             println!("xtask: page fuzz of {minutes} min against {}", server.url());
             cmd::run(&mut suite::fuzz_command(&server.url(), minutes))

@@ -16,7 +16,7 @@ const TOP_CRATES: usize = 25;
 /// Builds the site and prints the size report.
 pub fn run() -> Result<()> {
     tools::ensure_twiggy()?;
-    site::build(true)?;
+    site::build(true, site::SizeReport::WithBrotli)?;
     let raw = site::raw_wasm();
     let mut twiggy = cmd::new("twiggy");
     twiggy.args(["top", "-n", "1000000", "-f", "csv"]).arg(&raw);

@@ -220,7 +220,9 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     // Without wasm-opt: `cargo xtask dist` runs it and ships whichever output is smaller
     // gzipped, and for this app that is wasm-bindgen's (-O2 makes the download 3 % bigger),
     // so the page tests test the file a host serves, and the run saves wasm-opt's ~65 s.
-    let dist = suite.step("build site (dist/)", || site::build(false))?;
+    let dist = suite.step("build site (dist/)", || {
+        site::build(false, site::SizeReport::Gzip)
+    })?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     // Every page test but the soak, the page fuzz included (its default: one round of
