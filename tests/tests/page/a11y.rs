@@ -2,8 +2,13 @@
 //! - the accessibility tree (DevTools' `Accessibility.getFullAXTree`) holds every slider of
 //!   the lab, named by its label, with its value;
 //! - a keyboard-only walk: real key events (DevTools' `Input.dispatchKeyEvent`) Tab into the
-//!   canvas and on to paper 5's ε slider, End moves it to its greatest value, and the diagram
-//!   of the update's eigenvalues, drawn for the current ε, changes on screen.
+//!   canvas, Space pauses the run, Tab goes on to paper 5's ε slider, End moves it to its
+//!   greatest value, and the diagram of the update's eigenvalues, drawn for the current ε,
+//!   changes on screen.
+//!
+//! Paused, the app draws only on input, so each key's frames end and the walk waits for the
+//! page to settle; while it ran, every call waited for SwiftShader's frames (the walk took
+//! about 90 s, 41 Tabs).
 
 use super::*;
 use attlab::model::{Lab, ParamKind};
@@ -91,34 +96,51 @@ pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String>
 
 /// One real key press (down and up) through DevTools: trusted, as a keyboard sends it.
 fn key(session: &Session<'_>, key: &str, code: u32) -> Result<(), String> {
+    // The physical key's name: the same as the key's but for Space.
+    let code_name = if key == " " { "Space" } else { key };
     for kind in ["rawKeyDown", "keyUp"] {
-        let event = json!({ "type": kind, "key": key, "code": key,
+        let event = json!({ "type": kind, "key": key, "code": code_name,
                             "windowsVirtualKeyCode": code, "nativeVirtualKeyCode": code });
         session.cdp_value("Input.dispatchKeyEvent", event)?;
     }
     Ok(())
 }
 
-/// Waits until the app has drawn `n` more frames.
-fn frames_later(session: &Session<'_>, n: f64) {
-    let _ = session.execute(&after_frames(n, "null"));
+/// Resolves, with the frame count, once the paused app has drawn no frame for `QUIET` ms
+/// (a key's frames follow it within one animation frame), or after `MAX` ms.
+const SETTLE_JS: &str = "const attlabSettled = () => new Promise(done => { \
+    const frames = () => window.attlabStatus ? window.attlabStatus.frames : 0; \
+    const t0 = performance.now(); let last = frames(), since = t0; \
+    const tick = () => { const now = performance.now(), f = frames(); \
+      if (f !== last) { last = f; since = now; } \
+      (now - since >= QUIET || now - t0 > MAX) ? done(f) : setTimeout(tick, 20); }; \
+    tick(); });\n";
+/// Quiet time that counts as settled, and the longest wait (ms).
+const SETTLE_QUIET_MS: u32 = 300;
+const SETTLE_MAX_MS: u32 = 10_000;
+
+/// A script that resolves `result` (an expression) once the paused page has settled.
+fn after_settling(result: &str) -> String {
+    let settle = SETTLE_JS
+        .replace("QUIET", &SETTLE_QUIET_MS.to_string())
+        .replace("MAX", &SETTLE_MAX_MS.to_string());
+    format!("{settle} return attlabSettled().then(() => {result});")
 }
 
-/// A script that resolves `result` (an expression) once the app has drawn `n` more frames,
-/// or after 20 s (see [`LATER_JS`]).
-fn after_frames(n: f64, result: &str) -> String {
-    format!("{LATER_JS} return attlabLater({n}, 20000).then(() => {result});")
+/// Waits until the paused page has drawn a key's frames.
+fn settle(session: &Session<'_>) {
+    let _ = session.execute(&after_settling("null"));
 }
 
-/// The element the canvas names as the control with the keyboard once the app has drawn
-/// two more frames: (role, label).
-fn active_control_after_frames(session: &Session<'_>) -> (String, String) {
+/// The element the canvas names as the control with the keyboard once the page has settled:
+/// (role, label).
+fn active_control_after_settling(session: &Session<'_>) -> (String, String) {
     let control = "(() => { const c = document.getElementById('attlab_canvas'); \
         const id = c && c.getAttribute('aria-activedescendant'); \
         const e = id && document.getElementById(id); \
         return [e ? e.getAttribute('role') : '', e ? e.getAttribute('aria-label') : '']; })()";
     let v = session
-        .execute(&after_frames(2.0, control))
+        .execute(&after_settling(control))
         .unwrap_or(Value::Null);
     let s = |i: usize| v[i].as_str().unwrap_or_default().to_string();
     (s(0), s(1))
@@ -133,12 +155,17 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
     let status = wait_for_frames(session);
     let mut problems = status_problems(&status);
     let _ = session.execute("document.activeElement && document.activeElement.blur();");
+    if let Err(e) = pause_by_keyboard(session) {
+        problems.push(format!("keyboard walk: {e}"));
+        return problems;
+    }
     let mut reached = None;
-    for presses in 1..=WALK_TABS {
+    // The Tab into the canvas, before Space, counts.
+    for presses in 2..=WALK_TABS {
         if let Err(e) = key(session, "Tab", 9) {
             return vec![format!("keyboard walk: Tab failed: {e}")];
         }
-        let (role, label) = active_control_after_frames(session);
+        let (role, label) = active_control_after_settling(session);
         if role == "slider" && label == WALK_SLIDER {
             reached = Some(presses);
             break;
@@ -152,7 +179,7 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
     };
     println!("page test: keyboard walk: {presses} Tabs to `{WALK_SLIDER}`");
     let diagram = |session: &Session<'_>| -> Result<Vec<[u8; 3]>, String> {
-        frames_later(session, 3.0);
+        settle(session);
         let status = wait_for_frames(session);
         let views = status["views"].as_array().cloned().unwrap_or_default();
         let index = diagram_index() as f64;
@@ -201,6 +228,30 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
         )),
     }
     problems
+}
+
+/// Tab into the canvas (no control has the keyboard yet), then Space: the run must pause.
+fn pause_by_keyboard(session: &Session<'_>) -> Result<(), String> {
+    key(session, "Tab", 9).map_err(|e| format!("Tab failed: {e}"))?;
+    settle_running(session);
+    key(session, " ", 32).map_err(|e| format!("Space failed: {e}"))?;
+    let status = session
+        .execute(&after_settling(
+            "window.attlabStatus ? window.attlabStatus.playing : null",
+        ))
+        .unwrap_or(Value::Null);
+    if status == Value::Bool(false) {
+        Ok(())
+    } else {
+        Err(format!(
+            "Space on the canvas, no control focused, did not pause the run (playing: {status})"
+        ))
+    }
+}
+
+/// Waits for two frames of the running page (the Tab's focus drawn).
+fn settle_running(session: &Session<'_>) {
+    let _ = session.execute(&format!("{LATER_JS} return attlabLater(2, 20000);"));
 }
 
 /// Where paper 5 draws its diagram: in the place of the w plane among its views.
