@@ -186,6 +186,7 @@ fn fuzz_window(
     seed: u64,
     events: u32,
 ) -> Vec<String> {
+    let start = Instant::now();
     if let Err(e) = session.open(&format!("{base}#lab={lab}")) {
         return vec![format!("navigate failed: {e}")];
     }
@@ -204,8 +205,10 @@ fn fuzz_window(
                 problems.push(format!("attlabStatus.errors: {}", status["errors"]));
             }
             println!(
-                "page test: fuzz {lab}, seed {seed}: {events} events, then lab {} at frame {}",
-                status["lab"], status["frames"]
+                "page test: fuzz {lab}, seed {seed}: {events} events, then lab {} at frame {} ({:.1} s)",
+                status["lab"],
+                status["frames"],
+                start.elapsed().as_secs_f64()
             );
         }
         other => problems.push(format!(
