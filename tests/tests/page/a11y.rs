@@ -154,28 +154,12 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
     }
     let status = wait_for_frames(session);
     let mut problems = status_problems(&status);
-    let _ = session.execute("document.activeElement && document.activeElement.blur();");
-    if let Err(e) = pause_by_keyboard(session) {
-        problems.push(format!("keyboard walk: {e}"));
-        return problems;
-    }
-    let mut reached = None;
-    // The Tab into the canvas, before Space, counts.
-    for presses in 2..=WALK_TABS {
-        if let Err(e) = key(session, "Tab", 9) {
-            return vec![format!("keyboard walk: Tab failed: {e}")];
+    let presses = match tab_to_walk_slider(session) {
+        Ok(presses) => presses,
+        Err(e) => {
+            problems.push(format!("keyboard walk: {e}"));
+            return problems;
         }
-        let (role, label) = active_control_after_settling(session);
-        if role == "slider" && label == WALK_SLIDER {
-            reached = Some(presses);
-            break;
-        }
-    }
-    let Some(presses) = reached else {
-        problems.push(format!(
-            "keyboard walk: {WALK_TABS} Tabs never reached `{WALK_SLIDER}`"
-        ));
-        return problems;
     };
     println!("page test: keyboard walk: {presses} Tabs to `{WALK_SLIDER}`");
     let diagram = |session: &Session<'_>| -> Result<Vec<[u8; 3]>, String> {
@@ -228,6 +212,21 @@ pub(crate) fn keyboard_walk_problems(session: &Session<'_>, base: &str) -> Vec<S
         )),
     }
     problems
+}
+
+/// From no focus: Tab into the canvas, Space to pause, then Tab until the walk's slider has
+/// the keyboard. The number of Tabs, the first one counted.
+fn tab_to_walk_slider(session: &Session<'_>) -> Result<usize, String> {
+    let _ = session.execute("document.activeElement && document.activeElement.blur();");
+    pause_by_keyboard(session)?;
+    for presses in 2..=WALK_TABS {
+        key(session, "Tab", 9).map_err(|e| format!("Tab failed: {e}"))?;
+        let (role, label) = active_control_after_settling(session);
+        if role == "slider" && label == WALK_SLIDER {
+            return Ok(presses);
+        }
+    }
+    Err(format!("{WALK_TABS} Tabs never reached `{WALK_SLIDER}`"))
 }
 
 /// Tab into the canvas (no control has the keyboard yet), then Space: the run must pause.
