@@ -29,7 +29,7 @@ pub use lesson::{LessonCommand, LessonState};
 pub use link_words::link_problem;
 pub use live::{BAUDS, LiveCommand, LiveSource, LiveState};
 pub use pool::SweepTiming;
-pub use run::{RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
+pub use run::{MAX_FRAME_S, RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
 pub use share::{QrModules, ShareCommand, ShareOptions, qr};
 pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};

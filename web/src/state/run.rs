@@ -12,6 +12,12 @@ use web_time::{Duration, Instant};
 /// Time the simulation may take per frame before it falls behind real time.
 pub const STEP_BUDGET: Duration = Duration::from_millis(12);
 
+/// The longest frame interval the simulation advances by in full. A device that draws 4
+/// frames a second or more (a phone, software GL) runs at the speed asked for; a longer gap
+/// (a tab in the background, a debugger's pause) counts as this much, so the page never
+/// comes back to a minute of catching up.
+pub const MAX_FRAME_S: f64 = 0.25;
+
 /// Wall time per frame given to a background sweep.
 pub const SWEEP_BUDGET: Duration = Duration::from_millis(10);
 
@@ -293,12 +299,12 @@ impl AppState {
             return self.advance_live(now);
         }
         let run = &mut self.run;
-        // The stats report the interval as it was; the stepping takes at most 0.1 s of it
-        // (a tab in the background must not come back to a minute of catching up).
+        // The stats report the interval as it was; the stepping takes at most
+        // `MAX_FRAME_S` of it.
         let wall_s = run
             .last_frame
             .map_or(0.0, |t| now.duration_since(t).as_secs_f64());
-        let frame_s = wall_s.min(0.1);
+        let frame_s = wall_s.min(MAX_FRAME_S);
         run.last_frame = Some(now);
         run.stats.frame_ms = 0.9 * run.stats.frame_ms + 0.1 * wall_s * 1e3;
         if !run.playing {

@@ -13,6 +13,7 @@ use egui_kittest::kittest::{NodeT, Queryable};
 
 mod a11y;
 mod accuracy;
+mod clock;
 mod keyboard;
 mod lessons;
 mod live;
