@@ -334,17 +334,31 @@ impl Recorder {
             .collect()
     }
 
-    /// The newest `rows` (at most) full-rate values of series `index`, oldest first: a
-    /// per-frame trail without copying the whole window.
-    pub fn recent_tail(&self, index: usize, rows: usize) -> Vec<f64> {
+    /// Of the newest `rows` (at most) full-rate values of series `index`, oldest first, every
+    /// `stride`-th from the oldest, where `stride` keeps about `points` of them, and always the
+    /// newest: a per-frame trail that reads only the rows it keeps.
+    pub fn recent_tail(&self, index: usize, rows: usize, points: usize) -> Vec<f64> {
         if index >= self.specs.len() {
             return Vec::new();
         }
         let take = rows.min(self.held);
+        let stride = (take / points.max(1)).max(1);
         let first = (self.head + self.window - take) % self.window;
-        (0..take)
-            .map(|k| self.recent[self.slot(index, (first + k) % self.window)])
-            .collect()
+        // first < window and k < take ≤ window: one subtraction wraps the ring.
+        let value = |k: usize| {
+            let ring = first + k;
+            let ring = if ring >= self.window {
+                ring - self.window
+            } else {
+                ring
+            };
+            self.recent[self.slot(index, ring)]
+        };
+        let mut out: Vec<f64> = (0..take).step_by(stride).map(value).collect();
+        if take > 0 && !(take - 1).is_multiple_of(stride) {
+            out.push(value(take - 1));
+        }
+        out
     }
 
     /// (t, y) points of series `y` over the whole run, about `max_points` of them: the older

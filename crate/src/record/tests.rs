@@ -113,11 +113,24 @@ fn recent_rows_are_exact_and_in_order() {
     assert_eq!(r.recent_vec(1), expected);
     // A tail is the end of the same rows; asking for more than is held gives them all.
     assert_eq!(
-        r.recent_tail(1, 10),
+        r.recent_tail(1, 10, 10),
         expected[expected.len() - 10..].to_vec()
     );
-    assert_eq!(r.recent_tail(1, 10 * window), expected);
-    assert!(r.recent_tail(9, 10).is_empty());
+    assert_eq!(r.recent_tail(1, 10 * window, held), expected);
+    assert!(r.recent_tail(9, 10, 10).is_empty());
+    // Thinned: every third of the last 10 (stride 10 / 3 = 3) and the newest.
+    let last10 = &expected[expected.len() - 10..];
+    assert_eq!(
+        r.recent_tail(1, 10, 3),
+        vec![last10[0], last10[3], last10[6], last10[9]]
+    );
+    // Every other of the last 10: the newest (index 9) is not on the stride, so it is added.
+    assert_eq!(
+        r.recent_tail(1, 10, 5),
+        vec![
+            last10[0], last10[2], last10[4], last10[6], last10[8], last10[9]
+        ]
+    );
     assert_eq!(r.last(0), Some((window + 6) as f64));
     assert_eq!(r.last(7), None);
 }

@@ -12,6 +12,7 @@ use attlab::model::{Quantity, SeriesKey, StateKind, TRUTH, ViewKind, q};
 use attlab::record::Recorder;
 use egui::{Pos2, Rect, Ui, Vec2};
 use nalgebra::Vector3;
+use std::cell::OnceCell;
 
 /// Draws the central panel and notes in `regions` where each part went (for PNG export).
 pub fn central(
@@ -27,7 +28,8 @@ pub fn central(
         let kinds = app.sim().lab().page().views;
         match app.view().focus {
             Focus::View(k) if k < kinds.len() => {
-                draw_view(ui, app, view, kinds[k], full, gpu_ready);
+                let trails = OnceCell::new();
+                draw_view(ui, app, view, kinds[k], full, &trails, gpu_ready);
                 png_button(ui, app, k, full, commands);
                 reset_button(ui, app, view, kinds[k], full);
                 regions.views.push((k, full));
@@ -64,11 +66,13 @@ pub fn central(
         };
         let total: f32 = shown.iter().map(|(_, k)| weight(**k)).sum();
         let mut x = top.min.x;
+        // The sphere and the w plane draw the same trails: gathered once a frame.
+        let trails = OnceCell::new();
         for (k, kind) in shown {
             let w = top.width() * weight(*kind) / total.max(1.0);
             let rect = Rect::from_min_size(Pos2::new(x, top.min.y), Vec2::new(w - 4.0, top_h));
             x += w;
-            draw_view(ui, app, view, *kind, rect, gpu_ready);
+            draw_view(ui, app, view, *kind, rect, &trails, gpu_ready);
             png_button(ui, app, k, rect, commands);
             reset_button(ui, app, view, *kind, rect);
             regions.views.push((k, rect));
@@ -173,25 +177,37 @@ fn weight(kind: ViewKind) -> f32 {
     }
 }
 
-/// Draws one of the lab's views into `rect`.
+/// The sphere's and the w plane's trails with their ellipses, gathered on first use.
+type Trails = OnceCell<Vec<riemann_sphere::SphereTrack>>;
+
+/// The trails of `trails`, gathered if this is the frame's first view to need them.
+fn trails_of<'a>(trails: &'a Trails, app: &AppState, ui: &Ui) -> &'a [riemann_sphere::SphereTrack] {
+    trails.get_or_init(|| {
+        let mut tracks = tracks(app, palette::of(ui.visuals()));
+        attach_ellipses(app, &mut tracks);
+        tracks
+    })
+}
+
+/// Draws one of the lab's views, `kind`, into `rect`.
 fn draw_view(
     ui: &mut Ui,
     app: &AppState,
     view: &mut View,
     kind: ViewKind,
     rect: Rect,
+    trails: &Trails,
     gpu_ready: bool,
 ) {
     match kind {
         ViewKind::Body3d => draw_body(ui, app, &mut view.camera, rect, gpu_ready),
         ViewKind::Sphere => {
-            let mut tracks = tracks(app, palette::of(ui.visuals()));
-            attach_ellipses(app, &mut tracks);
+            let tracks = trails_of(trails, app, ui);
             let caption = chart_caption(app);
             let title = tr(app, "sphere-title");
             let pole = tr(app, "sphere-pole");
             let words = (title.as_str(), caption.as_str(), pole.as_str());
-            riemann_sphere::show_sphere(ui, rect, &mut view.sphere, &tracks, words);
+            riemann_sphere::show_sphere(ui, rect, &mut view.sphere, tracks, words);
         }
         ViewKind::WPlane => {
             // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
@@ -199,11 +215,7 @@ fn draw_view(
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
-                    None => {
-                        let mut tracks = tracks(app, palette::of(ui.visuals()));
-                        attach_ellipses(app, &mut tracks);
-                        riemann_sphere::show_plane(ui, &tracks);
-                    }
+                    None => riemann_sphere::show_plane(ui, trails_of(trails, app, ui)),
                 }
             });
         }
@@ -395,15 +407,7 @@ const TRAIL_POINTS: usize = 600;
 /// The last [`TRAIL_ROWS`] full-rate values of series `j`, thinned to [`TRAIL_POINTS`]
 /// (always keeping the newest).
 fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
-    let tail = rec.recent_tail(j, TRAIL_ROWS);
-    let stride = (tail.len() / TRAIL_POINTS).max(1);
-    let mut out: Vec<f64> = tail.iter().step_by(stride).copied().collect();
-    if let Some(last) = tail.last()
-        && !(tail.len() - 1).is_multiple_of(stride)
-    {
-        out.push(*last);
-    }
-    out
+    rec.recent_tail(j, TRAIL_ROWS, TRAIL_POINTS)
 }
 
 /// 3σ ellipses of every estimator whose covariance holds (u, v), in its own chart, mapped
