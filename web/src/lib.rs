@@ -13,6 +13,7 @@ pub mod app;
 pub mod export;
 pub mod live_io;
 pub mod panels;
+pub mod pick;
 pub mod platform;
 pub mod python;
 pub mod render;

@@ -210,6 +210,8 @@ msg-log-skipped = { $name }: skipped { $why }
 msg-log-more-bad = { $name }: … and { $n } more bad lines
 msg-log-replaying = { $name }: replaying { $n } samples of { $lines } lines ({ $reordered } put back in order, { $merged } merged, { $rejected } rejected; clock gaps: { $gaps })
 msg-log-failed = { $name }: { $why }
+msg-picker-refused = the browser opened no file window: it opens one only right after a click or a key press. Press the load button again.
+msg-file-unreadable = cannot read { $name }: { $why }
 msg-workers-failed = sweep workers stopped ({ $why }); the sweep goes on in slices on the page's thread
 
 ## Live sensors (a phone's gyro and accelerometer, an Arduino over Web Serial)

@@ -1,8 +1,9 @@
 //! A recorded log through the page's own picker, as a student loads one: paper 4 on a
 //! projector's 1280×720, the log panel opened and its load button pressed through the
-//! accessibility mirror, a log whose Arduino sketch restarted handed to the picker's file
-//! input, and its OK pressed. The page must say what became of every line, replay both
-//! segments and shade the join; a screenshot for a look
+//! accessibility mirror (a script's press: the browser refuses to open its chooser, which
+//! the page must say, with the canvas still on top and drawing), a log whose Arduino sketch
+//! restarted handed to the page's file input. The page must say what became of every line,
+//! replay both segments and shade the join; a screenshot for a look
 //! (`target/page-test/screens/replay-p4.png`).
 
 use super::*;
@@ -67,12 +68,18 @@ pub(crate) fn eventually(mut ready: impl FnMut() -> bool) -> bool {
     false
 }
 
-/// Hands `path` to the picker's file input and presses its OK.
+/// The page's file input (`attlab_web::pick::INPUT_ID`).
+const INPUT: &str = "attlab-file-input";
+/// What the page says when a script, not the student, pressed the load button: the browser
+/// opens no chooser then.
+const REFUSED: &str = "the browser opened no file window";
+
+/// Hands `path` to the page's file input, as the browser's chooser would.
 fn pick(session: &Session<'_>, path: &std::path::Path) -> Result<(), String> {
     let found = session.call(
         "POST",
         "/element",
-        Some(&json!({ "using": "css selector", "value": "#rfd-input" })),
+        Some(&json!({ "using": "css selector", "value": format!("#{INPUT}") })),
     )?;
     let element = found
         .as_object()
@@ -86,12 +93,33 @@ fn pick(session: &Session<'_>, path: &std::path::Path) -> Result<(), String> {
         &format!("/element/{element}/value"),
         Some(&json!({ "text": text })),
     )?;
-    let ok = "const b = [...document.querySelectorAll('#rfd-overlay button')]\
-                .find(b => b.innerText.trim() === 'Ok'); if (b) { b.click(); } return !!b;";
-    match session.execute(ok)? {
-        Value::Bool(true) => Ok(()),
-        _ => Err("the picker has no Ok button".into()),
+    Ok(())
+}
+
+/// What covers the canvas once the load button was pressed: the page must keep the canvas
+/// on top (no modal card over it) and keep drawing.
+fn canvas_problems(session: &Session<'_>) -> Vec<String> {
+    let top = "const e = document.elementFromPoint(innerWidth / 2, innerHeight / 2); \
+               return e ? e.tagName + '#' + e.id : 'nothing';";
+    let mut problems = Vec::new();
+    match session.execute(top) {
+        Ok(Value::String(t)) if t.starts_with("CANVAS") => {}
+        other => problems.push(format!(
+            "replay: after the load button the page's centre is {other:?}, not the canvas"
+        )),
     }
+    let frames = |s: &Session<'_>| {
+        s.execute("return window.attlabStatus ? window.attlabStatus.frames : null;")
+            .ok()
+            .and_then(|v| v.as_u64())
+    };
+    let before = frames(session);
+    if !eventually(|| frames(session) > before.map(|f| f + 3)) {
+        problems.push(format!(
+            "replay: no frames drawn after the load button (frames stayed {before:?})"
+        ));
+    }
+    problems
 }
 
 /// The replay of a restarted log through the picker (see the module's doc).
@@ -132,9 +160,13 @@ fn replay_problems(session: &Session<'_>, base: &str) -> Vec<String> {
     }
     let ready = eventually(|| {
         session
-            .execute("return !!document.getElementById('rfd-input');")
+            .execute(&format!("return !!document.getElementById('{INPUT}');"))
             .is_ok_and(|v| v == Value::Bool(true))
     });
+    if !eventually(|| mirror_says(session, &[REFUSED])) {
+        problems.push(format!("replay: a script's press did not say `{REFUSED}`"));
+    }
+    problems.extend(canvas_problems(session));
     match (ready, ready.then(|| pick(session, &path))) {
         (true, Some(Ok(()))) => {}
         (_, Some(Err(e))) => problems.push(format!("replay: the picker: {e}")),

@@ -3,6 +3,7 @@
 //! output file, a Python snippet, PNGs).
 
 use super::{AppState, Effect, PngTarget};
+use crate::pick::{self, Picked};
 use crate::platform;
 use attlab::model::PlotTab;
 use attlab::model::{LogFormat, ParamValues};
@@ -18,7 +19,7 @@ pub struct IoState {
     pub replaying: Option<(String, usize)>,
     /// Where exports go without a dialog (desktop scripting and tests); `None` asks.
     pub save_dir: Option<std::path::PathBuf>,
-    file_slot: platform::FileSlot,
+    file_slot: pick::FileSlot,
 }
 
 impl IoState {
@@ -28,6 +29,12 @@ impl IoState {
             .get(format.id)
             .cloned()
             .unwrap_or_else(|| format.default_units())
+    }
+
+    /// Where a picked file arrives: the chooser's result, or what a desktop script or a
+    /// test delivers as if it had been chosen (the app takes it on the next frame).
+    pub fn file_slot(&self) -> pick::FileSlot {
+        self.file_slot.clone()
     }
 
     /// Keeps where exports go and a log being picked from `old` (a link loaded).
@@ -71,7 +78,7 @@ impl AppState {
         match command {
             IoCommand::ExportCsv => self.start_csv_export(),
             IoCommand::ExportOutputFile => self.export_output_file(),
-            IoCommand::LoadLog => platform::pick_text_file(&self.io.file_slot),
+            IoCommand::LoadLog => pick::pick_text_file(&self.io.file_slot),
             IoCommand::TakePickedLog => self.take_picked_log(),
             IoCommand::EndReplay => {
                 let (lab, params) = (self.sim.lab(), self.sim.params().clone());
@@ -113,8 +120,14 @@ impl AppState {
             return;
         };
         match picked {
-            Ok((name, bytes)) => self.start_replay(name, &bytes),
-            Err(e) => self.error(e),
+            Picked::File { name, bytes } => self.start_replay(name, &bytes),
+            Picked::Unreadable { name, why } => {
+                self.warn(
+                    "msg-file-unreadable",
+                    &[("name", name.into()), ("why", why.into())],
+                );
+            }
+            Picked::Refused => self.warn("msg-picker-refused", &[]),
         }
     }
 

@@ -104,3 +104,48 @@ fn a_restarted_log_replays_both_segments_and_shades_the_join() {
             .is_some()
     );
 }
+
+/// What the file chooser can deliver, taken on the app's next frame: a refused chooser and an
+/// unreadable file are said in the reader's language; nothing is replayed.
+#[test]
+fn a_refused_chooser_and_an_unreadable_file_are_said_in_the_readers_language() {
+    use attlab_web::pick::Picked;
+    use attlab_web::state::ViewCommand;
+    let cases = [
+        (
+            attlab::i18n::Lang::En,
+            Picked::Refused,
+            "opened no file window",
+        ),
+        (
+            attlab::i18n::Lang::Ru,
+            Picked::Refused,
+            "не открыл окно выбора файла",
+        ),
+        (
+            attlab::i18n::Lang::En,
+            Picked::Unreadable {
+                name: "gone.csv".into(),
+                why: "no such file".into(),
+            },
+            "cannot read gone.csv: no such file",
+        ),
+    ];
+    for (lang, picked, said) in cases {
+        let mut h = super::harness("p4");
+        h.state_mut().apply(ViewCommand::SetLang(lang).into());
+        *h.state().state.io().file_slot().borrow_mut() = Some(picked.clone());
+        h.run();
+        let state = &h.state().state;
+        assert!(
+            state
+                .messages()
+                .iter()
+                .any(|m| m.is_error && m.text.contains(said)),
+            "{picked:?} in {lang:?}: {:?}",
+            state.messages()
+        );
+        assert!(state.io().file_slot().borrow().is_none(), "taken");
+        assert!(state.sim().replay_log().is_none(), "nothing replayed");
+    }
+}
