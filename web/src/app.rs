@@ -226,6 +226,7 @@ impl AttLabApp {
                 attlab::state::Theme::Dark => egui::Theme::Dark,
             });
             self.themed = Some(theme);
+            crate::render::palette::panels_on_the_clear(ctx);
         }
     }
 
@@ -351,6 +352,10 @@ impl AttLabApp {
 }
 
 impl eframe::App for AttLabApp {
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        crate::render::palette::clear_colour(visuals).to_normalized_gamma_f32()
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
         let run = self.state.run();

@@ -14,6 +14,7 @@ use egui_kittest::kittest::{NodeT, Queryable};
 mod a11y;
 mod accuracy;
 mod clock;
+mod fill;
 mod keyboard;
 mod lessons;
 mod live;
