@@ -42,6 +42,35 @@ pub fn clip_to_bounds(points: &[[f64; 2]], bounds: &PlotBounds) -> Vec<Vec<[f64;
     pieces
 }
 
+/// Whether `b` is within half a pixel of `a` in both axes, a pixel being `px` (units per
+/// pixel in x and y): such a point adds nothing a reader can see to a line through `a`.
+pub fn within_half_pixel(a: [f64; 2], b: [f64; 2], px: [f64; 2]) -> bool {
+    (0..2).all(|k| (b[k] - a[k]).abs() < 0.5 * px[k])
+}
+
+/// `points` without those within half a pixel of the last one kept (first and last always
+/// kept, a NaN kept as the break it is): the line drawn is the same to within half a pixel,
+/// with as many vertices as the pixels it crosses rather than the samples it has. A plot of
+/// 3 000 samples 500 pixels wide, or a trail creeping a pixel a second, otherwise hands the
+/// tessellator, and a software-rendering browser, many times the triangles it shows.
+pub fn thin_to_pixels(points: Vec<[f64; 2]>, px: [f64; 2]) -> Vec<[f64; 2]> {
+    let usable = px.iter().all(|p| p.is_finite() && *p > 0.0);
+    let Some((&last, body)) = points.split_last().filter(|_| usable && points.len() > 2) else {
+        return points;
+    };
+    let mut kept: Vec<[f64; 2]> = Vec::with_capacity(points.len());
+    for &p in body {
+        if kept.last().is_none_or(|&k| !within_half_pixel(k, p, px)) {
+            kept.push(p);
+        }
+    }
+    if kept.len() > 1 && kept.last().is_some_and(|&k| within_half_pixel(k, last, px)) {
+        kept.pop();
+    }
+    kept.push(last);
+    kept
+}
+
 fn inside(p: [f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
     (0..2).all(|k| p[k] >= lo[k] && p[k] <= hi[k])
 }
@@ -90,6 +119,40 @@ mod tests {
 
     fn bounds(x0: f64, x1: f64, y0: f64, y1: f64) -> PlotBounds {
         PlotBounds::from_min_max([x0, y0], [x1, y1])
+    }
+
+    #[test]
+    fn thinning_keeps_the_ends_and_every_point_half_a_pixel_away() {
+        // A pixel is 0.1 units wide and 2 units high.
+        let px = [0.1, 2.0];
+        let line = vec![
+            [0.0, 0.0],
+            [0.01, 0.5],     // within half a pixel of the first: dropped
+            [0.02, 1.2],     // a pixel up less a bit: kept (|Δy| ≥ 1)
+            [0.03, 1.3],     // dropped
+            [0.2, 1.3],      // kept (|Δx| ≥ 0.05)
+            [f64::NAN, 0.0], // a break: kept
+            [0.21, 1.31],    // the last: kept
+        ];
+        let thin = thin_to_pixels(line, px);
+        let bits: Vec<[u64; 2]> = thin.iter().map(|p| p.map(f64::to_bits)).collect();
+        let want: Vec<[u64; 2]> = [
+            [0.0, 0.0],
+            [0.02, 1.2],
+            [0.2, 1.3],
+            [f64::NAN, 0.0],
+            [0.21, 1.31],
+        ]
+        .iter()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+        assert_eq!(bits, want);
+        // The last point replaces a kept one within half a pixel of it.
+        let end = thin_to_pixels(vec![[0.0, 0.0], [1.0, 0.0], [1.01, 0.1]], px);
+        assert_eq!(end, vec![[0.0, 0.0], [1.01, 0.1]]);
+        // No usable pixel size: left alone.
+        let line = vec![[0.0, 0.0], [0.0, 0.0], [0.0, 0.0]];
+        assert_eq!(thin_to_pixels(line.clone(), [0.0, 1.0]), line);
     }
 
     #[test]

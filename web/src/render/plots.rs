@@ -435,17 +435,21 @@ fn draw_series(
     }
 }
 
-/// The pieces of a series to draw: broken at its missing samples, and a dashed or dotted
-/// one cut to what the plot shows (see [`super::clip`]).
+/// The pieces of a series to draw: broken at its missing samples, a dashed or dotted one cut
+/// to what the plot shows, and each thinned to the plot's pixels (see [`super::clip`]).
 pub fn pieces(
     plot: &egui_plot::PlotUi<'_>,
     pts: &[[f64; 2]],
     style: LineStyle,
 ) -> Vec<Vec<[f64; 2]>> {
-    if style == LineStyle::Solid {
-        return Recorder::split_at_gaps(pts);
-    }
-    super::clip::clip_to_bounds(pts, &plot.plot_bounds())
+    let pieces = if style == LineStyle::Solid {
+        Recorder::split_at_gaps(pts)
+    } else {
+        super::clip::clip_to_bounds(pts, &plot.plot_bounds())
+    };
+    let px = plot.transform().dvalue_dpos().map(f64::abs);
+    let thin = |piece| super::clip::thin_to_pixels(piece, px);
+    pieces.into_iter().map(thin).collect()
 }
 
 #[cfg(test)]

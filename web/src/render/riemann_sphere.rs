@@ -60,6 +60,9 @@ impl Projector {
         )
     }
 
+    /// Draws the points as lines, in `front` where both ends of a segment face the reader and
+    /// in `back` elsewhere: one path per run of one kind (not a shape per segment), thinned
+    /// to half a pixel ([`super::clip::thin_to_pixels`]'s rule), the last point always kept.
     fn polyline(
         &self,
         painter: &Painter,
@@ -67,14 +70,46 @@ impl Projector {
         front: Stroke,
         back: Stroke,
     ) {
-        let mut prev: Option<(Pos2, bool)> = None;
-        for p in pts {
-            let cur = self.project(&p);
-            if let Some((a, fa)) = prev {
-                painter.line_segment([a, cur.0], if fa && cur.1 { front } else { back });
+        let close = |a: Pos2, b: Pos2| {
+            super::clip::within_half_pixel(
+                [a.x, a.y].map(f64::from),
+                [b.x, b.y].map(f64::from),
+                [1.0; 2],
+            )
+        };
+        let draw = |run: &mut Vec<Pos2>, in_front: bool| {
+            if run.len() >= 2 {
+                let stroke = if in_front { front } else { back };
+                painter.add(egui::Shape::line(std::mem::take(run), stroke));
             }
-            prev = Some(cur);
+            run.clear();
+        };
+        let (mut run, mut run_front) = (Vec::new(), true);
+        let (mut prev_front, mut skipped) = (None, None);
+        for p in pts {
+            let (q, q_front) = self.project(&p);
+            if let Some(was_front) = prev_front {
+                let segment_front = was_front && q_front;
+                if run.len() >= 2 && segment_front != run_front {
+                    // The run ends, and the next begins, at the previous point exactly.
+                    run.extend(skipped.take());
+                    let start = run.last().copied();
+                    draw(&mut run, run_front);
+                    run.extend(start);
+                }
+                run_front = segment_front;
+            }
+            match run.last() {
+                Some(&last) if close(last, q) => skipped = Some(q),
+                _ => {
+                    run.push(q);
+                    skipped = None;
+                }
+            }
+            prev_front = Some(q_front);
         }
+        run.extend(skipped);
+        draw(&mut run, run_front);
     }
 }
 
