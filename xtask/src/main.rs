@@ -10,6 +10,7 @@
 //! Each command first installs what is missing (wasm target, `wasm-bindgen-cli`, npm
 //! `binaryen` in `.tools/`, Chromium and chromedriver for `test`), without ever prompting.
 
+mod beside;
 mod cmd;
 use attlab_serve as serve;
 mod site;

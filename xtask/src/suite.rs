@@ -109,6 +109,32 @@ impl Suite {
         }
     }
 
+    /// Waits for a test run started beside the others and records it (its time is its own,
+    /// from its start: it overlaps the steps run meanwhile).
+    fn finish_beside(&mut self, name: &str, beside: crate::beside::Beside) -> Result<()> {
+        banner(name);
+        let start = Instant::now();
+        let (ok, output, took) = match beside.finish() {
+            Ok(done) => done,
+            Err(e) => {
+                self.record(name, false, None, start);
+                return Err(e);
+            }
+        };
+        let counts = parse_counts(&output);
+        self.steps.push(StepResult {
+            name: name.to_string(),
+            ok,
+            counts,
+            took,
+        });
+        if ok {
+            Ok(())
+        } else {
+            Err(format!("step `{name}` failed").into())
+        }
+    }
+
     /// Records a finished step.
     fn record(&mut self, name: &str, ok: bool, counts: Option<Counts>, start: Instant) {
         let took = start.elapsed();
@@ -226,7 +252,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     // Every page test but the soak, the page fuzz included (its default: one round of
-    // random input per lab); one at a time, so no Chromium starves another of the 2 cores.
+    // random input per lab); one at a time, as most of them count frames, and a second
+    // Chromium on the 2 cores halves the frame rate of the first.
     // `--workspace`, as the native tests: the same features for every dependency, so the
     // page test reuses that build (`-p attlab-tests` alone re-resolved them and rebuilt 71
     // crates, 83 s in CI).
@@ -235,10 +262,14 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
+    // The soak beside them (see `beside`): it waits on the clock, as the lessons do.
+    let soak = suite.step("start the soak beside the page tests", || {
+        crate::beside::start_soak(&server.url(), CI_SOAK_MINUTES)
+    })?;
     suite.tests("page (headless Chromium)", page)?;
-    suite.tests(
-        &format!("soak ({CI_SOAK_MINUTES} min, headless Chromium)"),
-        soak_command(&server.url(), CI_SOAK_MINUTES),
+    suite.finish_beside(
+        &format!("soak ({CI_SOAK_MINUTES} min, beside the page tests)"),
+        soak,
     )
 }
 

@@ -1,0 +1,98 @@
+//! The soak started beside the page tests instead of after them. Both wait on the clock more
+//! than on the cores: the soak keeps each lab for its seconds, and the page tests' lessons run
+//! to their pauses at the lesson's speed, so a slower frame does not make either take longer
+//! there. cargo holds its build directory for as long as its tests run, so the soak runs the
+//! page tests' binary itself (built by then) with its output in a file, printed when it ends.
+
+use crate::cmd::Result;
+use std::fs::File;
+use std::path::PathBuf;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// A test run in the background: its process, log and start.
+pub struct Beside {
+    child: Child,
+    log: PathBuf,
+    start: Instant,
+    line: String,
+}
+
+/// Starts the page tests' soak against `url` for `minutes` in the background.
+pub fn start_soak(url: &str, minutes: f64) -> Result<Beside> {
+    let exe = page_test_binary()?;
+    let package = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests");
+    let dir = package.join("../target/page-test");
+    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
+    let log = dir.join("soak-beside.log");
+    let out = File::create(&log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
+    let err = out.try_clone()?;
+    let mut command = Command::new(&exe);
+    command
+        .args(["--ignored", "--nocapture", "--exact", "soak"])
+        .env("ATTLAB_PAGE_URL", url)
+        .env("ATTLAB_SOAK_MINUTES", minutes.to_string())
+        .env("CHROMEDRIVER", crate::tools::CHROMEDRIVER)
+        .current_dir(&package)
+        .stdin(Stdio::null())
+        .stdout(out)
+        .stderr(err);
+    let line = crate::cmd::describe(&command);
+    println!("$ {line} > {} &", log.display());
+    let child = command
+        .spawn()
+        .map_err(|e| format!("could not start `{line}`: {e}"))?;
+    Ok(Beside {
+        child,
+        log,
+        start: Instant::now(),
+        line,
+    })
+}
+
+impl Beside {
+    /// Waits for the test to end; prints its log. Returns whether it passed, its output and
+    /// how long it ran.
+    pub fn finish(mut self) -> Result<(bool, String, Duration)> {
+        let status = self
+            .child
+            .wait()
+            .map_err(|e| format!("waiting for `{}`: {e}", self.line))?;
+        let took = self.start.elapsed();
+        let output = std::fs::read_to_string(&self.log)
+            .map_err(|e| format!("cannot read {}: {e}", self.log.display()))?;
+        println!("{output}");
+        Ok((status.success(), output, took))
+    }
+}
+
+impl Drop for Beside {
+    /// A run that stopped early (a failed page test) takes its soak with it.
+    fn drop(&mut self) {
+        if matches!(self.child.try_wait(), Ok(None)) {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
+    }
+}
+
+/// The page tests' binary: cargo names it (building it if it is not yet built).
+fn page_test_binary() -> Result<PathBuf> {
+    let output = crate::cmd::cargo()
+        .args(["test", "--workspace", "--test", "page", "--no-run"])
+        .args(["--message-format", "json-render-diagnostics"])
+        .stdin(Stdio::null())
+        .stderr(Stdio::inherit())
+        .output()
+        .map_err(|e| format!("could not ask cargo for the page tests' binary: {e}"))?;
+    if !output.status.success() {
+        return Err("building the page tests failed".into());
+    }
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    stdout
+        .lines()
+        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok())
+        .filter(|v| v["reason"] == "compiler-artifact" && v["target"]["name"] == "page")
+        .find_map(|v| v["executable"].as_str().map(PathBuf::from))
+        .ok_or_else(|| "cargo named no binary for the page tests".into())
+}
