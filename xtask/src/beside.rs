@@ -8,13 +8,13 @@ use crate::cmd::Result;
 use std::fs::File;
 use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::{Duration, SystemTime};
 
 /// A test run in the background: its process, log and start.
 pub struct Beside {
     child: Child,
     log: PathBuf,
-    start: Instant,
+    start: SystemTime,
     line: String,
 }
 
@@ -45,20 +45,25 @@ pub fn start_soak(url: &str, minutes: f64) -> Result<Beside> {
     Ok(Beside {
         child,
         log,
-        start: Instant::now(),
+        start: SystemTime::now(),
         line,
     })
 }
 
 impl Beside {
     /// Waits for the test to end; prints its log. Returns whether it passed, its output and
-    /// how long it ran.
+    /// how long it ran: until its log was last written (its closing `test result` line), not
+    /// until this wait, which comes after the page tests.
     pub fn finish(mut self) -> Result<(bool, String, Duration)> {
         let status = self
             .child
             .wait()
             .map_err(|e| format!("waiting for `{}`: {e}", self.line))?;
-        let took = self.start.elapsed();
+        let ended = std::fs::metadata(&self.log).and_then(|m| m.modified());
+        let took = ended
+            .ok()
+            .and_then(|t| t.duration_since(self.start).ok())
+            .unwrap_or_default();
         let output = std::fs::read_to_string(&self.log)
             .map_err(|e| format!("cannot read {}: {e}", self.log.display()))?;
         println!("{output}");
