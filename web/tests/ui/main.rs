@@ -21,6 +21,7 @@ mod live;
 mod narrow;
 mod png;
 mod replay;
+mod shader;
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
