@@ -1,8 +1,10 @@
-//! The soak started beside the page tests instead of after them. Both wait on the clock more
-//! than on the cores: the soak keeps each lab for its seconds, and the page tests' lessons run
-//! to their pauses at the lesson's speed, so a slower frame does not make either take longer
-//! there. cargo holds its build directory for as long as its tests run, so the soak runs the
-//! page tests' binary itself (built by then) with its output in a file, printed when it ends.
+//! Page tests started beside the others instead of after them: the soak, then the lessons.
+//! Both wait on the clock more than on the cores: the soak keeps each lab for its seconds,
+//! and the lessons run to their pauses at the lesson's speed, so a slower frame does not make
+//! either take much longer there. They run one after the other (each counts on its own
+//! Chromium's frames), beside the page tests that count frames. cargo holds its build
+//! directory for as long as its tests run, so they run the page tests' binary itself (built
+//! by then) with their output in a file, printed when they end.
 
 use crate::cmd::Result;
 use std::fs::File;
@@ -18,20 +20,22 @@ pub struct Beside {
     line: String,
 }
 
-/// Starts the page tests' soak against `url` for `minutes` in the background.
-pub fn start_soak(url: &str, minutes: f64) -> Result<Beside> {
+/// Starts the page tests named `tests` (exact names, run one at a time, in order) against
+/// `url` in the background, a soak among them running for `soak_minutes`.
+pub fn start(url: &str, soak_minutes: f64, tests: &[&str]) -> Result<Beside> {
     let exe = page_test_binary()?;
     let package = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests");
     let dir = package.join("../target/page-test");
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
-    let log = dir.join("soak-beside.log");
+    let log = dir.join("beside.log");
     let out = File::create(&log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
     let err = out.try_clone()?;
     let mut command = Command::new(&exe);
     command
-        .args(["--ignored", "--nocapture", "--exact", "soak"])
+        .args(["--ignored", "--nocapture", "--exact", "--test-threads=1"])
+        .args(tests)
         .env("ATTLAB_PAGE_URL", url)
-        .env("ATTLAB_SOAK_MINUTES", minutes.to_string())
+        .env("ATTLAB_SOAK_MINUTES", soak_minutes.to_string())
         .env("CHROMEDRIVER", crate::tools::CHROMEDRIVER)
         .current_dir(&package)
         .stdin(Stdio::null())
@@ -72,7 +76,7 @@ impl Beside {
 }
 
 impl Drop for Beside {
-    /// A run that stopped early (a failed page test) takes its soak with it.
+    /// A run that stopped early (a failed page test) takes the tests beside it with it.
     fn drop(&mut self) {
         if matches!(self.child.try_wait(), Ok(None)) {
             let _ = self.child.kill();

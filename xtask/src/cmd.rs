@@ -98,15 +98,32 @@ pub fn probe(cmd: &mut Command) -> Option<String> {
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
-/// Runs `cmd`, streaming its stdout to ours line by line while keeping a copy.
-/// Returns whether it succeeded and the captured stdout.
+/// Runs `cmd`, streaming its stdout and stderr to ours line by line while keeping a copy of
+/// both (cargo-nextest writes its results to stderr, `cargo test` to stdout).
+/// Returns whether it succeeded and the captured lines (stdout's, then stderr's).
 pub fn run_tee(cmd: &mut Command) -> Result<(bool, String)> {
     let line = describe(cmd);
     println!("$ {line}");
     let mut child = cmd
         .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| format!("could not start `{line}`: {e}"))?;
+    let stderr = child.stderr.take();
+    let errors = std::thread::spawn(move || {
+        let mut captured = String::new();
+        if let Some(stderr) = stderr {
+            for text in BufReader::new(stderr)
+                .lines()
+                .map_while(std::io::Result::ok)
+            {
+                eprintln!("{text}");
+                captured.push_str(&text);
+                captured.push('\n');
+            }
+        }
+        captured
+    });
     let mut captured = String::new();
     if let Some(stdout) = child.stdout.take() {
         for text in BufReader::new(stdout).lines() {
@@ -119,6 +136,7 @@ pub fn run_tee(cmd: &mut Command) -> Result<(bool, String)> {
     let status = child
         .wait()
         .map_err(|e| format!("waiting for `{line}`: {e}"))?;
+    captured.push_str(&errors.join().unwrap_or_default());
     Ok((status.success(), captured))
 }
 

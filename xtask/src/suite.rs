@@ -27,12 +27,19 @@ impl Counts {
     }
 }
 
-/// Sums every `test result: … N passed; M failed; K ignored; …` line in `output`.
-/// `None` when there is no such line.
+/// Sums every `test result: … N passed; M failed; K ignored; …` line of `cargo test` in
+/// `output`, and every `Summary [ T s] N tests run: N passed, M failed, K skipped` line of
+/// cargo-nextest (its skipped tests are the ignored ones; a test that timed out or could not
+/// start counts as failed). `None` when there is no such line.
 pub fn parse_counts(output: &str) -> Option<Counts> {
     let mut total: Option<Counts> = None;
     for line in output.lines() {
-        let Some(rest) = line.trim().strip_prefix("test result:") else {
+        let line = line.trim();
+        let nextest = line
+            .strip_prefix("Summary [")
+            .and_then(|rest| rest.split_once(']'))
+            .map(|(_, rest)| rest);
+        let Some(rest) = line.strip_prefix("test result:").or(nextest) else {
             continue;
         };
         let words: Vec<&str> = rest
@@ -46,8 +53,8 @@ pub fn parse_counts(output: &str) -> Option<Counts> {
             };
             match pair[1] {
                 "passed" => counts.passed += n,
-                "failed" => counts.failed += n,
-                "ignored" => counts.ignored += n,
+                "failed" | "timed" | "exec" => counts.failed += n,
+                "ignored" | "skipped" => counts.ignored += n,
                 _ => {}
             }
         }
@@ -234,7 +241,7 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let mut doc = cargo("doc --workspace --no-deps");
     doc.env("RUSTDOCFLAGS", "-D warnings");
     suite.check("cargo doc", doc)?;
-    suite.tests("test (native)", cargo("test --workspace --no-fail-fast"))?;
+    native_tests(suite)?;
     let mut browser = cargo(&format!(
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
@@ -251,26 +258,50 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     })?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
-    // Every page test but the soak, the page fuzz included (its default: one round of
-    // random input per lab); one at a time, as most of them count frames, and a second
-    // Chromium on the 2 cores halves the frame rate of the first.
+    // Every page test but those beside them, the page fuzz included (its default: one
+    // round of random input per lab); one at a time, as most of them count frames, and a
+    // second Chromium on the 2 cores halves the frame rate of the first.
     // `--workspace`, as the native tests: the same features for every dependency, so the
     // page test reuses that build (`-p attlab-tests` alone re-resolved them and rebuilt 71
     // crates, 83 s in CI).
-    let mut page =
-        cargo("test --workspace --test page -- --ignored --nocapture --skip soak --test-threads=1");
+    let mut page = cargo(&format!(
+        "test --workspace --test page -- --ignored --nocapture --test-threads=1 --skip {}",
+        BESIDE.join(" --skip ")
+    ));
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    // The soak beside them (see `beside`): it waits on the clock, as the lessons do.
-    let soak = suite.step("start the soak beside the page tests", || {
-        crate::beside::start_soak(&server.url(), CI_SOAK_MINUTES)
+    // The soak and the lessons beside them (see `beside`): they wait on the clock.
+    let beside = suite.step("start the soak and lessons beside", || {
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE)
     })?;
     suite.tests("page (headless Chromium)", page)?;
     suite.finish_beside(
-        &format!("soak ({CI_SOAK_MINUTES} min, beside the page tests)"),
-        soak,
+        &format!("soak ({CI_SOAK_MINUTES} min) and lessons, beside"),
+        beside,
     )
+}
+
+/// The page tests `cargo xtask test` runs beside the others, in this order (exact names):
+/// both wait on the clock more than on the cores.
+const BESIDE: [&str; 2] = ["soak", "lessons_open_at_their_step_and_pause"];
+
+/// The native tests. With cargo-nextest (on this project's machines): every test of every
+/// binary in one pool, so a binary of one long test no longer leaves a core idle while the
+/// next waits (`cargo test` runs its binaries one after the other: 170 s against 142 s for
+/// the same tests and doctests, built), then the doctests, which nextest does not run.
+/// Without it, `cargo test`, as before.
+fn native_tests(suite: &mut Suite) -> Result<()> {
+    if cmd::probe(cmd::cargo().args(["nextest", "--version"])).is_none() {
+        println!("xtask: cargo-nextest is not installed; the native tests run with `cargo test`");
+        return suite.tests("test (native)", cargo("test --workspace --no-fail-fast"));
+    }
+    let nextest = cargo("nextest run --workspace --no-fail-fast --color never");
+    let doc = cargo("test --workspace --doc --no-fail-fast");
+    let first = suite.tests("test (native, nextest)", nextest);
+    // The doctests run even when a test failed, as `cargo test --no-fail-fast` would.
+    let second = suite.tests("doctests (native)", doc);
+    first.and(second)
 }
 
 /// The page fuzz against `url` for `minutes` (`cargo xtask test` runs one round per lab
@@ -319,5 +350,29 @@ mod tests {
             })
         );
         assert_eq!(parse_counts("no tests here"), None);
+    }
+
+    #[test]
+    fn sums_nextest_summaries() {
+        let out = "        PASS [   0.740s] (303/313) attlab-web::ui reset_restarts_at_zero\n\
+            ────────────\n     Summary [ 135.904s] 313 tests run: 313 passed, 8 skipped\n";
+        assert_eq!(
+            parse_counts(out),
+            Some(Counts {
+                passed: 313,
+                failed: 0,
+                ignored: 8
+            })
+        );
+        let out = "     Summary [  12.001s] 20 tests run: 16 passed, 2 failed, 1 timed out, \
+            1 exec failed, 3 skipped\n";
+        assert_eq!(
+            parse_counts(out),
+            Some(Counts {
+                passed: 16,
+                failed: 4,
+                ignored: 3
+            })
+        );
     }
 }
