@@ -101,6 +101,8 @@ status-long = t = { $t } s · step { $step } ms · { $rate } steps/s · ×{ $rea
 behind = · behind real time: lower the speed
 diverged = · { $id } diverged: { $why } (press Reset)
 unobservable = · { $id } unobservable: { $why }
+diverged-many = · { $n } filters diverged: which and why… (press Reset)
+unobservable-many = · { $n } filters unobservable: which and why…
 
 ## The plot tabs of series groups
 group-time = Time

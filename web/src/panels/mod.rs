@@ -168,30 +168,54 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
             if app.run().stats.behind {
                 ui.colored_label(colours.warn, tr(app, "behind"));
             }
-            for (k, status) in app.sim().statuses().iter().enumerate() {
-                let name = estimator_name(app, k);
-                match status {
-                    EstimatorStatus::Ok => {}
-                    EstimatorStatus::Diverged(why) => {
-                        ui.colored_label(
-                            colours.error,
-                            tr_with(app, "diverged", &[("id", arg(&name)), ("why", arg(why))]),
-                        );
-                    }
-                    EstimatorStatus::Unobservable(why) => {
-                        ui.colored_label(
-                            colours.warn,
-                            tr_with(
-                                app,
-                                "unobservable",
-                                &[("id", arg(&name)), ("why", arg(why))],
-                            ),
-                        );
-                    }
-                }
-            }
+            health(ui, app);
         });
     });
+}
+
+/// The filters' health in the status line: one filter's trouble in full; two or more of a
+/// kind as one line whose menu lists each with its reason. Six filters that lost the star
+/// tracker had taken six lines, which left a projector's plot a strip ~100 px high.
+fn health(ui: &mut egui::Ui, app: &AppState) {
+    let mut diverged = Vec::new();
+    let mut unobservable = Vec::new();
+    for (k, status) in app.sim().statuses().iter().enumerate() {
+        let (list, id, why) = match status {
+            EstimatorStatus::Ok => continue,
+            EstimatorStatus::Diverged(why) => (&mut diverged, "diverged", why),
+            EstimatorStatus::Unobservable(why) => (&mut unobservable, "unobservable", why),
+        };
+        let name = estimator_name(app, k);
+        list.push(tr_with(app, id, &[("id", arg(&name)), ("why", arg(why))]));
+    }
+    let colours = crate::render::palette::of(ui.visuals());
+    health_group(ui, app, colours.error, "diverged-many", &diverged);
+    health_group(ui, app, colours.warn, "unobservable-many", &unobservable);
+}
+
+/// One kind of trouble: nothing, its one line, or a menu of its `lines` titled by the
+/// catalogue's `many` message with their count.
+fn health_group(
+    ui: &mut egui::Ui,
+    app: &AppState,
+    colour: egui::Color32,
+    many: &str,
+    lines: &[String],
+) {
+    match lines {
+        [] => {}
+        [one] => {
+            ui.colored_label(colour, one);
+        }
+        _ => {
+            let title = tr_with(app, many, &[("n", lines.len().into())]);
+            ui.menu_button(egui::RichText::new(title).color(colour), |ui| {
+                for line in lines {
+                    ui.colored_label(colour, line);
+                }
+            });
+        }
+    }
 }
 
 /// The status line's numbers: for a room or a phone the time and the pace; for the

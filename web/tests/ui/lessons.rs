@@ -268,3 +268,37 @@ fn the_cycle_panel_prints_the_filters_own_state_at_this_sample() {
     h.run_steps(6);
     assert_eq!(h.state().state.sim().steps(), 8);
 }
+
+/// Paper 2's lesson step 4 blinds the star tracker and several filters lose the attitude.
+/// The status line says how many on one line (six had taken six lines, squeezing the
+/// projector's plot to a strip); its menu lists each filter with its reason.
+#[test]
+fn many_diverged_filters_take_one_status_line_whose_menu_lists_them() {
+    let mut state = AppState::from_fragment("lesson=p2&step=4&presenter=1");
+    while state.sim().t_s() < 1380.0 {
+        state.apply(RunCommand::StepOnce.into());
+    }
+    let diverged = state
+        .sim()
+        .statuses()
+        .iter()
+        .filter(|s| matches!(s, attlab::model::EstimatorStatus::Diverged(_)))
+        .count();
+    assert!(
+        diverged >= 2,
+        "the blinded star tracker should leave several filters diverged, {diverged} were"
+    );
+    let mut h = harness_for(state);
+    h.run();
+    let title = format!("· {diverged} filters diverged: which and why… (press Reset)");
+    let reset_lines =
+        |h: &Harness<'static, AttLabApp>| h.query_all_by_label_contains("(press Reset)").count();
+    assert_eq!(reset_lines(&h), 1, "one line before the menu opens");
+    h.get_by_label(&title).click();
+    h.run();
+    assert_eq!(
+        reset_lines(&h),
+        1 + diverged,
+        "the menu lists every diverged filter"
+    );
+}
