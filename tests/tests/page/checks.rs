@@ -2,6 +2,22 @@
 
 use super::*;
 
+/// A page test in its own Chromium: `check` gets a session and the page's address (without
+/// its fragment) and returns its problems, timed as phase `name`; the test fails listing them.
+pub(crate) fn page_test(name: &str, check: impl FnOnce(&Session<'_>, &str) -> Vec<String>) {
+    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
+    let base = url.split('#').next().unwrap_or(&url).to_string();
+    let driver = Driver::start();
+    let session = Session::new(&driver);
+    let problems = timed(name, || check(&session, &base));
+    drop(session);
+    assert!(
+        problems.is_empty(),
+        "{name} page test failed:\n  - {}",
+        problems.join("\n  - ")
+    );
+}
+
 /// Runs one phase of a page test and prints how long it took (the CI log's breakdown of the
 /// page step).
 pub(crate) fn timed<T>(phase: &str, body: impl FnOnce() -> T) -> T {

@@ -85,17 +85,7 @@ fn status(session: &Session<'_>) -> Value {
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn a_scripted_serial_port_streams_through_the_importer_and_its_record_replays() {
-    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
-    let base = url.split('#').next().unwrap_or(&url).to_string();
-    let driver = Driver::start();
-    let session = Session::new(&driver);
-    let problems = timed("live serial", || serial_problems(&session, &base));
-    drop(session);
-    assert!(
-        problems.is_empty(),
-        "live serial page test failed:\n  - {}",
-        problems.join("\n  - ")
-    );
+    page_test("live serial", serial_problems);
 }
 
 fn serial_problems(session: &Session<'_>, base: &str) -> Vec<String> {
@@ -209,17 +199,7 @@ fn same_as_replay(status: &Value, record: &str) -> Vec<String> {
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn the_phone_sensors_turned_ninety_degrees_turn_the_estimate() {
-    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
-    let base = url.split('#').next().unwrap_or(&url).to_string();
-    let driver = Driver::start();
-    let session = Session::new(&driver);
-    let problems = timed("live phone", || phone_problems(&session, &base));
-    drop(session);
-    assert!(
-        problems.is_empty(),
-        "live phone page test failed:\n  - {}",
-        problems.join("\n  - ")
-    );
+    page_test("live phone", phone_problems);
 }
 
 /// Sets the emulated phone's readings: the accelerometer at roll `roll_deg` about the

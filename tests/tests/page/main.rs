@@ -242,17 +242,7 @@ fn page_works_offline_after_one_visit() {
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn lessons_open_at_their_step_and_pause() {
-    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
-    let base = url.split('#').next().unwrap_or(&url).to_string();
-    let driver = Driver::start();
-    let session = Session::new(&driver);
-    let problems = timed("lessons", || lessons::lesson_problems(&session, &base));
-    drop(session);
-    assert!(
-        problems.is_empty(),
-        "lesson page test failed:\n  - {}",
-        problems.join("\n  - ")
-    );
+    page_test("lessons", lessons::lesson_problems);
 }
 
 /// Random clicks, drags, wheel, touches and keys on every lab (see `fuzz.rs`).

@@ -126,17 +126,7 @@ fn canvas_problems(session: &Session<'_>) -> Vec<String> {
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn a_log_picked_in_the_page_replays_with_its_join_shaded() {
-    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
-    let base = url.split('#').next().unwrap_or(&url).to_string();
-    let driver = Driver::start();
-    let session = Session::new(&driver);
-    let problems = replay_problems(&session, &base);
-    drop(session);
-    assert!(
-        problems.is_empty(),
-        "replay page test failed:\n  - {}",
-        problems.join("\n  - ")
-    );
+    page_test("replay", replay_problems);
 }
 
 fn replay_problems(session: &Session<'_>, base: &str) -> Vec<String> {

@@ -154,18 +154,11 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn sweeps_run_in_web_workers_with_the_numbers_of_the_slices() {
-    let url = std::env::var("ATTLAB_PAGE_URL").expect("set ATTLAB_PAGE_URL to the served dist/");
-    let base = url.split('#').next().unwrap_or(&url).to_string();
-    let driver = Driver::start();
-    let session = Session::new(&driver);
-    let mut problems = timed("sweep workers p4", || compare("p4", 40.0, &session, &base));
-    problems.extend(timed("sweep workers p2", || {
-        compare("p2", 30.0, &session, &base)
-    }));
-    drop(session);
-    assert!(
-        problems.is_empty(),
-        "workers page test failed:\n  - {}",
-        problems.join("\n  - ")
-    );
+    page_test("workers", |session, base| {
+        let mut problems = timed("sweep workers p4", || compare("p4", 40.0, session, base));
+        problems.extend(timed("sweep workers p2", || {
+            compare("p2", 30.0, session, base)
+        }));
+        problems
+    });
 }
