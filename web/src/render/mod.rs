@@ -6,6 +6,7 @@ pub mod clip;
 pub mod fonts;
 pub mod mesh;
 mod orbit_inset;
+pub mod outages;
 pub mod palette;
 pub mod plots;
 pub mod riemann_sphere;

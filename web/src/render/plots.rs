@@ -2,11 +2,12 @@
 //! per series group, coloured by source, with ±3σ bands where a series says which variance
 //! bounds it.
 
+use super::outages;
 use super::palette::{self, Palette};
 use attlab::model::{Figure, Lab, Outage, SeriesGroup, SeriesSpec};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
-use egui_plot::{Line, LineStyle, Plot, Span};
+use egui_plot::{Line, LineStyle, Plot};
 
 pub use attlab::model::PlotTab as Tab;
 
@@ -47,29 +48,6 @@ pub fn groups(available: &[SeriesSpec]) -> Vec<SeriesGroup> {
         }
     }
     groups
-}
-
-/// The intervals [t₀, t₁] where series `index` equals `out_when`, from its plotted points.
-pub fn outage_intervals(rec: &Recorder, index: usize, out_when: f64) -> Vec<[f64; 2]> {
-    let mut out = Vec::new();
-    let mut start: Option<f64> = None;
-    let mut last_t = 0.0;
-    for p in rec.plot_points(index, 4 * MAX_POINTS) {
-        let is_out = (p[1] - out_when).abs() < 0.5;
-        match (is_out, start) {
-            (true, None) => start = Some(p[0]),
-            (false, Some(t0)) => {
-                out.push([t0, p[0]]);
-                start = None;
-            }
-            _ => {}
-        }
-        last_t = p[0];
-    }
-    if let Some(t0) = start {
-        out.push([t0, last_t]);
-    }
-    out
 }
 
 /// The words a plot draws, in the reader's language (the page fills them from the
@@ -135,13 +113,16 @@ pub fn show(
     {
         plot = plot.reset();
     }
+    let bands = if state.show_outages {
+        outages::bands(rec, outages)
+    } else {
+        Vec::new()
+    };
     let (rect, moved) = ui
         .scope_builder(egui::UiBuilder::new().max_rect(plot_rect), |ui| {
             let shown_plot = plot.show(ui, |plot| {
                 wheel_zoom(plot);
-                if state.show_outages {
-                    shade_outages(plot, rec, outages, colours);
-                }
+                outages::shade(plot, &bands, colours);
                 for (i, color) in &shown {
                     let style = LineLook {
                         color: *color,
@@ -154,6 +135,7 @@ pub fn show(
                 }
                 !plot.auto_bounds().all()
             });
+            outages::label(ui, &shown_plot.transform, &bands, &words.outages);
             (shown_plot.response.rect, shown_plot.inner)
         })
         .inner;
@@ -311,7 +293,7 @@ fn legend(
                 ui.horizontal(|ui| {
                     let (r, _) =
                         ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
-                    ui.painter().rect_filled(r, 2.0, outage_color(colours, k));
+                    ui.painter().rect_filled(r, 2.0, outages::color(colours, k));
                     let text = words.outages.get(k).map_or(o.label, String::as_str);
                     ui.add(egui::Label::new(text).wrap());
                 });
@@ -345,32 +327,6 @@ fn lines(rec: &Recorder, figures: &[Figure], tab: Tab, colours: &Palette) -> Vec
             .map(|(i, s)| (i, colours.source(s.source)))
             .collect(),
     }
-}
-
-/// The intervals of every outage the lab declares, shaded.
-fn shade_outages(
-    plot: &mut egui_plot::PlotUi<'_>,
-    rec: &Recorder,
-    outages: &[Outage],
-    colours: &Palette,
-) {
-    for (k, o) in outages.iter().enumerate() {
-        let Some(i) = rec.index_of(&o.series.name()) else {
-            continue;
-        };
-        for [t0, t1] in outage_intervals(rec, i, o.out_when) {
-            plot.span(
-                Span::new(o.label, t0..=t1)
-                    .fill(outage_color(colours, k))
-                    .border_width(0.0),
-            );
-        }
-    }
-}
-
-/// Shading colour of outage `k`.
-fn outage_color(colours: &Palette, k: usize) -> Color32 {
-    colours.outages[k % colours.outages.len()]
 }
 
 /// How one series is drawn.

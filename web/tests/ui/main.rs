@@ -195,7 +195,7 @@ fn the_gamma_sweep_runs_from_its_button_and_shows_its_argmins() {
 #[test]
 fn the_star_tracker_outages_are_shaded_where_it_was_out() {
     use attlab::sim::Simulation;
-    use attlab_web::render::plots::outage_intervals;
+    use attlab_web::render::outages::intervals as outage_intervals;
     let lab = labs::find("p2").expect("registered");
     let mut params = ParamValues::defaults(lab.params());
     params
