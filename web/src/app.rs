@@ -304,21 +304,19 @@ impl AttLabApp {
             self.apply(ViewCommand::SelectTab(restore).into());
         }
         let name = self.png_name(target);
+        let lang = self.state.view().lang();
         let message = result.and_then(|png| {
             let (w, h, n) = (png.width, png.height, png.bytes.len());
-            let saved = platform::save_file(
-                &name,
-                "image/png",
-                png.bytes,
-                self.state.io().save_dir.as_deref(),
-            )?;
+            let dir = self.state.io().save_dir.as_deref();
+            let saved = platform::save_file(&name, "image/png", png.bytes, dir, lang)?;
             self.last_png = Some((name.clone(), w, h, n));
-            Ok(format!("{saved} ({w}×{h} pixels)"))
+            let args = [("saved", saved.into()), ("w", w.into()), ("h", h.into())];
+            Ok(attlab::i18n::t_with(lang, "msg-png-saved", &args))
         });
         let message = match message {
             Ok(m) => Message::info(m),
             Err(e) => Message::error(attlab::i18n::t_with(
-                self.state.view().lang(),
+                lang,
                 "msg-png-failed",
                 &[("why", e.into())],
             )),

@@ -233,19 +233,22 @@ pub fn publish_status(status: &Status<'_>) {
 
 /// Offers `contents` to the user as a file named `name`: in the browser a direct download
 /// (a link to a blob, clicked at once: nothing on the page waits for a click), on the
-/// desktop a save dialog. Returns a message for the user.
+/// desktop a save dialog. Returns a message for the user, in `lang`.
 /// On the desktop, `dir` saves there without asking (scripted and headless use).
 pub fn save_file(
     name: &str,
     mime: &str,
     contents: Vec<u8>,
     dir: Option<&std::path::Path>,
+    lang: attlab::i18n::Lang,
 ) -> Result<String, String> {
+    use attlab::i18n::t_with;
     let _ = (mime, dir);
     #[cfg(target_arch = "wasm32")]
     {
-        download(name, mime, &contents).map_err(|e| format!("the browser refused: {e:?}"))?;
-        Ok(format!("{name} downloaded"))
+        download(name, mime, &contents)
+            .map_err(|e| t_with(lang, "save-refused", &[("detail", format!("{e:?}").into())]))?;
+        Ok(t_with(lang, "saved-downloaded", &[("name", name.into())]))
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
@@ -254,11 +257,17 @@ pub fn save_file(
             None => rfd::FileDialog::new().set_file_name(name).save_file(),
         };
         let Some(path) = chosen else {
-            return Ok("save cancelled".into());
+            return Ok(attlab::i18n::t(lang, "saved-cancelled"));
         };
-        std::fs::write(&path, contents)
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        Ok(format!("saved {}", path.display()))
+        let shown = path.display().to_string();
+        std::fs::write(&path, contents).map_err(|e| {
+            let args = [
+                ("path", shown.clone().into()),
+                ("error", e.to_string().into()),
+            ];
+            t_with(lang, "save-cannot-write", &args)
+        })?;
+        Ok(t_with(lang, "saved-written", &[("path", shown.into())]))
     }
 }
 

@@ -104,6 +104,17 @@ unobservable = · { $id } unobservable: { $why }
 diverged-many = · { $n } filters diverged: which and why… (press Reset)
 unobservable-many = · { $n } filters unobservable: which and why…
 
+## Why a filter is in trouble (after "diverged:" or "unobservable:")
+trouble-not-finite = the state or the covariance is not finite (NaN or ∞)
+trouble-sensitivity-not-finite = Λ, U or p is not finite
+trouble-innovation-not-positive = update refused: H P Hᵀ + R is not positive definite (a degenerate geometry?)
+trouble-measurement-not-finite = update refused: the measurement or the result is not finite
+trouble-lost-definiteness = the covariance lost positive definiteness: R is too small beside P for double precision
+trouble-attitude-lost = attitude 2σ { $sigma }° (over { $limit }°): the filter has lost the attitude
+trouble-angle-ran-away = the angle ran { $deg }° away from the integrated gyro angle (the adaptation is unstable here)
+trouble-singular-sensitivity = UᵀQU is singular: raise ε (method 10)
+trouble-sun-along-field = sun and field within { $deg }° of parallel: the rotation about them is not observed
+
 ## The plot tabs of series groups
 group-time = Time
 group-attitude = Attitude
@@ -252,6 +263,12 @@ msg-preset-waits = preset { $name }: some values apply at Reset
 msg-png-lab-changed = PNG export stopped: the lab changed
 msg-png-busy = a PNG is being made already: one at a time
 msg-png-failed = PNG export failed: { $why }
+saved-downloaded = { $name } downloaded
+saved-written = saved { $path }
+saved-cancelled = save cancelled
+save-refused = the browser refused the download: { $detail }
+save-cannot-write = cannot write { $path }: { $error }
+msg-png-saved = { $saved } ({ $w }×{ $h } pixels)
 
 ## A link's bad items, shown at the top of the page
 link-problems = This link had items the page could not use; the rest of it is applied:
@@ -326,3 +343,9 @@ note-p2-tuned-q-uncertain = It runs with q_Λ = { $att }, q_ω = { $rate }, q_bi
 note-p2-tuned-q-ours = It runs with q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (with the Q scale); this set's row at ×1: { $paper_att }, { $paper_rate }, { $paper_bias }, this project's choice (the OCR lost Table 3's).
 note-p0-limited = P₀ would be singular or indefinite (b₀² ≥ a₀c₀): the filters use b₀ = ±{ $limit } deg²/s, a correlation of 0.99.
 note-u0-range = Eq. 4: u₀ lies in [{ $lo }, { $hi }] rad/s²; this rig needs { $needed } rad/s².
+
+## Before the app starts: index.html holds a copy of these (a test checks they agree)
+boot-loading = Loading Attitude Lab…
+boot-failed = Attitude Lab could not start
+boot-failed-why = Either the page's files did not load, or this browser lacks WebAssembly or WebGL2. Try reloading, or use a recent Chrome, Firefox or Safari.
+boot-no-script = Attitude Lab needs JavaScript: please enable it and reload the page.

@@ -112,6 +112,17 @@ unobservable-many = · { $n ->
    *[many] { $n } фильтров ненаблюдаемы
 }: какие и почему…
 
+## Почему фильтр в беде (после «разошёлся:» или «ненаблюдаем:»)
+trouble-not-finite = состояние или ковариация не конечны (NaN или ∞)
+trouble-sensitivity-not-finite = Λ, U или p не конечны
+trouble-innovation-not-positive = обновление отклонено: H P Hᵀ + R не положительно определена (вырожденная геометрия?)
+trouble-measurement-not-finite = обновление отклонено: измерение или результат не конечны
+trouble-lost-definiteness = ковариация потеряла положительную определённость: R слишком мала рядом с P для двойной точности
+trouble-attitude-lost = 2σ ориентации { $sigma }° (больше { $limit }°): фильтр потерял ориентацию
+trouble-angle-ran-away = угол ушёл на { $deg }° от проинтегрированного угла гироскопа (адаптация здесь неустойчива)
+trouble-singular-sensitivity = UᵀQU вырождена: увеличьте ε (метод 10)
+trouble-sun-along-field = Солнце и поле параллельны с точностью до { $deg }°: вращение вокруг них не наблюдается
+
 ## Вкладки групп рядов
 group-time = Время
 group-attitude = Ориентация
@@ -262,6 +273,12 @@ msg-preset-waits = набор «{ $name }»: часть значений вст�
 msg-png-lab-changed = выгрузка PNG остановлена: сменилась работа
 msg-png-busy = PNG уже делается: по одному за раз
 msg-png-failed = выгрузка PNG не удалась: { $why }
+saved-downloaded = { $name } скачан
+saved-written = сохранено: { $path }
+saved-cancelled = сохранение отменено
+save-refused = браузер не дал скачать файл: { $detail }
+save-cannot-write = не удаётся записать { $path }: { $error }
+msg-png-saved = { $saved } ({ $w }×{ $h } пикселей)
 
 ## Плохие элементы ссылки, вверху страницы
 link-problems = В ссылке есть элементы, которые страница не смогла применить; остальное применено:
@@ -336,3 +353,9 @@ note-p2-tuned-q-uncertain = Работает с q_Λ = { $att }, q_ω = { $rate 
 note-p2-tuned-q-ours = Работает с q_Λ = { $att }, q_ω = { $rate }, q_bias = { $bias } (с масштабом Q); строка набора при ×1: { $paper_att }, { $paper_rate }, { $paper_bias } — наш выбор (OCR потерял значения таблицы 3).
 note-p0-limited = P₀ была бы вырожденной или неопределённой (b₀² ≥ a₀c₀): фильтры берут b₀ = ±{ $limit } град²/с, корреляцию 0,99.
 note-u0-range = Ур. 4: u₀ лежит в [{ $lo }, { $hi }] рад/с²; этому стенду нужно { $needed } рад/с².
+
+## До запуска приложения: копия этих строк в index.html (тест проверяет, что они совпадают)
+boot-loading = Загрузка Attitude Lab…
+boot-failed = Attitude Lab не удалось запустить
+boot-failed-why = Либо файлы страницы не загрузились, либо в этом браузере нет WebAssembly или WebGL2. Перезагрузите страницу или откройте её в свежей версии Chrome, Firefox или Safari.
+boot-no-script = Для Attitude Lab нужен JavaScript: включите его и перезагрузите страницу.

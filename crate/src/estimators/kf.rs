@@ -24,6 +24,7 @@
 //! of rows, no heap).
 
 use crate::math::{all_finite, joseph_update_scalar, symmetrize};
+use crate::model::Trouble;
 use nalgebra::{SMatrix, SVector};
 use thiserror::Error;
 
@@ -37,6 +38,15 @@ pub enum KfError {
     /// The measurement or the result is not finite.
     #[error("non-finite measurement or state")]
     NotFinite,
+}
+
+impl From<KfError> for Trouble {
+    fn from(e: KfError) -> Self {
+        match e {
+            KfError::SingularInnovation => Trouble::InnovationNotPositive,
+            KfError::NotFinite => Trouble::MeasurementNotFinite,
+        }
+    }
 }
 
 /// A linear transition: Φ and Q fixed for the step.

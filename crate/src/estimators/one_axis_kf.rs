@@ -17,7 +17,7 @@ use super::kf::Innovation;
 use super::kf_cycle::CycleRecorder;
 use crate::model::{
     Covariance, Estimate, Estimator, EstimatorStatus, Extras, KalmanCycle, Measurements,
-    ParamValues, Quantity, StateInfo, StateKind, Tuner,
+    ParamValues, Quantity, StateInfo, StateKind, Trouble, Tuner,
 };
 use nalgebra::{Matrix1, Matrix1x2, Matrix2, Vector1, Vector2, Vector3};
 
@@ -267,7 +267,7 @@ impl Estimator for OneAxisKf {
                     self.rate_minus_sensor_rad_s = self.kf.x()[1] - z;
                     self.record_update();
                 }
-                Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
+                Err(e) => self.status = EstimatorStatus::Diverged(e.into()),
             }
         }
         let note = (self.kf.resets > resets).then_some(WINDOW_ENDED);
@@ -279,12 +279,11 @@ impl Estimator for OneAxisKf {
             .chain(self.kf.p().iter())
             .all(|v| v.is_finite()))
         {
-            self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+            self.status = EstimatorStatus::Diverged(Trouble::NotFinite);
         } else if (self.kf.x()[0] - self.phi_int_rad).abs() > RUNAWAY_RAD {
-            self.status = EstimatorStatus::Diverged(format!(
-                "the angle ran {:.0}° away from the integrated gyro angle (the adaptation is unstable here)",
-                (self.kf.x()[0] - self.phi_int_rad).to_degrees()
-            ));
+            self.status = EstimatorStatus::Diverged(Trouble::AngleRanAway {
+                deg: (self.kf.x()[0] - self.phi_int_rad).to_degrees(),
+            });
         }
     }
 

@@ -237,7 +237,7 @@ impl<const N: usize> Estimator for RollKf<N> {
                     self.cycle
                         .updated(&prior, &h, &r, CYCLE_ROWS_NAMED, &inn, &self.kf);
                 }
-                Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
+                Err(e) => self.status = EstimatorStatus::Diverged(e.into()),
             }
         }
         self.cycle.finish(&self.kf, None);

@@ -181,7 +181,7 @@ impl WzKalman {
                 self.wz.v = self.kf.x[1];
                 self.innovation = [y.x, y.y];
             }
-            Err(e) => self.status = EstimatorStatus::Diverged(format!("update refused: {e}")),
+            Err(e) => self.status = EstimatorStatus::Diverged(e.into()),
         }
     }
 

@@ -392,6 +392,16 @@ pub fn t_with(lang: Lang, id: &str, args: &[(&str, FluentValue<'_>)]) -> String 
     format(lang, id, Some(&fluent))
 }
 
+/// Why an estimator is in trouble, in `lang`, with its numbers.
+pub fn trouble(lang: Lang, why: &crate::model::Trouble) -> String {
+    let args: Vec<(&str, FluentValue<'_>)> = why
+        .arguments()
+        .into_iter()
+        .map(|(name, value)| (name, FluentValue::from(value)))
+        .collect();
+    t_with(lang, why.message_id(), &args)
+}
+
 fn format(lang: Lang, id: &str, args: Option<&FluentArgs<'_>>) -> String {
     for l in [lang, Lang::En] {
         let b = bundle(l);

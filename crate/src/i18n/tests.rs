@@ -32,6 +32,69 @@ fn every_message_is_in_both_languages() {
     assert!(en.len() > 50, "{} messages", en.len());
 }
 
+/// The arguments the catalogue's messages take as text, each given "x" by the format test.
+const TEXT_ARGUMENTS: &[&str] = &[
+    "help",
+    "names",
+    "n",
+    "name",
+    "title",
+    "label",
+    "ids",
+    "t",
+    "lab",
+    "state",
+    "speed",
+    "error",
+    "band",
+    "a",
+    "b",
+    "axis",
+    "covered",
+    "window",
+    "at",
+    "param",
+    "value",
+    "rms",
+    "lo",
+    "hi",
+    "best",
+    "s",
+    "ms",
+    "item",
+    "range",
+    "kept",
+    "k",
+    "count",
+    "answer",
+    "lines",
+    "reordered",
+    "merged",
+    "rejected",
+    "gaps",
+    "mass",
+    "factor",
+    "required",
+    "dmin",
+    "period",
+    "limit",
+    "needed",
+    "att",
+    "bias",
+    "paper_att",
+    "paper_rate",
+    "paper_bias",
+    "sigma",
+    "deg",
+    "path",
+    "detail",
+    "saved",
+    "w",
+    "h",
+    "source",
+    "api",
+];
+
 #[test]
 fn every_message_formats_without_an_error_in_both() {
     for lang in Lang::ALL {
@@ -40,56 +103,8 @@ fn every_message_formats_without_an_error_in_both() {
             let pattern = b.get_message(&id).and_then(|m| m.value());
             let pattern = pattern.unwrap_or_else(|| panic!("{id} has no value"));
             let mut args = FluentArgs::new();
-            let words = ["help", "names", "n", "name", "title", "label", "ids", "t"];
-            let more = [
-                "lab",
-                "state",
-                "speed",
-                "error",
-                "band",
-                "a",
-                "b",
-                "axis",
-                "covered",
-                "window",
-                "at",
-                "param",
-                "value",
-                "rms",
-                "lo",
-                "hi",
-                "best",
-                "s",
-                "ms",
-                "item",
-                "range",
-                "kept",
-                "k",
-                "count",
-                "answer",
-                "lines",
-                "reordered",
-                "merged",
-                "rejected",
-                "gaps",
-                "mass",
-                "factor",
-                "required",
-                "dmin",
-                "period",
-                "limit",
-                "needed",
-                "att",
-                "bias",
-                "paper_att",
-                "paper_rate",
-                "paper_bias",
-                "source",
-                "api",
-                "state",
-            ];
-            for name in words.into_iter().chain(more) {
-                args.set(name, "x");
+            for name in TEXT_ARGUMENTS {
+                args.set(*name, "x");
             }
             for name in [
                 "realtime", "asked", "step", "rate", "frame", "sim", "mib", "baud",
@@ -237,4 +252,85 @@ fn the_binary_reads_every_russian_file_the_page_fetches() {
         on_disk == included,
         "locales/ru and the included files differ"
     );
+}
+
+#[test]
+fn every_trouble_is_said_in_both_languages_with_its_numbers() {
+    for why in crate::model::Trouble::EXAMPLES {
+        let id = why.message_id();
+        let en = trouble(Lang::En, &why);
+        let ru = trouble(Lang::Ru, &why);
+        for lang in Lang::ALL {
+            assert!(has(lang, id), "{}: {id} is missing", lang.code());
+        }
+        assert_ne!(en, ru, "{id}: the Russian is the English");
+        for (name, value) in why.arguments() {
+            for text in [&en, &ru] {
+                assert!(
+                    text.contains(&value),
+                    "{id}: ${name} = {value} not in {text:?}"
+                );
+            }
+        }
+        assert!(
+            !en.contains('{') && !ru.contains('{'),
+            "{id}: an unfilled argument"
+        );
+    }
+}
+
+/// index.html speaks before the app and its catalogue have started (loading, the error box,
+/// no JavaScript): its copy of the `boot-*` messages must say what the catalogue says.
+#[test]
+fn the_page_says_what_the_catalogue_says_before_the_app_starts() {
+    let html = include_str!("../../../index.html");
+    let open = r#"<script type="application/json" id="attlab_boot_words">"#;
+    let json = html
+        .split_once(open)
+        .and_then(|(_, rest)| rest.split_once("</script>"))
+        .map(|(json, _)| json)
+        .expect("index.html has no attlab_boot_words");
+    let words: serde_json::Value = serde_json::from_str(json).expect("attlab_boot_words is JSON");
+    for lang in Lang::ALL {
+        let copy = words[lang.code()]
+            .as_object()
+            .unwrap_or_else(|| panic!("attlab_boot_words has no {}", lang.code()));
+        let boot: Vec<String> = ids(lang)
+            .into_iter()
+            .filter(|id| id.starts_with("boot-"))
+            .collect();
+        let copied: Vec<&String> = copy.keys().collect();
+        assert_eq!(
+            copied.len(),
+            boot.len(),
+            "{}: {copied:?} against {boot:?}",
+            lang.code()
+        );
+        for id in &boot {
+            assert_eq!(
+                copy[id].as_str(),
+                Some(t(lang, id).as_str()),
+                "{}: {id}",
+                lang.code()
+            );
+        }
+    }
+    // Without JavaScript nothing can choose: the page says it in both.
+    for lang in Lang::ALL {
+        assert!(
+            html.contains(&t(lang, "boot-no-script")),
+            "noscript lacks {}",
+            lang.code()
+        );
+    }
+    // The text each element holds until the script sets it is the English.
+    for element in html.split("data-word=\"").skip(1) {
+        let (id, rest) = element.split_once('"').expect("data-word is quoted");
+        let text = rest.split_once('>').and_then(|(_, r)| r.split_once('<'));
+        assert_eq!(
+            text.map(|(t, _)| t.to_string()),
+            Some(t(Lang::En, id)),
+            "{id}"
+        );
+    }
 }

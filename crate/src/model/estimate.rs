@@ -4,6 +4,7 @@ use super::cycle::KalmanCycle;
 use super::data::LabData;
 use super::params::ParamValues;
 use super::series::{Extras, Quantity};
+use super::trouble::Trouble;
 use crate::math::WzAttitude;
 use nalgebra::{UnitQuaternion, Vector3};
 
@@ -32,15 +33,15 @@ pub struct Measurements {
 }
 
 /// Health of an estimator, shown in the UI and recorded.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum EstimatorStatus {
     /// Running normally.
     #[default]
     Ok,
     /// The state or covariance became non-finite or lost positive definiteness.
-    Diverged(String),
+    Diverged(Trouble),
     /// The measurements cannot determine the state right now.
-    Unobservable(String),
+    Unobservable(Trouble),
 }
 
 /// The healthy status, for estimators that never fail.

@@ -20,6 +20,7 @@ pub mod q;
 mod report;
 mod series;
 mod study;
+mod trouble;
 
 pub use cycle::{CYCLE_ROWS, CYCLE_STATES, CycleUpdate, KalmanCycle, StateMatrix, StateVector};
 pub use data::LabData;
@@ -47,3 +48,4 @@ pub use series::{Extras, PlotTab, Quantity, SeriesGroup, SeriesSpec, display_uni
 pub use study::{
     ExampleLog, OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem,
 };
+pub use trouble::Trouble;

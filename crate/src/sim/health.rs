@@ -3,7 +3,7 @@
 //! estimator for the recorded `status` series.
 
 use crate::math::all_finite;
-use crate::model::{Estimate, Estimator, EstimatorStatus};
+use crate::model::{Estimate, Estimator, EstimatorStatus, Trouble};
 
 /// The health of every estimator of a run, by position.
 #[derive(Clone, Debug)]
@@ -29,10 +29,8 @@ impl Health {
         if code != self.codes[i] || (!status.is_ok() && self.statuses[i] != *status) {
             self.statuses[i] = match (healthy, status) {
                 (true, _) => EstimatorStatus::Ok,
-                (false, EstimatorStatus::Ok) => {
-                    EstimatorStatus::Diverged("state or covariance is not finite".into())
-                }
-                (false, s) => s.clone(),
+                (false, EstimatorStatus::Ok) => EstimatorStatus::Diverged(Trouble::NotFinite),
+                (false, s) => *s,
             };
             self.codes[i] = self.statuses[i].code();
         }

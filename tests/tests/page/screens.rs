@@ -114,6 +114,7 @@ pub(crate) fn screen_problems(session: &Session<'_>, base: &str) -> Vec<String> 
             let found = status_problems(&status)
                 .into_iter()
                 .chain(layout_problems(&status, screen.size, screen.min_plot_share))
+                .chain(boot_problems(session, screen))
                 .chain(console_and_screenshot(
                     session,
                     &tag,
@@ -124,6 +125,37 @@ pub(crate) fn screen_problems(session: &Session<'_>, base: &str) -> Vec<String> 
     }
     if let Err(e) = session.set_viewport(None, false) {
         problems.push(format!("cannot end the emulation: {e}"));
+    }
+    problems
+}
+
+/// The words index.html shows before the app starts (its loading line) must be in the
+/// language the app then chose (`<html lang>`, which the app sets too): Russian on the
+/// screen whose link asks for it.
+fn boot_problems(session: &Session<'_>, screen: &Screen) -> Vec<String> {
+    let script = "return [document.querySelector('[data-word=boot-loading]')?.textContent ?? null, \
+                  document.documentElement.lang];";
+    let seen = match session.execute(script) {
+        Ok(v) => v,
+        Err(e) => return vec![format!("cannot read the loading line: {e}")],
+    };
+    let (Some(text), Some(code)) = (seen[0].as_str(), seen[1].as_str()) else {
+        return vec![format!("no loading line or <html lang>: {seen}")];
+    };
+    let Some(lang) = attlab::i18n::Lang::from_tag(code) else {
+        return vec![format!(
+            "<html lang={code:?}> is not a language the page speaks"
+        )];
+    };
+    let mut problems = Vec::new();
+    if screen.link.contains("lang=ru") && lang != attlab::i18n::Lang::Ru {
+        problems.push(format!("the link asks for Russian, the page is in {code}"));
+    }
+    let expected = attlab::i18n::t(lang, "boot-loading");
+    if text != expected {
+        problems.push(format!(
+            "the loading line says {text:?}, not {expected:?} ({code})"
+        ));
     }
     problems
 }

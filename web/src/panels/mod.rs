@@ -186,6 +186,7 @@ fn health(ui: &mut egui::Ui, app: &AppState) {
             EstimatorStatus::Unobservable(why) => (&mut unobservable, "unobservable", why),
         };
         let name = estimator_name(app, k);
+        let why = attlab::i18n::trouble(app.view().lang(), why);
         list.push(tr_with(app, id, &[("id", arg(&name)), ("why", arg(why))]));
     }
     let colours = crate::render::palette::of(ui.visuals());

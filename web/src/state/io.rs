@@ -213,7 +213,8 @@ impl AppState {
     /// Saves `bytes` as `name`, with `what` after the saved path in the message.
     pub(super) fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, String>) {
         let message = result.and_then(|what| {
-            platform::save_file(name, "text/csv", bytes, self.io.save_dir.as_deref())
+            let dir = self.io.save_dir.as_deref();
+            platform::save_file(name, "text/csv", bytes, dir, self.view.lang())
                 .map(|m| format!("{m} ({what})"))
         });
         match message {

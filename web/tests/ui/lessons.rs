@@ -302,3 +302,42 @@ fn many_diverged_filters_take_one_status_line_whose_menu_lists_them() {
         "the menu lists every diverged filter"
     );
 }
+
+/// The same lesson step in Russian: each filter's reason is in Russian too (it had been the
+/// core's English sentence, "…: the filter has lost the attitude", in a Russian page).
+#[test]
+fn a_diverged_filter_says_why_in_the_readers_language() {
+    use attlab::i18n::{Lang, trouble};
+    let mut state = AppState::from_fragment("lesson=p2&step=4&presenter=1&lang=ru");
+    while state.sim().t_s() < 1380.0 {
+        state.apply(RunCommand::StepOnce.into());
+    }
+    let reasons: Vec<String> = state
+        .sim()
+        .statuses()
+        .iter()
+        .filter_map(|s| match s {
+            attlab::model::EstimatorStatus::Diverged(why) => Some(trouble(Lang::Ru, why)),
+            _ => None,
+        })
+        .collect();
+    assert!(
+        reasons.len() >= 2,
+        "several filters should have diverged: {reasons:?}"
+    );
+    let mut h = harness_for(state);
+    h.run();
+    h.query_all_by_label_contains("какие и почему")
+        .next()
+        .expect("the status line's Russian menu")
+        .click();
+    h.run();
+    for why in &reasons {
+        assert!(
+            h.query_all_by_label_contains(why).next().is_some(),
+            "the menu does not say {why:?}"
+        );
+    }
+    let english = h.query_all_by_label_contains("the filter has lost").count();
+    assert_eq!(english, 0, "an English reason in the Russian page");
+}

@@ -26,7 +26,7 @@ use super::kf::KalmanState;
 use crate::math::{all_finite, pattern_mul, propagate_first_order, symmetrize};
 use crate::model::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues,
-    Quantity, StateInfo,
+    Quantity, StateInfo, Trouble,
 };
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
 pub use onboard::Onboard;
@@ -430,17 +430,14 @@ impl<const N: usize> Estimator for Mekf<N> {
                 .fold(0.0_f64, f64::max)
                 .sqrt();
         if !finite {
-            self.status = EstimatorStatus::Diverged("state or covariance is not finite".into());
+            self.status = EstimatorStatus::Diverged(Trouble::NotFinite);
         } else if updated && !positive_semidefinite(&self.p) {
-            self.status = EstimatorStatus::Diverged(
-                "the covariance lost positive definiteness: R is too small beside P for double precision".into(),
-            );
+            self.status = EstimatorStatus::Diverged(Trouble::LostDefiniteness);
         } else if att_sigma > LOST_RAD {
-            self.status = EstimatorStatus::Diverged(format!(
-                "attitude σ {:.0}° (over {:.0}°): the filter has lost the attitude",
-                att_sigma.to_degrees(),
-                LOST_RAD.to_degrees()
-            ));
+            self.status = EstimatorStatus::Diverged(Trouble::AttitudeLost {
+                sigma_deg: att_sigma.to_degrees(),
+                limit_deg: LOST_RAD.to_degrees(),
+            });
         }
     }
 

@@ -164,9 +164,7 @@ impl<const N: usize> Mekf<N> {
                     new_gains[k] = Some(inn.gain);
                 }
                 Err(e) => {
-                    self.status = EstimatorStatus::Diverged(format!(
-                        "update refused: {e} (degenerate geometry?)"
-                    ));
+                    self.status = EstimatorStatus::Diverged(e.into());
                     return false;
                 }
             }
@@ -195,9 +193,9 @@ impl<const N: usize> Mekf<N> {
             !(DEGENERATE_DEG..=180.0 - DEGENERATE_DEG).contains(&angle)
         };
         self.status = if degenerate {
-            EstimatorStatus::Unobservable(format!(
-                "sun and field within {DEGENERATE_DEG}°: the rotation about them is not observed"
-            ))
+            EstimatorStatus::Unobservable(Trouble::SunAlongField {
+                within_deg: DEGENERATE_DEG,
+            })
         } else {
             EstimatorStatus::Ok
         };

@@ -24,7 +24,7 @@
 use crate::math::{ExplicitRk, RK4, sequence_from_quaternion, symmetrize, wrap_pi};
 use crate::model::{
     Attitude, Estimate, Estimator, EstimatorStatus, Extras, Measurements, ParamValues, Quantity,
-    Tuner,
+    Trouble, Tuner,
 };
 use nalgebra::{
     Complex, Matrix2, Matrix3, Matrix4, Quaternion, SMatrix, UnitQuaternion, Vector3, Vector4,
@@ -276,8 +276,7 @@ impl SensitivityCorrection {
             f64::INFINITY
         };
         let Some(h) = (a + Matrix3::identity() * eps).lu().solve(&b) else {
-            self.status =
-                EstimatorStatus::Unobservable("UᵀQU is singular: raise ε (method 10)".into());
+            self.status = EstimatorStatus::Unobservable(Trouble::SingularSensitivity);
             self.info = UpdateInfo {
                 singular_values: sv,
                 condition,
@@ -390,7 +389,7 @@ impl Estimator for SensitivityCorrection {
             .chain(self.p.iter())
             .all(|v| v.is_finite()))
         {
-            self.status = EstimatorStatus::Diverged("Λ, U or p is not finite".into());
+            self.status = EstimatorStatus::Diverged(Trouble::SensitivityNotFinite);
             return;
         }
         if let Some(reference) = m.star_q_ref_from_body {
