@@ -19,6 +19,10 @@
 //! * [`state`]: the shareable URL state.
 //! * [`i18n`]: the message catalogue (English and Russian), a leaf.
 
+// A panic in the product is a bug to report, not an answer: fallible paths return typed
+// errors. Tests may unwrap (clippy.toml allows it in tests).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
+
 pub mod analysis;
 pub mod dynamics;
 pub mod estimators;

@@ -11,6 +11,10 @@
 //! and a closed connection leaves nothing for a browser to wait on when the server stops
 //! (the page tests' network cut). Requests are parsed by `httparse`.
 
+// A panic in the product is a bug to report, not an answer: fallible paths return typed
+// errors. Tests may unwrap (clippy.toml allows it in tests).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
+
 use std::fs::File;
 use std::io::{self, Read, Write};
 use std::net::{Shutdown, SocketAddr, TcpListener, TcpStream};

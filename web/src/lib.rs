@@ -8,6 +8,10 @@
 //! that applies commands) → `render` (drawing) and `platform` (browser/desktop differences);
 //! `a11y` (the accessibility mirror, an egui plugin) depends on egui alone.
 
+// A panic in the product is a bug to report, not an answer: fallible paths return typed
+// errors. Tests may unwrap (clippy.toml allows it in tests).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
+
 pub mod a11y;
 pub mod app;
 pub mod export;

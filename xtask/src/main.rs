@@ -10,6 +10,10 @@
 //! Each command first installs what is missing (wasm target, `wasm-bindgen-cli`, npm
 //! `binaryen` in `.tools/`, Chromium and chromedriver for `test`), without ever prompting.
 
+// A panic in the product is a bug to report, not an answer: fallible paths return typed
+// errors. Tests may unwrap (clippy.toml allows it in tests).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
+
 mod beside;
 mod cmd;
 use attlab_serve as serve;

@@ -1,5 +1,9 @@
 //! `attlab`: the headless command-line tool (reproduce, run, bench).
 
+// A panic in the product is a bug to report, not an answer: fallible paths return typed
+// errors. Tests may unwrap (clippy.toml allows it in tests).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
+
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 
