@@ -1,5 +1,5 @@
 //! Why an estimator is not healthy, typed and with its numbers, so that the page can say it
-//! in the reader's language (`crate::i18n::trouble`, the catalogue's `trouble-*` messages).
+//! in the reader's language (the catalogue's `trouble-*` messages, through `i18n::trouble`).
 //! It had been an English sentence formatted by the estimator, which the Russian page showed
 //! as it was, and which cost an allocation at every step a filter stayed lost.
 
