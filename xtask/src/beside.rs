@@ -7,7 +7,6 @@
 //! by then) with their output in a file, printed when they end.
 
 use crate::cmd::Result;
-use crate::lints::Lints;
 use std::fs::File;
 use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
@@ -23,9 +22,8 @@ pub struct Beside {
 
 /// Starts the page tests named `tests` (exact names, run one at a time, in order) against
 /// `url` in the background, a soak among them running for `soak_minutes`.
-/// `lints` as on the build that made the binary, so cargo finds it built.
-pub fn start(url: &str, soak_minutes: f64, tests: &[&str], lints: &Lints) -> Result<Beside> {
-    let exe = page_test_binary(lints)?;
+pub fn start(url: &str, soak_minutes: f64, tests: &[&str]) -> Result<Beside> {
+    let exe = page_test_binary()?;
     let package = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests");
     let dir = package.join("../target/page-test");
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
@@ -88,10 +86,8 @@ impl Drop for Beside {
 }
 
 /// The page tests' binary: cargo names it (building it if it is not yet built).
-fn page_test_binary(lints: &Lints) -> Result<PathBuf> {
-    let mut cargo = crate::cmd::cargo();
-    lints.apply(&mut cargo);
-    let output = cargo
+fn page_test_binary() -> Result<PathBuf> {
+    let output = crate::cmd::cargo()
         .args(["test", "--workspace", "--test", "page", "--no-run"])
         .args(["--message-format", "json-render-diagnostics"])
         .stdin(Stdio::null())

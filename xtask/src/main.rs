@@ -4,9 +4,8 @@
 //!   `127.0.0.1:PORT`.
 //! - `cargo xtask dist [--no-opt]`: build the site into `dist/` only.
 //! - `cargo xtask size`: the wasm raw, gzipped and brotli'd, and a twiggy profile by crate.
-//! - `cargo xtask test`: fmt, clippy (natively inside the test build, and for wasm), native
-//!   tests, browser tests, then the page test against the built site; ends with a summary
-//!   and `N passed, M failed`.
+//! - `cargo xtask test`: fmt, clippy (native and wasm), native tests, browser tests, then the
+//!   page test against the built site; ends with a summary and `N passed, M failed`.
 //!
 //! Each command first installs what is missing (wasm target, `wasm-bindgen-cli`, npm
 //! `binaryen` in `.tools/`, Chromium and chromedriver for `test`), without ever prompting.
@@ -17,7 +16,6 @@
 
 mod beside;
 mod cmd;
-mod lints;
 use attlab_serve as serve;
 mod site;
 mod size;

@@ -2,7 +2,6 @@
 //! table and the plain closing line `N passed, M failed`.
 
 use crate::cmd::{self, Result};
-use crate::lints::Lints;
 use crate::{site, tools};
 use attlab_serve as serve;
 use std::process::{Command, Stdio};
@@ -223,18 +222,14 @@ pub fn run() -> Result<()> {
 
 /// The steps, in order; the first failure stops the run.
 fn run_steps(suite: &mut Suite) -> Result<()> {
-    let lints = suite.step("install missing tools", || {
+    suite.step("install missing tools", || {
         tools::ensure_components()?;
         tools::ensure_browser()?;
-        tools::ensure_wasm_tools(true)?;
-        Lints::find()
+        tools::ensure_wasm_tools(true)
     })?;
     suite.check("fmt", cargo("fmt --all -- --check"))?;
-    // `cargo clippy --workspace --all-targets -- -D warnings`, inside the build the native
-    // tests then run (see `lints`): every native cargo command below carries its wrapper.
-    let mut linted_build = lints.build_command();
-    linted_build.stdin(Stdio::null());
-    suite.check("clippy (native) in the test build", linted_build)?;
+    let native_clippy = "clippy --workspace --all-targets -- -D warnings";
+    suite.check("clippy (native)", cargo(native_clippy))?;
     // Every target but benches and examples: the criterion benches are native-only.
     let wasm_clippy = format!(
         "clippy --target {} -p attlab -p attlab-web -p attlab-tests --lib --bins --tests \
@@ -246,7 +241,7 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let mut doc = cargo("doc --workspace --no-deps");
     doc.env("RUSTDOCFLAGS", "-D warnings");
     suite.check("cargo doc", doc)?;
-    native_tests(suite, &lints)?;
+    native_tests(suite)?;
     let mut browser = cargo(&format!(
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
@@ -276,10 +271,9 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    lints.apply(&mut page);
     // The soak and the lessons beside them (see `beside`): they wait on the clock.
     let beside = suite.step("start the soak and lessons beside", || {
-        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE, &lints)
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE)
     })?;
     suite.tests("page (headless Chromium)", page)?;
     suite.finish_beside(
@@ -297,19 +291,13 @@ const BESIDE: [&str; 2] = ["soak", "lessons_open_at_their_step_and_pause"];
 /// next waits (`cargo test` runs its binaries one after the other: 170 s against 142 s for
 /// the same tests and doctests, built), then the doctests, which nextest does not run.
 /// Without it, `cargo test`, as before.
-/// Each carries `lints`, so it runs what the linted build built.
-fn native_tests(suite: &mut Suite, lints: &Lints) -> Result<()> {
-    let linted = |args: &str| {
-        let mut command = cargo(args);
-        lints.apply(&mut command);
-        command
-    };
+fn native_tests(suite: &mut Suite) -> Result<()> {
     if cmd::probe(cmd::cargo().args(["nextest", "--version"])).is_none() {
         println!("xtask: cargo-nextest is not installed; the native tests run with `cargo test`");
-        return suite.tests("test (native)", linted("test --workspace --no-fail-fast"));
+        return suite.tests("test (native)", cargo("test --workspace --no-fail-fast"));
     }
-    let nextest = linted("nextest run --workspace --no-fail-fast --color never");
-    let doc = linted("test --workspace --doc --no-fail-fast");
+    let nextest = cargo("nextest run --workspace --no-fail-fast --color never");
+    let doc = cargo("test --workspace --doc --no-fail-fast");
     let first = suite.tests("test (native, nextest)", nextest);
     // The doctests run even when a test failed, as `cargo test --no-fail-fast` would.
     let second = suite.tests("doctests (native)", doc);
