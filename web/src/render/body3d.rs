@@ -328,15 +328,12 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
             );
         }
     }
-    if let Some(orbit) = &scene.orbit {
-        let side = rect.width().min(rect.height()) * 0.34;
-        let area = Rect::from_min_size(
-            rect.right_bottom() - egui::vec2(side + 6.0, side + 6.0),
-            egui::vec2(side, side),
-        );
+    let (caption_rects, hint_rect) = captions(&painter, rect, scene);
+    if let Some(orbit) = &scene.orbit
+        && let Some(area) = super::orbit_inset::area(rect, &caption_rects, hint_rect)
+    {
         super::orbit_inset::orbit_picture(&painter, area, orbit, &scene.words.orbit);
     }
-    captions(&painter, rect, scene);
 }
 
 /// A label at a world point: (point, text, colour).
@@ -417,22 +414,39 @@ fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
     }
 }
 
-/// What is solid and what is the ghost, and how to move the camera.
-fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) {
+/// What is solid and what is the ghost (on top), and how to move the camera (at the
+/// bottom); returns where they were drawn (the top lines, the bottom text).
+fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) -> (Vec<Rect>, Rect) {
     let font = egui::FontId::proportional(13.0);
     let colours = super::palette::of_ctx(painter.ctx());
-    // Each on its own line: a long estimator label would run into the truth's.
-    for (k, text) in scene.captions.0.iter().enumerate() {
-        let at = rect.left_top() + egui::vec2(8.0, 6.0 + 18.0 * k as f32);
-        painter.text(at, egui::Align2::LEFT_TOP, text, font.clone(), colours.ink);
+    // Each wrapped inside the view (left of the orbit inset's column), so a long estimator
+    // label shows whole on a narrow view; each on its own line, so it cannot run into the
+    // truth's. The hint at the bottom takes the whole width, under the inset.
+    let wrap = (rect.width() - 16.0).max(40.0);
+    let inset = if scene.orbit.is_some() {
+        super::orbit_inset::column(rect)
+    } else {
+        0.0
+    };
+    let mut y = rect.top() + 6.0;
+    let mut top = Vec::with_capacity(scene.captions.0.len());
+    for text in &scene.captions.0 {
+        let galley = painter.layout(text.clone(), font.clone(), colours.ink, wrap - inset);
+        let at = egui::pos2(rect.left() + 8.0, y);
+        top.push(Rect::from_min_size(at, galley.size()));
+        y += galley.size().y;
+        painter.galley(at, galley, colours.ink);
     }
-    painter.text(
-        rect.left_bottom() + egui::vec2(8.0, -6.0),
-        egui::Align2::LEFT_BOTTOM,
-        &scene.captions.1,
-        font,
+    let hint = painter.layout(
+        scene.captions.1.clone(),
+        egui::FontId::proportional(12.0),
         colours.ink_dim,
+        wrap,
     );
+    let at = rect.left_bottom() + egui::vec2(8.0, -6.0 - hint.size().y);
+    let hint_rect = Rect::from_min_size(at, hint.size());
+    painter.galley(at, hint, colours.ink_dim);
+    (top, hint_rect)
 }
 
 /// `p` (world) on the screen, if it is in front of the camera.

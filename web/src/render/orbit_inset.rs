@@ -5,6 +5,52 @@ use attlab::model::OrbitPicture;
 use egui::{Color32, Rect, Stroke};
 use nalgebra::Vector3;
 
+/// The inset's smallest side (px): below it the picture says nothing and is left out.
+const MIN_SIDE: f32 = 48.0;
+
+/// The inset's distance from the view's edges (px).
+const MARGIN: f32 = 6.0;
+
+/// The width the inset takes from a 3D view `view`, its margin included: the view's words
+/// on top wrap to the rest, so they leave its column free.
+pub(super) fn column(view: Rect) -> f32 {
+    side(view) + MARGIN
+}
+
+/// The inset's side in `view` before it is fitted between the words: a third of the view's
+/// short side, at least 84 px (readable on a projector's small 3D view), at most 45 %.
+fn side(view: Rect) -> f32 {
+    let short = view.width().min(view.height());
+    (short * 0.34).max(84.0).min(short * 0.45)
+}
+
+/// Where the inset goes in a 3D view `view` whose caption lines take `captions` (on top)
+/// and whose hint takes `hint` (at the bottom): bottom right, [`side`] large, above the
+/// hint and below any caption line that reaches into its column, shrunk to fit between them; `None` when less than
+/// [`MIN_SIDE`] is left. So the inset never hides a word of the view.
+pub(super) fn area(view: Rect, captions: &[Rect], hint: Rect) -> Option<Rect> {
+    const GAP: f32 = 4.0;
+    let side = side(view);
+    let left = view.right() - MARGIN - side;
+    let bottom = if hint.right() > left && hint.height() > 0.0 {
+        hint.top() - GAP
+    } else {
+        view.bottom() - MARGIN
+    };
+    let top = captions
+        .iter()
+        .filter(|c| c.right() > left)
+        .map(|c| c.bottom() + GAP)
+        .fold(view.top() + MARGIN, f32::max);
+    let side = side.min(bottom - top);
+    (side >= MIN_SIDE).then(|| {
+        Rect::from_min_size(
+            egui::pos2(view.right() - MARGIN - side, bottom - side),
+            egui::vec2(side, side),
+        )
+    })
+}
+
 /// The Earth seen from the orbit normal: the orbit, the satellite, the sun to the right and
 /// the shadow cylinder behind the Earth (the satellite turns red inside it).
 pub(super) fn orbit_picture(
@@ -23,8 +69,26 @@ pub(super) fn orbit_picture(
     });
     let eb = n.cross(&ea);
     let r = orbit.position_eci_m.norm().max(orbit.earth_radius_m);
-    let center = area.center() + egui::vec2(0.0, 6.0);
-    let scale = area.width() * 0.40 / r as f32;
+    // The caption on top, wrapped inside the inset (a small view's inset is narrower than
+    // "orbit · β -24° · shadow"); the picture takes the square band below it.
+    let beta = 90.0 - orbit.sun_eci.angle(&n).to_degrees();
+    let caption = if orbit.eclipse {
+        format!("{word} · β {beta:.0}° · {shadow_word}")
+    } else {
+        format!("{word} · β {beta:.0}°")
+    };
+    let caption = painter.layout(
+        caption,
+        egui::FontId::proportional(10.0),
+        Color32::from_gray(200),
+        (area.width() - 8.0).max(20.0),
+    );
+    let band = Rect::from_min_max(
+        area.left_top() + egui::vec2(0.0, 3.0 + caption.size().y),
+        area.right_bottom(),
+    );
+    let center = band.center();
+    let scale = band.width().min(band.height()).max(1.0) * 0.40 / r as f32;
     let at = |x: f64, y: f64| center + egui::vec2(x as f32 * scale, -(y as f32) * scale);
     let re = orbit.earth_radius_m;
     // The shadow: the cylinder of the Earth's radius away from the sun.
@@ -55,17 +119,61 @@ pub(super) fn orbit_picture(
         tip - at(r * 1.02, 0.0),
         Stroke::new(1.5, Color32::from_rgb(255, 210, 60)),
     );
-    let beta = 90.0 - orbit.sun_eci.angle(&n).to_degrees();
-    let caption = if orbit.eclipse {
-        format!("{word} · β {beta:.0}° · {shadow_word}")
-    } else {
-        format!("{word} · β {beta:.0}°")
-    };
-    painter.text(
+    painter.galley(
         area.left_top() + egui::vec2(4.0, 3.0),
-        egui::Align2::LEFT_TOP,
         caption,
-        egui::FontId::proportional(10.0),
         Color32::from_gray(200),
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
+        Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1))
+    }
+
+    /// The projector's 3D view (375 × 195): a long ghost caption over the whole width and a
+    /// two-line hint; the inset sits between them, at its least size of 84 px.
+    #[test]
+    fn the_inset_sits_between_the_captions_and_the_hint() {
+        let view = rect(0.0, 0.0, 375.0, 195.0);
+        let captions = [rect(8.0, 6.0, 90.0, 24.0), rect(8.0, 24.0, 340.0, 60.0)];
+        let hint = rect(8.0, 155.0, 330.0, 189.0);
+        let area = area(view, &captions, hint).expect("room for the inset");
+        assert!((area.width() - 84.0).abs() < 1e-3, "{area:?}");
+        assert!(area.bottom() <= hint.top() && area.top() >= captions[1].bottom());
+        assert!(area.right() <= view.right() && area.left() >= view.left());
+    }
+
+    /// A caption line that stops short of the inset's column does not push it down, and a
+    /// hint that stops short of it lets it go down to the bottom margin.
+    #[test]
+    fn text_outside_its_column_does_not_move_it() {
+        let view = rect(0.0, 0.0, 600.0, 400.0);
+        let captions = [rect(8.0, 6.0, 200.0, 300.0)];
+        let hint = rect(8.0, 370.0, 200.0, 394.0);
+        let area = area(view, &captions, hint).expect("room for the inset");
+        assert_eq!(area.bottom(), 394.0);
+        assert!(
+            (area.width() - 136.0).abs() < 1e-3,
+            "a third of 400: {area:?}"
+        );
+    }
+
+    /// A phone's short 3D view with a three-line caption: what is left between the texts
+    /// is less than the least side, so no inset.
+    #[test]
+    fn no_inset_where_the_words_leave_no_room() {
+        let view = rect(0.0, 0.0, 370.0, 120.0);
+        let captions = [rect(8.0, 6.0, 360.0, 60.0)];
+        let hint = rect(8.0, 84.0, 360.0, 114.0);
+        assert_eq!(area(view, &captions, hint), None);
+        let shrunk = area(view, &captions[..0], hint).expect("room without captions");
+        assert!(
+            shrunk.width() < 84.0 && shrunk.width() >= MIN_SIDE,
+            "{shrunk:?}"
+        );
+    }
 }

@@ -1,6 +1,7 @@
 //! The keyboard alone: Tab reaches a slider, its keys move it by the slider pattern's steps
 //! (a twentieth, a hundredth with Shift, a tenth by page, the ends), the shortcuts wait while
-//! a control has the keyboard, and ? opens the dialog that lists every key.
+//! a control has the keyboard, ? opens the dialog that lists every key, and the shortcuts
+//! themselves (space, s, arrows, f) pause, step, switch tabs and focus one view.
 
 use super::*;
 use egui::{Key, Modifiers};
@@ -149,5 +150,49 @@ fn the_wheel_zooms_the_plot_and_a_visible_button_resets_it() {
     assert!(
         h.query_by_label("⟲").is_none(),
         "the reset brought back the whole run"
+    );
+}
+
+/// The keyboard shortcuts listed in the help: space, s, →, f.
+#[test]
+fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
+    use attlab_web::state::Focus;
+    let mut h = harness("p4");
+    h.run();
+    h.key_press(egui::Key::Space);
+    h.run();
+    assert!(h.state().state.run().playing, "space resumes");
+    h.key_press(egui::Key::Space);
+    h.run();
+    assert!(!h.state().state.run().playing, "space pauses");
+    let steps = h.state().state.sim().steps();
+    h.key_press(egui::Key::S);
+    h.run();
+    assert_eq!(h.state().state.sim().steps(), steps + 1, "s steps once");
+    let tab = h.state().state.view().plots.tab;
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    assert_ne!(
+        h.state().state.view().plots.tab,
+        tab,
+        "→ selects the next tab"
+    );
+    h.key_press(egui::Key::ArrowLeft);
+    h.run();
+    assert_eq!(h.state().state.view().plots.tab, tab, "← goes back");
+    let views = h.state().state.sim().lab().page().views.len();
+    let mut seen = Vec::new();
+    for _ in 0..=views + 1 {
+        h.key_press(egui::Key::F);
+        h.run();
+        seen.push(h.state().state.view().focus);
+    }
+    let mut expected: Vec<Focus> = (0..views).map(Focus::View).collect();
+    expected.extend([Focus::Plots, Focus::All]);
+    assert_eq!(seen, expected);
+    // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
+    assert_eq!(
+        h.state().state.sim().lab().page().views,
+        attlab::model::SINGLE_AXIS_VIEWS
     );
 }

@@ -13,6 +13,7 @@ use egui_kittest::kittest::{NodeT, Queryable};
 
 mod a11y;
 mod accuracy;
+mod body3d;
 mod clock;
 mod fill;
 mod keyboard;
@@ -234,50 +235,6 @@ fn the_star_tracker_outages_are_shaded_where_it_was_out() {
     assert!(
         (shaded - out_s).abs() < 0.02 * out_s + 2.0,
         "shaded {shaded} s, out {out_s} s"
-    );
-}
-
-/// The keyboard shortcuts listed in the help: space, s, →, f.
-#[test]
-fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
-    use attlab_web::state::Focus;
-    let mut h = harness("p4");
-    h.run();
-    h.key_press(egui::Key::Space);
-    h.run();
-    assert!(h.state().state.run().playing, "space resumes");
-    h.key_press(egui::Key::Space);
-    h.run();
-    assert!(!h.state().state.run().playing, "space pauses");
-    let steps = h.state().state.sim().steps();
-    h.key_press(egui::Key::S);
-    h.run();
-    assert_eq!(h.state().state.sim().steps(), steps + 1, "s steps once");
-    let tab = h.state().state.view().plots.tab;
-    h.key_press(egui::Key::ArrowRight);
-    h.run();
-    assert_ne!(
-        h.state().state.view().plots.tab,
-        tab,
-        "→ selects the next tab"
-    );
-    h.key_press(egui::Key::ArrowLeft);
-    h.run();
-    assert_eq!(h.state().state.view().plots.tab, tab, "← goes back");
-    let views = h.state().state.sim().lab().page().views.len();
-    let mut seen = Vec::new();
-    for _ in 0..=views + 1 {
-        h.key_press(egui::Key::F);
-        h.run();
-        seen.push(h.state().state.view().focus);
-    }
-    let mut expected: Vec<Focus> = (0..views).map(Focus::View).collect();
-    expected.extend([Focus::Plots, Focus::All]);
-    assert_eq!(seen, expected);
-    // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
-    assert_eq!(
-        h.state().state.sim().lab().page().views,
-        attlab::model::SINGLE_AXIS_VIEWS
     );
 }
 
