@@ -227,6 +227,19 @@ msg-picker-refused = the browser opened no file window: it opens one only right 
 msg-file-unreadable = cannot read { $name }: { $why }
 msg-workers-failed = sweep workers stopped ({ $why }); the sweep goes on in slices on the page's thread
 
+## A log line that could not be used (in "skipped …"), and why; the same facts the CLI prints
+log-line = line { $line }: { $reason }: `{ $text }`
+log-fault-columns = expected { $expected } columns ({ $names }), found { $found }
+log-fault-columns-merged = expected { $expected } columns ({ $names }), found { $found } (two lines merged?)
+log-fault-before-data = before the data (a sketch's banner?)
+log-fault-not-a-number = not a number: `{ $text }`
+log-fault-not-utf8 = not UTF-8 text: byte { $byte } at column { $column }
+log-fault-not-a-word = `{ $raw }` is not a { $bits }-bit word (0 … { $max })
+log-fault-time-glitch = time glitch: { $t } s between { $last } s and the lines after it
+log-fault-duplicate = same time as line { $line }: a duplicate of it
+log-fault-averaged = same time as line { $line }: averaged with it
+log-fault-out-of-order = out of order: put before line { $line }
+
 ## Live sensors (a phone's gyro and accelerometer, an Arduino over Web Serial)
 live-title = Live sensors
 live-help = The filters run on this phone's gyro and accelerometer, or on an Arduino's MPU-6050 over USB, as the samples arrive. Phone: hold it flat, screen up, top edge forward; roll it about its long axis — that is the lab's x axis and roll φ. Arduino: the sketch prints lines `time, ax, ay, az, gx, gy, gz` in the units chosen above. Needs https:// or localhost.

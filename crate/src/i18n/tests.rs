@@ -93,6 +93,17 @@ const TEXT_ARGUMENTS: &[&str] = &[
     "h",
     "source",
     "api",
+    "line",
+    "reason",
+    "text",
+    "expected",
+    "found",
+    "byte",
+    "column",
+    "raw",
+    "bits",
+    "max",
+    "last",
 ];
 
 #[test]

@@ -26,8 +26,81 @@ pub struct LogLineError {
     pub line: usize,
     /// The line as read (shortened).
     pub text: String,
-    /// What was wrong.
-    pub reason: String,
+    /// What was wrong (or what became of it).
+    pub reason: LineFault,
+}
+
+/// What was wrong with a log line, or what the clock's repair did with it. Typed so that the
+/// page can say it in the reader's language; `Display` is the English of the CLI.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum LineFault {
+    /// Not as many numbers as the format has columns.
+    #[error("expected {expected} columns ({names}), found {found}{}", merged_hint(*.merged))]
+    Columns {
+        /// The format's columns.
+        expected: usize,
+        /// Their names, comma separated.
+        names: &'static str,
+        /// The fields on the line.
+        found: usize,
+        /// Twice as many fields: two lines merged by a lost line break.
+        merged: bool,
+    },
+    /// Words before the first sample that are not the header.
+    #[error("before the data (a sketch's banner?)")]
+    BeforeData,
+    /// A field that is not a number.
+    #[error("not a number: `{0}`")]
+    NotANumber(String),
+    /// Bytes that are not UTF-8.
+    #[error("not UTF-8 text: byte 0x{byte:02X} at column {column}")]
+    NotUtf8 {
+        /// The first bad byte.
+        byte: u8,
+        /// Its 1-based column (in characters).
+        column: usize,
+    },
+    /// A raw count outside the converter's word.
+    #[error("`{raw}` is not a {bits}-bit word (0 … {max})")]
+    NotAWord {
+        /// The number on the line.
+        raw: f64,
+        /// The word's bits.
+        bits: u32,
+        /// The largest word.
+        max: f64,
+    },
+    /// A time off the clock that the lines after it continue without it.
+    #[error("time glitch: {t_s} s between {last_s} s and the lines after it")]
+    TimeGlitch {
+        /// The line's time (s).
+        t_s: f64,
+        /// The time before it (s).
+        last_s: f64,
+    },
+    /// The same time and values as an earlier line: counted once.
+    #[error("same time as line {line}: a duplicate of it")]
+    Duplicate {
+        /// The earlier line.
+        line: usize,
+    },
+    /// The same time as an earlier line with other values: the two averaged.
+    #[error("same time as line {line}: averaged with it")]
+    Averaged {
+        /// The earlier line.
+        line: usize,
+    },
+    /// Earlier than a line before it: put back in its place.
+    #[error("out of order: put before line {line}")]
+    OutOfOrder {
+        /// The line it now comes before.
+        line: usize,
+    },
+}
+
+/// The hint a line with twice the columns gets.
+fn merged_hint(merged: bool) -> &'static str {
+    if merged { " (two lines merged?)" } else { "" }
 }
 
 /// Where a log's clock jumped or restarted, and the replay joined the two segments.

@@ -33,7 +33,9 @@ pub use lab::{
     AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
 };
 pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
-pub use log::{LOGGED_SAMPLE, LogCounts, LogFormat, LogGap, LogLineError, REPLAY_GAPS, RateLog};
+pub use log::{
+    LOGGED_SAMPLE, LineFault, LogCounts, LogFormat, LogGap, LogLineError, REPLAY_GAPS, RateLog,
+};
 pub use note::ParamNote;
 pub use page::{
     BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,

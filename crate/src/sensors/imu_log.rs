@@ -315,6 +315,11 @@ mod tests {
         assert!((log.rate_rad_s[1] - 10f64.to_radians()).abs() < 1e-12);
         assert_eq!(log.errors.len(), 1);
         assert_eq!(log.errors[0].line, 4);
-        assert!(log.errors[0].reason.contains("expected 7 columns"));
+        assert!(
+            log.errors[0]
+                .reason
+                .to_string()
+                .contains("expected 7 columns")
+        );
     }
 }

@@ -65,8 +65,13 @@ fn a_glitchy_stream_reports_bad_lines_by_number_and_records_every_good_one() {
     let (live, got) = feed_in_chunks(&text, 37);
     let lines: Vec<usize> = got.errors.iter().map(|e| e.line).collect();
     assert_eq!(lines, bad, "{:#?}", got.errors);
-    assert!(got.errors[2].reason.contains("expected 7 columns"));
-    assert!(got.errors[3].reason.starts_with("time glitch"));
+    assert!(
+        got.errors[2]
+            .reason
+            .to_string()
+            .contains("expected 7 columns")
+    );
+    assert!(got.errors[3].reason.to_string().starts_with("time glitch"));
     // The record is the good lines as they came: every line of numbers of the right width.
     let record = live.record("test");
     let body: Vec<&str> = record.lines().skip(3).collect();

@@ -14,7 +14,7 @@
 //!   tell a log of another format from a few bad lines.
 
 use super::timeline;
-use crate::model::{LogCounts, LogLineError, RateLog};
+use crate::model::{LineFault, LogCounts, LogLineError, RateLog};
 use nalgebra::Vector3;
 
 /// Delimiters a log may use, in order of preference when several fit equally well.
@@ -175,26 +175,28 @@ impl LineReader {
                 self.rows_seen = true;
                 return;
             }
-            let merged = if f.len() == 2 * columns {
-                " (two lines merged?)"
-            } else {
-                ""
+            let reason = LineFault::Columns {
+                expected: columns,
+                names,
+                found: f.len(),
+                merged: f.len() == 2 * columns,
             };
-            let reason = format!(
-                "expected {columns} columns ({names}), found {}{merged}",
-                f.len()
-            );
             let text = shortened(text);
             out.errors.push(LogLineError { line, text, reason });
             return;
         }
         let reason = if before_data {
-            "before the data (a sketch's banner?)".to_string()
+            LineFault::BeforeData
         } else if f.len() != columns {
-            format!("expected {columns} columns ({names}), found {}", f.len())
+            LineFault::Columns {
+                expected: columns,
+                names,
+                found: f.len(),
+                merged: false,
+            }
         } else {
             let bad = f.iter().find(|c| number(c).is_none()).unwrap_or(&"");
-            format!("not a number: `{bad}`")
+            LineFault::NotANumber((*bad).to_string())
         };
         let text = shortened(text);
         out.errors.push(LogLineError { line, text, reason });
@@ -267,7 +269,7 @@ impl Sample {
 }
 
 /// A decoded row, or why the row cannot be used.
-pub(crate) type Decoded = Result<Sample, String>;
+pub(crate) type Decoded = Result<Sample, LineFault>;
 
 /// Reads `bytes` as a log of `columns` numbers per line (`names` says which), time first
 /// in units of `time_scale` s, its clock repaired ([`timeline`]); `sample` turns one row's
@@ -374,10 +376,10 @@ fn bad_bytes(line: usize, raw: &[u8], valid: usize) -> LogLineError {
     LogLineError {
         line,
         text: String::from_utf8_lossy(raw).chars().take(80).collect(),
-        reason: format!(
-            "not UTF-8 text: byte 0x{byte:02X} at column {}",
-            good.chars().count() + 1
-        ),
+        reason: LineFault::NotUtf8 {
+            byte,
+            column: good.chars().count() + 1,
+        },
     }
 }
 
@@ -396,20 +398,20 @@ mod tests {
             vec![1, 2, 5],
             "the BOM line is data; a trailing comma is fine"
         );
-        let bad: Vec<(usize, &str)> = r
+        let bad: Vec<(usize, String)> = r
             .errors
             .iter()
-            .map(|e| (e.line, e.reason.as_str()))
+            .map(|e| (e.line, e.reason.to_string()))
             .collect();
         assert_eq!(
             bad,
             vec![
-                (3, "not UTF-8 text: byte 0xFF at column 5"),
+                (3, "not UTF-8 text: byte 0xFF at column 5".to_string()),
                 (
                     4,
-                    "expected 2 columns (time, rate), found 4 (two lines merged?)"
+                    "expected 2 columns (time, rate), found 4 (two lines merged?)".to_string()
                 ),
-                (8, "expected 2 columns (time, rate), found 1"),
+                (8, "expected 2 columns (time, rate), found 1".to_string()),
             ]
         );
         assert_eq!(r.data_lines, 6);

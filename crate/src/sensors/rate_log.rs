@@ -3,7 +3,7 @@
 //! parsed leniently — every good line is kept, every bad one reported with its line number.
 
 use super::log_lines::{Sample, read_log};
-use crate::model::{LogFormat, ParamSpec, ParamValues, RateLog};
+use crate::model::{LineFault, LogFormat, ParamSpec, ParamValues, RateLog};
 
 /// Unit of the rate column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -69,18 +69,19 @@ impl RawCounts {
     /// # use attlab::sensors::RawCounts;
     /// let adis = RawCounts { word_bits: Some(12), scale: 0.2439, zero: 0.0 };
     /// assert_eq!(adis.rate(4095.0), Ok(-0.2439)); // 0xFFF is −1
-    /// assert!(adis.rate(4096.0).unwrap_err().contains("0 … 4095"));
+    /// assert!(adis.rate(4096.0).unwrap_err().to_string().contains("0 … 4095"));
     /// ```
-    pub fn rate(&self, raw: f64) -> Result<f64, String> {
+    pub fn rate(&self, raw: f64) -> Result<f64, LineFault> {
         let signed = match self.word_bits {
             None => raw,
             Some(bits) => {
                 let words = 2f64.powi(bits as i32);
                 if raw.fract() != 0.0 || !(0.0..words).contains(&raw) {
-                    return Err(format!(
-                        "`{raw}` is not a {bits}-bit word (0 … {})",
-                        words - 1.0
-                    ));
+                    return Err(LineFault::NotAWord {
+                        raw,
+                        bits,
+                        max: words - 1.0,
+                    });
                 }
                 if raw >= words / 2.0 { raw - words } else { raw }
             }
@@ -272,6 +273,7 @@ mod tests {
         assert!(
             log.errors[0]
                 .reason
+                .to_string()
                 .contains("not a 24-bit word (0 … 16777215)")
         );
         // Signed counts take any number.

@@ -14,7 +14,7 @@
 //!    the run. The replay shows the join as steps without a sample.
 
 use super::log_lines::Row;
-use crate::model::{LogGap, LogLineError};
+use crate::model::{LineFault, LogGap, LogLineError};
 
 /// Rule 1: times this close (in periods) are one time.
 const SAME_TIME_PERIODS: f64 = 1e-6;
@@ -55,7 +55,7 @@ pub(crate) struct Timeline {
     pub merged: usize,
 }
 
-fn note(row: &Row, reason: String) -> LogLineError {
+fn note(row: &Row, reason: LineFault) -> LogLineError {
     LogLineError {
         line: row.line,
         text: super::log_lines::shortened(&row.text),
@@ -179,7 +179,10 @@ impl Orderer {
             if (1..=GLITCH_LOOKAHEAD).any(continues) {
                 errors.push(note(
                     &row,
-                    format!("time glitch: {t} s between {last} s and the lines after it"),
+                    LineFault::TimeGlitch {
+                        t_s: t,
+                        last_s: last,
+                    },
                 ));
                 continue;
             }
@@ -228,22 +231,22 @@ fn place(segment: &mut Vec<Timed>, out: &mut Timeline, row: Row, t: f64, p: f64)
         }
         same.weight += 1.0;
         out.merged += 1;
-        let what = if identical {
-            "a duplicate of"
+        let line = same.row.line;
+        let fault = if identical {
+            LineFault::Duplicate { line }
         } else {
-            "averaged with"
+            LineFault::Averaged { line }
         };
-        out.notes.push(note(
-            &row,
-            format!("same time as line {}: {what} it", same.row.line),
-        ));
+        out.notes.push(note(&row, fault));
         return;
     }
     if at < segment.len() {
         out.reordered += 1;
         out.notes.push(note(
             &row,
-            format!("out of order: put before line {}", segment[at].row.line),
+            LineFault::OutOfOrder {
+                line: segment[at].row.line,
+            },
         ));
     }
     segment.insert(

@@ -167,12 +167,13 @@ impl AppState {
             }
         };
         const SHOWN: usize = 12;
+        let lang = self.view.lang();
         for e in log.errors.iter().take(SHOWN) {
             self.warn(
                 "msg-log-skipped",
                 &[
                     ("name", name.as_str().into()),
-                    ("why", e.to_string().into()),
+                    ("why", super::log_words::line_problem(lang, e).into()),
                 ],
             );
         }

@@ -238,11 +238,12 @@ impl AppState {
             return;
         };
         let errors = live.stream.errors();
+        let lang = self.view.lang();
         let new_errors: Vec<String> = errors
             .iter()
             .skip(live.errors_said)
             .take(SHOWN_ERRORS.saturating_sub(live.errors_said))
-            .map(ToString::to_string)
+            .map(|e| super::log_words::line_problem(lang, e))
             .collect();
         live.errors_said += new_errors.len();
         let (recorded, name) = (live.stream.recorded_lines(), self.live_name());

@@ -16,6 +16,7 @@ mod jobs;
 mod lesson;
 mod link_words;
 mod live;
+mod log_words;
 mod pool;
 mod run;
 mod share;

@@ -149,3 +149,51 @@ fn a_refused_chooser_and_an_unreadable_file_are_said_in_the_readers_language() {
         assert!(state.sim().replay_log().is_none(), "nothing replayed");
     }
 }
+
+/// A picked log with junk lines: each bad line is said with its number, in the reader's
+/// language (the reason too, not only the sentence around it), and the good lines replay.
+#[test]
+fn a_logs_bad_lines_are_said_in_the_readers_language() {
+    use attlab::i18n::Lang;
+    use attlab_web::pick::Picked;
+    use attlab_web::state::ViewCommand;
+    let log = "t,rate\n0.0,0.1\n0.1,0.2\n0.2,abc\n0.3,0.1,0.4\n0.4,0.3\n0.5,0.2\n";
+    let cases = [
+        (
+            Lang::En,
+            [
+                "line 4: not a number: `abc`: `0.2,abc`",
+                "line 5: expected 2 columns (time, rate), found 3: `0.3,0.1,0.4`",
+            ],
+        ),
+        (
+            Lang::Ru,
+            [
+                "строка 4: не число: «abc»: «0.2,abc»",
+                "строка 5: ожидалось столбцов: 2 (time, rate), найдено: 3: «0.3,0.1,0.4»",
+            ],
+        ),
+    ];
+    for (lang, said) in cases {
+        let mut h = super::harness("p1");
+        h.state_mut().apply(ViewCommand::SetLang(lang).into());
+        *h.state().state.io().file_slot().borrow_mut() = Some(Picked::File {
+            name: "junk.csv".into(),
+            bytes: log.as_bytes().to_vec(),
+        });
+        h.run();
+        let state = &h.state().state;
+        for line in said {
+            assert!(
+                state
+                    .messages()
+                    .iter()
+                    .any(|m| m.is_error && m.text.contains(line)),
+                "{lang:?}: no “{line}” in {:?}",
+                state.messages()
+            );
+        }
+        let log = state.sim().replay_log().expect("the good lines replay");
+        assert_eq!(log.t_s.len(), 4, "{lang:?}");
+    }
+}
