@@ -267,13 +267,13 @@ fn a_log_of_another_labs_format_is_refused_naming_it() {
         let format = lab.page().log_format.expect("a lab that reads logs");
         attlab::labs::read_log(lab, bytes, &format.default_units())
     };
-    let err = read("p1", imu.as_bytes()).unwrap_err();
+    let err = read("p1", imu.as_bytes()).unwrap_err().to_string();
     assert!(
         err.contains("have 7 numbers") && err.contains("MPU-6050") && err.contains("labs p3, p4"),
         "{err}"
     );
     let rate_log: String = (0..50).map(|k| format!("{},{}\n", 10 * k, k)).collect();
-    let err = read("p4", rate_log.as_bytes()).unwrap_err();
+    let err = read("p4", rate_log.as_bytes()).unwrap_err().to_string();
     assert!(
         err.contains("one-axis gyro log") && err.contains("lab p1"),
         "{err}"
@@ -282,10 +282,12 @@ fn a_log_of_another_labs_format_is_refused_naming_it() {
     let in_g: String = (0..50)
         .map(|k| format!("{},0,0,1.0,{},0,0\n", 10 * k, 131 * k))
         .collect();
-    let err = read("p4", in_g.as_bytes()).unwrap_err();
+    let err = read("p4", in_g.as_bytes()).unwrap_err().to_string();
     assert!(err.contains("the unit `g` gives 1.00 g"), "{err}");
     let lab = attlab_tests::lab("p2");
-    let err = attlab::labs::read_log(lab, imu.as_bytes(), &ParamValues::defaults(&[])).unwrap_err();
+    let err = attlab::labs::read_log(lab, imu.as_bytes(), &ParamValues::defaults(&[]))
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("does not replay logs; these do: p1, p3, p4"),
         "{err}"

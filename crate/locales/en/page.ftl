@@ -240,6 +240,17 @@ log-fault-duplicate = same time as line { $line }: a duplicate of it
 log-fault-averaged = same time as line { $line }: averaged with it
 log-fault-out-of-order = out of order: put before line { $line }
 
+## Why a whole log cannot be replayed; the same facts the CLI prints
+log-refused-not-replayed = lab { $lab } does not replay logs; these do: { $labs }
+log-refused-width = { $lines } lines have { $width } numbers and { $own } have { $columns }: lab { $lab } reads { $format }, { $columns } numbers a line.
+log-refused-width-like = { $lines } lines have { $width } numbers and { $own } have { $columns }: lab { $lab } reads { $format }, { $columns } numbers a line. It looks like { $other } (read by { $count ->
+        [one] lab
+       *[other] labs
+    } { $labs }).
+log-refused-few = the log needs at least two samples with increasing times ({ $kept } samples kept of { $lines } lines ({ $reordered } reordered), { $merged } merged, { $rejected } rejected)
+log-refused-few-first = the log needs at least two samples with increasing times ({ $kept } samples kept of { $lines } lines ({ $reordered } reordered), { $merged } merged, { $rejected } rejected; first bad line: { $first })
+log-refused-accel = the accelerometer reads a median of { $g } g where about 1 g is expected: its unit does not fit (the unit `{ $unit }` gives { $gives } g)
+
 ## Live sensors (a phone's gyro and accelerometer, an Arduino over Web Serial)
 live-title = Live sensors
 live-help = The filters run on this phone's gyro and accelerometer, or on an Arduino's MPU-6050 over USB, as the samples arrive. Phone: hold it flat, screen up, top edge forward; roll it about its long axis — that is the lab's x axis and roll φ. Arduino: the sketch prints lines `time, ax, ay, az, gx, gy, gz` in the units chosen above. Needs https:// or localhost.

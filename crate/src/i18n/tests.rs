@@ -104,6 +104,16 @@ const TEXT_ARGUMENTS: &[&str] = &[
     "bits",
     "max",
     "last",
+    "labs",
+    "width",
+    "own",
+    "columns",
+    "format",
+    "other",
+    "first",
+    "g",
+    "unit",
+    "gives",
 ];
 
 #[test]

@@ -16,7 +16,7 @@ pub use p3_wz_sphere::WzSphere;
 pub use p4_quadrotor::QuadrotorRoll;
 pub use p5_sensitivity::SensitivityLab;
 
-use crate::model::{Lab, LogFormat};
+use crate::model::{Lab, LogFormat, LogRefusal, OtherFormat};
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {
@@ -48,19 +48,18 @@ pub fn read_log(
     lab: &dyn Lab,
     bytes: &[u8],
     units: &crate::model::ParamValues,
-) -> Result<crate::model::RateLog, String> {
-    let format = lab.page().log_format.ok_or_else(|| {
-        let replaying: Vec<&str> = all()
-            .iter()
-            .filter(|l| l.page().log_format.is_some())
-            .map(|l| l.id())
-            .collect();
-        format!(
-            "lab {} does not replay logs; these do: {}",
-            lab.id(),
-            replaying.join(", ")
-        )
-    })?;
+) -> Result<crate::model::RateLog, LogRefusal> {
+    let format = lab
+        .page()
+        .log_format
+        .ok_or_else(|| LogRefusal::NotReplayed {
+            lab: lab.id(),
+            replaying: all()
+                .iter()
+                .filter(|l| l.page().log_format.is_some())
+                .map(|l| l.id())
+                .collect(),
+        })?;
     let log = (format.parse)(bytes, units);
     let count = |width: usize| {
         log.widths
@@ -71,43 +70,33 @@ pub fn read_log(
     let own = count(format.columns);
     let widest = log.widths.iter().max_by_key(|(_, n)| *n);
     if let Some(&(width, n)) = widest.filter(|(w, n)| *w != format.columns && *n > own) {
-        let readers: Vec<(&str, &LogFormat)> = all()
+        let readers: Vec<(&'static str, &LogFormat)> = all()
             .iter()
             .filter_map(|l| l.page().log_format.map(|f| (l.id(), f)))
             .filter(|(_, f)| f.columns == width)
             .collect();
-        let looks = match readers.first() {
-            Some((_, f)) => {
-                let labs: Vec<&str> = (readers.iter())
-                    .filter(|(_, g)| g.id == f.id)
-                    .map(|(id, _)| *id)
-                    .collect();
-                let s = if labs.len() == 1 { "" } else { "s" };
-                format!(
-                    " It looks like {} (read by lab{s} {}).",
-                    f.name,
-                    labs.join(", ")
-                )
-            }
-            None => String::new(),
-        };
-        return Err(format!(
-            "{n} lines have {width} numbers and {own} have {}: lab {} reads {}, {} numbers a line.{looks}",
-            format.columns,
-            lab.id(),
-            format.name,
-            format.columns
-        ));
+        let other = readers.first().map(|(_, f)| OtherFormat {
+            name: f.name,
+            labs: (readers.iter())
+                .filter(|(_, g)| g.id == f.id)
+                .map(|(id, _)| *id)
+                .collect(),
+        });
+        return Err(LogRefusal::OtherWidth {
+            lines: n,
+            width,
+            own,
+            columns: format.columns,
+            lab: lab.id(),
+            format: format.name,
+            other,
+        });
     }
     if log.median_dt_s().is_none() {
-        let first = log
-            .errors
-            .first()
-            .map_or(String::new(), |e| format!("; first bad line: {e}"));
-        return Err(format!(
-            "the log needs at least two samples with increasing times ({}{first})",
-            log.counts
-        ));
+        return Err(LogRefusal::TooFewSamples {
+            counts: log.counts,
+            first: log.errors.first().cloned(),
+        });
     }
     (format.check)(&log, units)?;
     Ok(log)

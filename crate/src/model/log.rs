@@ -119,6 +119,92 @@ pub struct LogGap {
     pub logged_to_s: f64,
 }
 
+/// Why a whole log cannot be replayed. Typed so that the page can say it in the reader's
+/// language; `Display` is the English of the CLI.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum LogRefusal {
+    /// The lab reads no logs.
+    #[error("lab {lab} does not replay logs; these do: {}", .replaying.join(", "))]
+    NotReplayed {
+        /// The lab asked.
+        lab: &'static str,
+        /// The labs that replay logs.
+        replaying: Vec<&'static str>,
+    },
+    /// Most lines of numbers have another width than the format's.
+    #[error(
+        "{lines} lines have {width} numbers and {own} have {columns}: lab {lab} reads \
+         {format}, {columns} numbers a line.{}",
+        looks_like(.other)
+    )]
+    OtherWidth {
+        /// Lines of `width` numbers.
+        lines: usize,
+        /// Their width.
+        width: usize,
+        /// Lines of the format's width.
+        own: usize,
+        /// The format's width.
+        columns: usize,
+        /// The lab asked.
+        lab: &'static str,
+        /// Its format's name.
+        format: &'static str,
+        /// The format that `width` numbers a line would be, if a lab reads one.
+        other: Option<OtherFormat>,
+    },
+    /// Fewer than two samples with increasing times.
+    #[error(
+        "the log needs at least two samples with increasing times ({counts}{})",
+        first_bad(.first.as_ref())
+    )]
+    TooFewSamples {
+        /// What became of the lines.
+        counts: LogCounts,
+        /// The first line that could not be used.
+        first: Option<LogLineError>,
+    },
+    /// The accelerometer's median reading is far from 1 g: its unit does not fit.
+    #[error(
+        "the accelerometer reads a median of {median_g:.3e} g where about 1 g is expected: \
+         its unit does not fit (the unit `{unit}` gives {gives_g:.2} g)"
+    )]
+    AccelUnit {
+        /// The median reading in the chosen unit (g).
+        median_g: f64,
+        /// The unit choice that comes closest to 1 g.
+        unit: &'static str,
+        /// The median in that unit (g).
+        gives_g: f64,
+    },
+}
+
+/// A log format that another lab reads, named in [`LogRefusal::OtherWidth`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct OtherFormat {
+    /// Its name.
+    pub name: &'static str,
+    /// The labs that read it (the first one's catalogue words name it).
+    pub labs: Vec<&'static str>,
+}
+
+/// " It looks like … (read by lab …)." or nothing.
+fn looks_like(other: &Option<OtherFormat>) -> String {
+    other.as_ref().map_or(String::new(), |o| {
+        let s = if o.labs.len() == 1 { "" } else { "s" };
+        format!(
+            " It looks like {} (read by lab{s} {}).",
+            o.name,
+            o.labs.join(", ")
+        )
+    })
+}
+
+/// "; first bad line: …" or nothing.
+fn first_bad(first: Option<&LogLineError>) -> String {
+    first.map_or(String::new(), |e| format!("; first bad line: {e}"))
+}
+
 /// What became of every line of a log that counts (not blank, a comment or the header).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LogCounts {
@@ -231,7 +317,7 @@ pub struct LogFormat {
     pub parse: fn(&[u8], &ParamValues) -> RateLog,
     /// Whether a parsed log fits the unit choices (e.g. an accelerometer near 1 g); the
     /// message says which choice would fit.
-    pub check: fn(&RateLog, &ParamValues) -> Result<(), String>,
+    pub check: fn(&RateLog, &ParamValues) -> Result<(), LogRefusal>,
 }
 
 impl LogFormat {

@@ -34,7 +34,8 @@ pub use lab::{
 };
 pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
 pub use log::{
-    LOGGED_SAMPLE, LineFault, LogCounts, LogFormat, LogGap, LogLineError, REPLAY_GAPS, RateLog,
+    LOGGED_SAMPLE, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
+    REPLAY_GAPS, RateLog,
 };
 pub use note::ParamNote;
 pub use page::{

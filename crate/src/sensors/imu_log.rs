@@ -15,7 +15,7 @@
 
 use super::log_lines::{Decoded, Sample, read_log};
 use super::rate_log::{TIME_UNIT_NAMES, TimeUnit, time_unit};
-use crate::model::{LogFormat, ParamSpec, ParamValues, RateLog};
+use crate::model::{LogFormat, LogRefusal, ParamSpec, ParamValues, RateLog};
 use nalgebra::Vector3;
 
 /// Unit of the accelerometer columns.
@@ -231,7 +231,7 @@ fn median_accel_g(log: &RateLog) -> Option<f64> {
 /// A rig that mostly holds still or swings reads about 1 g; a median outside 0.5–2 g means
 /// the accelerometer unit is wrong (counts read as g, or the wrong range). The message
 /// names the unit that would give the closest to 1 g.
-fn check_accel_unit(log: &RateLog, units: &ParamValues) -> Result<(), String> {
+fn check_accel_unit(log: &RateLog, units: &ParamValues) -> Result<(), LogRefusal> {
     let Some(g) = median_accel_g(log) else {
         return Ok(());
     };
@@ -250,11 +250,11 @@ fn check_accel_unit(log: &RateLog, units: &ParamValues) -> Result<(), String> {
         })
         .copied()
         .unwrap_or((chosen, "counts2"));
-    Err(format!(
-        "the accelerometer reads a median of {g:.3e} g where about 1 g is expected: its unit \
-         does not fit (the unit `{name}` gives {:.2} g)",
-        raw * best.to_g()
-    ))
+    Err(LogRefusal::AccelUnit {
+        median_g: g,
+        unit: name,
+        gives_g: raw * best.to_g(),
+    })
 }
 
 /// [`parse_imu_log`] with the unit choices of [`IMU_LOG`].

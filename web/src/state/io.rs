@@ -162,7 +162,7 @@ impl AppState {
         let log = match attlab::labs::read_log(lab, bytes, &self.io.units_for(format)) {
             Ok(log) => log,
             Err(why) => {
-                let (id, args) = failed(why);
+                let (id, args) = failed(super::log_words::refusal(self.view.lang(), &why));
                 return self.warn(id, &args);
             }
         };

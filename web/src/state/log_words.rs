@@ -1,8 +1,9 @@
-//! A log line that could not be used, in the reader's language: the same facts the CLI
-//! prints in English (`LineFault`'s `Display`), from the catalogue.
+//! A log line that could not be used, and why a whole log was refused, in the reader's
+//! language: the same facts the CLI prints in English (`LineFault`'s and `LogRefusal`'s
+//! `Display`), from the catalogue.
 
 use attlab::i18n::{self, FluentValue, Lang};
-use attlab::model::{LineFault, LogLineError};
+use attlab::model::{LineFault, LogCounts, LogLineError, LogRefusal};
 
 /// "line 7: not a number: `abc`" in `lang`.
 pub fn line_problem(lang: Lang, e: &LogLineError) -> String {
@@ -58,6 +59,79 @@ pub fn fault(lang: Lang, f: &LineFault) -> String {
     i18n::t_with(lang, id, &args)
 }
 
+/// Why a whole log cannot be replayed, in `lang`; a format is named in the reader's words
+/// of the lab that reads it.
+pub fn refusal(lang: Lang, r: &LogRefusal) -> String {
+    let format_name =
+        |lab: &str, english: &str| i18n::lab_text(lang, &i18n::log_format_id(lab, "name"), english);
+    let (id, args): (&str, Vec<(&str, FluentValue<'_>)>) = match r {
+        LogRefusal::NotReplayed { lab, replaying } => (
+            "log-refused-not-replayed",
+            vec![("lab", text(lab)), ("labs", text(replaying.join(", ")))],
+        ),
+        LogRefusal::OtherWidth {
+            lines,
+            width,
+            own,
+            columns,
+            lab,
+            format,
+            other,
+        } => {
+            let mut args = vec![
+                ("lines", text(lines)),
+                ("width", text(width)),
+                ("own", text(own)),
+                ("columns", text(columns)),
+                ("lab", text(lab)),
+                ("format", text(format_name(lab, format))),
+            ];
+            let Some(other) = other else {
+                return i18n::t_with(lang, "log-refused-width", &args);
+            };
+            let first = other.labs.first().copied().unwrap_or_default();
+            args.extend([
+                ("other", text(format_name(first, other.name))),
+                ("labs", text(other.labs.join(", "))),
+                ("count", FluentValue::from(other.labs.len())),
+            ]);
+            ("log-refused-width-like", args)
+        }
+        LogRefusal::TooFewSamples { counts, first } => {
+            let mut args = counted(counts);
+            let Some(first) = first else {
+                return i18n::t_with(lang, "log-refused-few", &args);
+            };
+            args.push(("first", line_problem(lang, first).into()));
+            ("log-refused-few-first", args)
+        }
+        LogRefusal::AccelUnit {
+            median_g,
+            unit,
+            gives_g,
+        } => (
+            "log-refused-accel",
+            vec![
+                ("g", text(format!("{median_g:.3e}"))),
+                ("unit", text(unit)),
+                ("gives", text(format!("{gives_g:.2}"))),
+            ],
+        ),
+    };
+    i18n::t_with(lang, id, &args)
+}
+
+/// What became of a log's lines, as arguments.
+fn counted(c: &LogCounts) -> Vec<(&'static str, FluentValue<'static>)> {
+    vec![
+        ("kept", text(c.kept)),
+        ("lines", text(c.data_lines)),
+        ("reordered", text(c.reordered)),
+        ("merged", text(c.merged)),
+        ("rejected", text(c.rejected)),
+    ]
+}
+
 /// A number as Rust writes it (as the CLI's English does), not as Fluent would.
 fn text(value: impl std::fmt::Display) -> FluentValue<'static> {
     FluentValue::from(value.to_string())
@@ -104,6 +178,70 @@ mod tests {
         ]
     }
 
+    /// A refusal of every kind, as read_log and the IMU format's check give them.
+    fn every_refusal() -> Vec<LogRefusal> {
+        let counts = LogCounts {
+            data_lines: 3,
+            kept: 1,
+            reordered: 0,
+            merged: 1,
+            rejected: 1,
+        };
+        let first = LogLineError {
+            line: 2,
+            text: "x,y".into(),
+            reason: LineFault::NotANumber("x".into()),
+        };
+        let width = |other| LogRefusal::OtherWidth {
+            lines: 1000,
+            width: 7,
+            own: 3,
+            columns: 2,
+            lab: "p1",
+            format: "a one-axis gyro log (time, rate)",
+            other,
+        };
+        let other = |labs: Vec<&'static str>| attlab::model::OtherFormat {
+            name: "an MPU-6050 IMU log (time, accelerometer, gyro)",
+            labs,
+        };
+        vec![
+            LogRefusal::NotReplayed {
+                lab: "p2",
+                replaying: vec!["p1", "p3", "p4"],
+            },
+            width(None),
+            width(Some(other(vec!["p4"]))),
+            width(Some(other(vec!["p3", "p4"]))),
+            LogRefusal::TooFewSamples {
+                counts,
+                first: None,
+            },
+            LogRefusal::TooFewSamples {
+                counts,
+                first: Some(first),
+            },
+            LogRefusal::AccelUnit {
+                median_g: 16384.0,
+                unit: "counts2",
+                gives_g: 1.0,
+            },
+        ]
+    }
+
+    /// A whole log's refusal: the page's English is the CLI's; the Russian has Cyrillic
+    /// words, every number of the English, and no argument unfilled.
+    #[test]
+    fn a_refusal_is_the_clis_in_english_and_russian_with_its_numbers() {
+        for r in every_refusal() {
+            assert_eq!(refusal(Lang::En, &r), r.to_string());
+            let (en, ru) = (refusal(Lang::En, &r), refusal(Lang::Ru, &r));
+            assert!(ru.chars().any(|c| ('а'..='я').contains(&c)), "{ru}");
+            assert!(!ru.contains('$') && ru != en, "{ru}");
+            assert_eq!(numbers(&ru), numbers(&en), "{en} / {ru}");
+        }
+    }
+
     /// The page's English is the CLI's, word for word, so the two cannot drift apart.
     #[test]
     fn the_pages_english_is_the_clis() {
@@ -141,13 +279,25 @@ mod tests {
                     && !ru.contains('$'),
                 "{ru}"
             );
-            let digits = |s: &str| -> Vec<String> {
-                s.split(|c: char| !c.is_ascii_alphanumeric() && c != '.')
-                    .filter(|w| w.starts_with(|c: char| c.is_ascii_digit()))
-                    .map(str::to_string)
-                    .collect()
-            };
-            assert_eq!(digits(&ru), digits(&en), "{en} / {ru}");
+            assert_eq!(numbers(&ru), numbers(&en), "{en} / {ru}");
         }
+    }
+
+    /// The numbers in `s`, sorted (a language may give them in another order).
+    fn numbers(s: &str) -> Vec<String> {
+        let mut out: Vec<String> = s
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '.' && c != '+' && c != '-')
+            .filter(|w| w.starts_with(|c: char| c.is_ascii_digit()))
+            .map(|w| {
+                let end = w
+                    .find(|c: char| !(c.is_ascii_digit() || ".e+-".contains(c)))
+                    .unwrap_or(w.len());
+                w[..end]
+                    .trim_end_matches(|c: char| !c.is_ascii_digit())
+                    .to_string()
+            })
+            .collect();
+        out.sort();
+        out
     }
 }

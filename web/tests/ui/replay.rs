@@ -21,6 +21,21 @@ fn replay_example(
     h
 }
 
+/// Lab `lab`'s page in `lang` after the file chooser delivered `picked` (taken on the next
+/// frame).
+fn picked_in(
+    lab: &str,
+    lang: attlab::i18n::Lang,
+    picked: attlab_web::pick::Picked,
+) -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
+    let mut h = harness(lab);
+    h.state_mut()
+        .apply(attlab_web::state::ViewCommand::SetLang(lang).into());
+    *h.state().state.io().file_slot().borrow_mut() = Some(picked);
+    h.run();
+    h
+}
+
 /// Paper 4's example log from its button: every line accounted for in the message, and the
 /// replay's first step delivers the first sample.
 #[test]
@@ -110,7 +125,6 @@ fn a_restarted_log_replays_both_segments_and_shades_the_join() {
 #[test]
 fn a_refused_chooser_and_an_unreadable_file_are_said_in_the_readers_language() {
     use attlab_web::pick::Picked;
-    use attlab_web::state::ViewCommand;
     let cases = [
         (
             attlab::i18n::Lang::En,
@@ -132,10 +146,7 @@ fn a_refused_chooser_and_an_unreadable_file_are_said_in_the_readers_language() {
         ),
     ];
     for (lang, picked, said) in cases {
-        let mut h = super::harness("p4");
-        h.state_mut().apply(ViewCommand::SetLang(lang).into());
-        *h.state().state.io().file_slot().borrow_mut() = Some(picked.clone());
-        h.run();
+        let h = picked_in("p4", lang, picked.clone());
         let state = &h.state().state;
         assert!(
             state
@@ -156,7 +167,6 @@ fn a_refused_chooser_and_an_unreadable_file_are_said_in_the_readers_language() {
 fn a_logs_bad_lines_are_said_in_the_readers_language() {
     use attlab::i18n::Lang;
     use attlab_web::pick::Picked;
-    use attlab_web::state::ViewCommand;
     let log = "t,rate\n0.0,0.1\n0.1,0.2\n0.2,abc\n0.3,0.1,0.4\n0.4,0.3\n0.5,0.2\n";
     let cases = [
         (
@@ -175,13 +185,11 @@ fn a_logs_bad_lines_are_said_in_the_readers_language() {
         ),
     ];
     for (lang, said) in cases {
-        let mut h = super::harness("p1");
-        h.state_mut().apply(ViewCommand::SetLang(lang).into());
-        *h.state().state.io().file_slot().borrow_mut() = Some(Picked::File {
+        let file = Picked::File {
             name: "junk.csv".into(),
             bytes: log.as_bytes().to_vec(),
-        });
-        h.run();
+        };
+        let h = picked_in("p1", lang, file);
         let state = &h.state().state;
         for line in said {
             assert!(
@@ -195,5 +203,40 @@ fn a_logs_bad_lines_are_said_in_the_readers_language() {
         }
         let log = state.sim().replay_log().expect("the good lines replay");
         assert_eq!(log.t_s.len(), 4, "{lang:?}");
+    }
+}
+
+/// A log the lab cannot read at all (paper 4's IMU log picked in paper 1's lab) is refused
+/// in the reader's language, naming the format it looks like in the reader's words.
+#[test]
+fn a_refused_log_is_said_in_the_readers_language() {
+    use attlab::i18n::Lang;
+    use attlab_web::pick::Picked;
+    let p4 = attlab::labs::find("p4").expect("registered");
+    let imu = p4.page().example_log.expect("p4 ships a log").text;
+    let cases = [
+        (Lang::En, "It looks like an MPU-6050 IMU log"),
+        (Lang::Ru, "Похоже, это запись инерциального модуля MPU-6050"),
+    ];
+    for (lang, said) in cases {
+        let file = Picked::File {
+            name: "imu.csv".into(),
+            bytes: imu.as_bytes().to_vec(),
+        };
+        let h = picked_in("p1", lang, file);
+        let state = &h.state().state;
+        let text = state
+            .messages()
+            .iter()
+            .map(|m| m.text.clone())
+            .collect::<Vec<_>>();
+        assert!(
+            state
+                .messages()
+                .iter()
+                .any(|m| m.is_error && m.text.contains(said)),
+            "{lang:?}: no “{said}” in {text:?}"
+        );
+        assert!(state.sim().replay_log().is_none(), "nothing replayed");
     }
 }

@@ -191,7 +191,9 @@ pub(super) fn replay(
 ) -> Result<(), String> {
     let lab = find_lab(lab_id)?;
     let Some(format) = lab.page().log_format else {
-        return attlab::labs::read_log(lab, &[], &ParamValues::defaults(&[])).map(|_| ());
+        return attlab::labs::read_log(lab, &[], &ParamValues::defaults(&[]))
+            .map(|_| ())
+            .map_err(|e| e.to_string());
     };
     let unit_values = log_units(format, &units)?;
     let bytes =
