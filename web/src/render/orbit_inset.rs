@@ -5,10 +5,10 @@ use attlab::model::OrbitPicture;
 use egui::{Color32, Rect, Stroke};
 use nalgebra::Vector3;
 
-/// The inset's smallest side (px): below it the picture says nothing and is left out.
+/// The inset's smallest side (points): below it the picture says nothing and is left out.
 const MIN_SIDE: f32 = 48.0;
 
-/// The inset's distance from the view's edges (px).
+/// The inset's distance from the view's edges (points).
 const MARGIN: f32 = 6.0;
 
 /// The width the inset takes from a 3D view `view`, its margin included: the view's words
@@ -18,7 +18,7 @@ pub(super) fn column(view: Rect) -> f32 {
 }
 
 /// The inset's side in `view` before it is fitted between the words: a third of the view's
-/// short side, at least 84 px (readable on a projector's small 3D view), at most 45 %.
+/// short side, at least 84 points (readable on a projector's small 3D view), at most 45 %.
 fn side(view: Rect) -> f32 {
     let short = view.width().min(view.height());
     (short * 0.34).max(84.0).min(short * 0.45)
@@ -26,8 +26,8 @@ fn side(view: Rect) -> f32 {
 
 /// Where the inset goes in a 3D view `view` whose caption lines take `captions` (on top)
 /// and whose hint takes `hint` (at the bottom): bottom right, [`side`] large, above the
-/// hint and below any caption line that reaches into its column, shrunk to fit between them; `None` when less than
-/// [`MIN_SIDE`] is left. So the inset never hides a word of the view.
+/// hint and below any caption line that reaches into its column, shrunk to fit between
+/// them; `None` when less than [`MIN_SIDE`] is left. So it never hides a word of the view.
 pub(super) fn area(view: Rect, captions: &[Rect], hint: Rect) -> Option<Rect> {
     const GAP: f32 = 4.0;
     let side = side(view);
