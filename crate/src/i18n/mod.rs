@@ -14,8 +14,8 @@ pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
 pub use series::{
-    compose, estimator_id, estimator_name, lab_series_words, quantity_id, series_label,
-    series_legend,
+    LegendParts, compose, estimator_id, estimator_name, lab_series_words, quantity_id,
+    series_label, series_legend, series_legend_parts,
 };
 use std::sync::OnceLock;
 

@@ -91,26 +91,71 @@ pub fn series_label(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> String {
 /// The legend of `spec` in `lang`: its label and its unit, e.g. "ST+Gyro: attitude error
 /// about x [°]".
 pub fn series_legend(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> String {
-    let label = series_label(lang, lab_id, spec);
-    if spec.unit.is_empty() {
-        label
-    } else {
-        format!("{label} [{}]", crate::model::display_unit(spec.unit))
+    series_legend_parts(lang, lab_id, spec).joined()
+}
+
+/// A legend in its two parts: who produced the series and what it measures with its unit,
+/// so a legend can name an owner once above several of its series, or a shared measure
+/// once above several owners.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LegendParts {
+    /// The truth, the sensors or an estimator ("ST+Gyro \[λ,ω\]"); `None` for a series
+    /// without one (the time, a series named by hand).
+    pub owner: Option<String>,
+    /// The measure and its unit ("attitude error about x [°]").
+    pub what: String,
+}
+
+impl LegendParts {
+    /// The whole legend, "owner: what".
+    pub fn joined(&self) -> String {
+        joined(self.owner.as_deref(), &self.what)
     }
+}
+
+/// [`series_legend`] in its two parts. A label that does not compose from its key in `lang`
+/// is one part, the whole English label with the unit.
+pub fn series_legend_parts(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> LegendParts {
+    let composed = parts(lang, lab_id, spec).filter(|(owner, what)| {
+        // English is the core's own label, whatever the key says.
+        lang != Lang::En || joined(owner.as_deref(), what) == spec.label
+    });
+    let (owner, what) = composed.unwrap_or((None, spec.label.clone()));
+    let what = if spec.unit.is_empty() {
+        what
+    } else {
+        format!("{what} [{}]", crate::model::display_unit(spec.unit))
+    };
+    LegendParts { owner, what }
 }
 
 /// The label of `spec` in `lang` from its key, or `None` when the key does not account for
 /// its English label or a word has no translation.
 pub fn compose(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> Option<String> {
+    let (owner, what) = parts(lang, lab_id, spec)?;
+    Some(joined(owner.as_deref(), &what))
+}
+
+/// "owner: what", or `what` alone.
+fn joined(owner: Option<&str>, what: &str) -> String {
+    match owner {
+        Some(owner) => format!("{owner}: {what}"),
+        None => what.to_string(),
+    }
+}
+
+/// The owner and the measure of `spec` in `lang`, without the unit, as [`compose`] puts
+/// them together.
+fn parts(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> Option<(Option<String>, String)> {
     if spec.name == TIME {
-        return Some(t(lang, "series-time"));
+        return Some((None, t(lang, "series-time")));
     }
     let key = spec.key?;
     let what_en = measure_words(Lang::En, key.measure)?;
     let rest = spec.label.strip_suffix(what_en.as_str())?;
     let what = measure_words(lang, key.measure)?;
     if rest.is_empty() {
-        return Some(what);
+        return Some((None, what));
     }
     let owner_en = rest.strip_suffix(": ")?;
     let owner = match key.source {
@@ -126,7 +171,7 @@ pub fn compose(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> Option<String> {
     if lang == Lang::En && owner != owner_en {
         return None;
     }
-    Some(format!("{owner}: {what}"))
+    Some((Some(owner), what))
 }
 
 /// What a measure is, in words.

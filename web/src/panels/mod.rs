@@ -93,7 +93,7 @@ pub(crate) fn series_legend(app: &AppState, spec: &attlab::model::SeriesSpec) ->
 }
 
 /// The words the plot draws, in the reader's language.
-pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
+pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
     let lab = app.sim().lab();
     let mut outage_words: Vec<String> = lab
         .page()
@@ -106,7 +106,9 @@ pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> 
         outage_words.push(tr(app, "replay-gaps"));
     }
     crate::render::plots::PlotWords {
-        legend: Box::new(move |spec| series_legend(app, spec)),
+        legend: Box::new(move |spec| {
+            i18n::series_legend_parts(app.view().lang(), app.sim().lab().id(), spec)
+        }),
         time_axis: tr(app, "axis-time"),
         mixed_units: tr(app, "axis-mixed-units"),
         bands: tr(app, "bands-legend"),
@@ -116,7 +118,7 @@ pub(crate) fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> 
 }
 
 /// The outages the plots shade: the lab's, and a replay's steps without a logged sample.
-pub(crate) fn outages(app: &AppState) -> Vec<attlab::model::Outage> {
+pub fn outages(app: &AppState) -> Vec<attlab::model::Outage> {
     let mut all = app.sim().lab().page().outages.to_vec();
     if app.sim().replay_log().is_some() {
         all.push(attlab::model::REPLAY_GAPS);

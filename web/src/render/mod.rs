@@ -4,6 +4,7 @@
 pub mod body3d;
 pub mod clip;
 pub mod fonts;
+pub mod legend;
 pub mod mesh;
 mod orbit_inset;
 pub mod outages;

@@ -4,6 +4,7 @@
 
 use super::outages;
 use super::palette::{self, Palette};
+use attlab::i18n::LegendParts;
 use attlab::model::{Figure, Lab, Outage, SeriesGroup, SeriesSpec};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
@@ -53,8 +54,8 @@ pub fn groups(available: &[SeriesSpec]) -> Vec<SeriesGroup> {
 /// The words a plot draws, in the reader's language (the page fills them from the
 /// catalogue; the renderer knows no language).
 pub struct PlotWords<'a> {
-    /// A series' legend: its label and unit.
-    pub legend: Box<dyn Fn(&attlab::model::SeriesSpec) -> String + 'a>,
+    /// A series' legend: its owner, and what it measures with the unit.
+    pub legend: Box<dyn Fn(&SeriesSpec) -> LegendParts + 'a>,
     /// The time axis' title.
     pub time_axis: String,
     /// The y axis' title when the series' units differ.
@@ -80,25 +81,12 @@ pub fn show(
     hidden: &[usize],
     words: &PlotWords<'_>,
 ) -> egui::Rect {
-    let tab = match state.tab {
-        Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
-        t => t,
-    };
-    let log = match tab {
-        Tab::Figure(f) => figures[f].log,
-        Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
-    };
-    let full = ui.available_rect_before_wrap();
     let colours = palette::of(ui.visuals());
-    let shown: Vec<(usize, Color32)> = lines(rec, figures, tab, colours)
-        .into_iter()
-        .filter(|(i, _)| {
-            let source = rec.specs()[*i].source;
-            source == 0 || !hidden.contains(&source)
-        })
-        .collect();
+    let (tab, log, shown) = selection(rec, figures, state, hidden, colours);
+    let full = ui.available_rect_before_wrap();
     // The legend never covers data: beside a wide plot, below a narrow one.
-    let (plot_rect, legend_rect) = split_for_legend(ui, full, shown.len());
+    let lines = super::legend::lines(rec, &shown, (log, state), outages, words);
+    let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
     // brings back the whole run once the reader has zoomed or dragged.
     let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
@@ -143,10 +131,37 @@ pub fn show(
         reset_button(ui, rect, reset_id, &words.reset);
     }
     ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
-        legend(ui, rec, &shown, (log, state), outages, words);
+        super::legend::show(ui, rec, &lines, placed);
     });
     ui.advance_cursor_after_rect(full);
     rect
+}
+
+/// What the selected tab draws: the tab (a figure the lab lacks falls back to the errors),
+/// whether as log10, and its series (index into `rec`, colour) without the hidden sources.
+pub fn selection(
+    rec: &Recorder,
+    figures: &[Figure],
+    state: &PlotState,
+    hidden: &[usize],
+    colours: &Palette,
+) -> (Tab, bool, Vec<(usize, Color32)>) {
+    let tab = match state.tab {
+        Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
+        t => t,
+    };
+    let log = match tab {
+        Tab::Figure(f) => figures[f].log,
+        Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
+    };
+    let shown = lines(rec, figures, tab, colours)
+        .into_iter()
+        .filter(|(i, _)| {
+            let source = rec.specs()[*i].source;
+            source == 0 || !hidden.contains(&source)
+        })
+        .collect();
+    (tab, log, shown)
 }
 
 /// The "⟲" in the plot's top-right corner: the next frame shows the whole run again.
@@ -232,76 +247,6 @@ fn nice_step(raw: f64) -> f64 {
         .unwrap_or(10.0 * decade)
 }
 
-/// Splits `full` into the plot and its legend: a column on the right of a wide plot, a strip
-/// below a narrow one (as high as `entries` lines need, at most a third of `full`).
-fn split_for_legend(ui: &Ui, full: egui::Rect, entries: usize) -> (egui::Rect, egui::Rect) {
-    if full.width() >= SIDE_LEGEND_MIN_PT {
-        let w = (full.width() * 0.27).min(380.0);
-        let plot = egui::Rect::from_min_max(full.min, full.max - egui::vec2(w, 0.0));
-        let legend = egui::Rect::from_min_max(egui::pos2(plot.max.x + 8.0, full.min.y), full.max);
-        return (plot, legend);
-    }
-    let row = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
-    let h = (row * (entries as f32 + 1.0)).min(full.height() / 3.0);
-    let plot = egui::Rect::from_min_max(full.min, full.max - egui::vec2(0.0, h));
-    let legend = egui::Rect::from_min_max(egui::pos2(full.min.x, plot.max.y + 4.0), full.max);
-    (plot, legend)
-}
-
-/// A plot at least this wide (points) has its legend beside it.
-const SIDE_LEGEND_MIN_PT: f32 = 560.0;
-
-/// The legend beside or below a plot: each drawn series' label and unit in its colour and
-/// line pattern, the ±3σ bands' line style and the outages' shading.
-fn legend(
-    ui: &mut Ui,
-    rec: &Recorder,
-    shown: &[(usize, Color32)],
-    (log, state): (bool, &PlotState),
-    outages: &[Outage],
-    words: &PlotWords<'_>,
-) {
-    let colours = palette::of(ui.visuals());
-    let swatch = |ui: &mut Ui, color: Color32, style: LineStyle| {
-        let (r, _) = ui.allocate_exact_size(egui::vec2(30.0, 10.0), egui::Sense::hover());
-        let y = r.center().y;
-        let line = vec![egui::pos2(r.min.x, y), egui::pos2(r.max.x, y)];
-        palette::styled_polyline(ui.painter(), line, egui::Stroke::new(2.5, color), style);
-    };
-    egui::ScrollArea::vertical().show(ui, |ui| {
-        for (i, color) in shown {
-            let spec = &rec.specs()[*i];
-            let text = if log {
-                format!("log10 {}", (words.legend)(spec))
-            } else {
-                (words.legend)(spec)
-            };
-            ui.horizontal(|ui| {
-                swatch(ui, *color, palette::pattern(spec.source));
-                ui.add(egui::Label::new(text).wrap());
-            });
-        }
-        let banded = shown.iter().any(|(i, _)| rec.specs()[*i].band.is_some());
-        if state.show_bands && banded && !log {
-            ui.horizontal(|ui| {
-                swatch(ui, Color32::GRAY, LineStyle::dashed_loose());
-                ui.add(egui::Label::new(&words.bands).wrap());
-            });
-        }
-        if state.show_outages {
-            for (k, o) in outages.iter().enumerate() {
-                ui.horizontal(|ui| {
-                    let (r, _) =
-                        ui.allocate_exact_size(egui::vec2(18.0, 10.0), egui::Sense::hover());
-                    ui.painter().rect_filled(r, 2.0, outages::color(colours, k));
-                    let text = words.outages.get(k).map_or(o.label, String::as_str);
-                    ui.add(egui::Label::new(text).wrap());
-                });
-            }
-        }
-    });
-}
-
 /// The series a tab draws with their colours: by source, so an estimator has one colour
 /// everywhere; a figure that shows several series of one source tells them apart by
 /// position.
@@ -349,11 +294,11 @@ fn draw_series(
     rec: &Recorder,
     i: usize,
     look: LineLook,
-    legend: &dyn Fn(&attlab::model::SeriesSpec) -> String,
+    legend: &dyn Fn(&SeriesSpec) -> LegendParts,
 ) {
     let spec = &rec.specs()[i];
     let mut pts = rec.plot_points(i, MAX_POINTS);
-    let mut label = legend(spec);
+    let mut label = legend(spec).joined();
     if look.log {
         for p in &mut pts {
             p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
@@ -379,7 +324,7 @@ fn draw_series(
             .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * scale])
             .collect()
     };
-    let name = format!("{} ±3σ", legend(spec));
+    let name = format!("{} ±3σ", legend(spec).joined());
     for sign in [1.0, -1.0] {
         for piece in pieces(plot, &sigma3(sign), LineStyle::dashed_loose()) {
             plot.line(

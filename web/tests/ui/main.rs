@@ -17,6 +17,7 @@ mod body3d;
 mod clock;
 mod fill;
 mod keyboard;
+mod legend;
 mod lessons;
 mod live;
 mod narrow;
@@ -370,15 +371,28 @@ fn every_labs_legend_shows_human_labels_with_units() {
         let first = shown
             .first()
             .unwrap_or_else(|| panic!("{}: nothing plotted", lab.id()));
-        let legend = first.legend();
-        let legend = if lab.page().figures.first().is_some_and(|f| f.log) {
-            format!("log10 {legend}")
-        } else {
-            legend
+        // The legend says who and what with its unit: together, or under a heading the
+        // series of one owner or of one measure share.
+        let mut parts = attlab::i18n::series_legend_parts(attlab::i18n::Lang::En, lab.id(), first);
+        if lab.page().figures.first().is_some_and(|f| f.log) {
+            parts.what = format!("log10 {}", parts.what);
+        }
+        let whole = parts.joined();
+        let said = |words: &str| {
+            [words, &whole]
+                .iter()
+                .any(|w| h.query_all_by_label(w).next().is_some())
         };
         assert!(
-            h.query_by_label(&legend).is_some(),
-            "{}: the legend has no entry `{legend}`",
+            said(&parts.what),
+            "{}: the legend has neither `{}` nor `{whole}`",
+            lab.id(),
+            parts.what
+        );
+        let owner = parts.owner.as_deref().unwrap_or(&parts.what);
+        assert!(
+            said(owner),
+            "{}: the legend has neither `{owner}` nor `{whole}`",
             lab.id()
         );
         assert!(

@@ -1,0 +1,194 @@
+//! The plot's legend on a projector (1280×720 in presenter mode): every line of it is on
+//! screen and whole, for every figure of every lab, in English and in Russian, and in a
+//! lesson's narrower page.
+
+use super::*;
+use attlab::i18n::Lang;
+use attlab::model::PlotTab;
+use attlab_web::panels;
+use attlab_web::render::{legend, palette, plots};
+use attlab_web::state::{AppState, ViewCommand};
+use egui::Rect;
+use egui::epaint::Shape;
+
+/// The page at a projector's 1280×720 pixels in presenter mode, as `fragment` opens it,
+/// after `steps` steps: 853×480 points at presenter mode's zoom.
+fn projector(fragment: &str, steps: usize) -> Harness<'static, AttLabApp> {
+    let mut app = AttLabApp::headless(AppState::from_fragment(fragment));
+    app.apply(RunCommand::SetPlaying(false).into());
+    for _ in 0..steps {
+        app.apply(RunCommand::StepOnce.into());
+    }
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 720.0))
+        .with_context_setup(|ctx| {
+            attlab_web::render::fonts::install(ctx);
+            ctx.set_zoom_factor(PRESENTER_ZOOM);
+        })
+        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);
+    // As the browser does: the window's size in points at the zoom, every frame from now
+    // on (egui rescales the harness's first size by the zoom set before its first frame).
+    h.set_size(egui::vec2(1280.0, 720.0) / PRESENTER_ZOOM);
+    h.run_steps(2);
+    h
+}
+
+/// Presenter mode's zoom (`AttLabApp::set_zoom_and_theme`).
+const PRESENTER_ZOOM: f32 = 1.5;
+
+/// Shows `tab`, its series re-run where they were not recorded.
+fn select(h: &mut Harness<'_, AttLabApp>, tab: PlotTab) {
+    h.state_mut().apply(ViewCommand::SelectTab(tab).into());
+    let mut frames = 0;
+    while h.state().state.run().job().is_some() {
+        h.step();
+        frames += 1;
+        assert!(frames < 500, "{tab:?}: the re-run never finished");
+    }
+    h.run_steps(2);
+}
+
+/// The legend's lines as the page words them for its current tab.
+fn legend_texts(app: &AppState) -> Vec<String> {
+    let sim = app.sim();
+    let colours = palette::of(&egui::Visuals::light());
+    let figures = sim.lab().page().figures;
+    let plot = &app.view().plots;
+    let (_, log, shown) =
+        plots::selection(sim.recorder(), figures, plot, &app.view().hidden, colours);
+    let words = panels::plot_words(app);
+    let outages = panels::outages(app);
+    legend::lines(sim.recorder(), &shown, (log, plot), &outages, &words)
+        .iter()
+        .map(|l| l.text().to_owned())
+        .collect()
+}
+
+/// Every text painted whole inside its clip rectangle, with that rectangle.
+fn whole_texts(h: &Harness<'_, AttLabApp>) -> Vec<(Rect, String)> {
+    (h.output().shapes.iter())
+        .filter_map(|c| match &c.shape {
+            Shape::Text(t)
+                if c.clip_rect
+                    .expand(0.5)
+                    .contains_rect(t.visual_bounding_rect()) =>
+            {
+                Some((c.clip_rect, t.galley.text().to_owned()))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// The legend's clip rectangle (the one its first line is painted whole in that leaves
+/// the fewest lines out) and the lines not painted whole inside it.
+fn lines_not_shown(h: &Harness<'_, AttLabApp>, lines: &[String]) -> (Option<Rect>, Vec<String>) {
+    let whole = whole_texts(h);
+    let missing_in = |clip: Rect| -> Vec<String> {
+        (lines.iter())
+            .filter(|l| !whole.iter().any(|(c, t)| *c == clip && t == *l))
+            .cloned()
+            .collect()
+    };
+    (whole.iter())
+        .filter(|(_, t)| lines.first() == Some(t))
+        .map(|(clip, _)| (Some(*clip), missing_in(*clip)))
+        .min_by_key(|(_, missing)| missing.len())
+        .unwrap_or_else(|| (None, lines.to_vec()))
+}
+
+/// Whether a legend that does not fit lets the reader reach its last line: with the
+/// pointer over the legend, the wheel turned down until the line is painted whole in it.
+fn last_line_reached(h: &mut Harness<'_, AttLabApp>, clip: Rect, lines: &[String]) -> bool {
+    let Some(last) = lines.last() else {
+        return false;
+    };
+    let Some(left) = (h.query_all_by_label(last).last())
+        .and_then(|n| n.accesskit_node().raw_bounds())
+        .map(|b| b.x0 as f32)
+    else {
+        return false;
+    };
+    h.hover_at(egui::pos2(left + 4.0, clip.center().y));
+    h.run();
+    for _ in 0..10 {
+        h.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: egui::vec2(0.0, -40.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Unknown,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.run_steps(2);
+        if whole_texts(h).iter().any(|(c, t)| *c == clip && t == last) {
+            return true;
+        }
+    }
+    false
+}
+
+/// A legend of this many lines or fewer fits whole at a projector's size in English (every
+/// figure's but paper 2's sixteen filters on one plot, 19 lines; before the legend grouped
+/// its lines and fitted its type, a legend of 9 lines did not).
+const FITS_IN_ENGLISH: usize = 16;
+
+/// Every legend line of every figure of every lab is painted whole at a projector's size,
+/// in English and Russian; where a legend has more lines than its column holds at the
+/// smallest type (paper 2's sixteen filters on one plot; in Russian, whose words are
+/// longer, two more of paper 2's), it scrolls to its last line under the wheel.
+#[test]
+fn the_legend_of_every_figure_fits_a_projector() {
+    let mut wrong = Vec::new();
+    let mut scrolled = Vec::new();
+    for lab in labs::all() {
+        for lang in Lang::ALL {
+            let fragment = format!("lab={}&presenter=1&lang={}", lab.id(), lang.code());
+            let mut h = projector(&fragment, 20);
+            assert!(
+                h.state().state.view().presenter,
+                "{fragment}: presenter mode"
+            );
+            let zoomed = h.ctx.content_rect().width();
+            assert!(
+                (850.0..860.0).contains(&zoomed),
+                "{fragment}: {zoomed} points wide"
+            );
+            for f in 0..lab.page().figures.len() {
+                select(&mut h, PlotTab::Figure(f));
+                let lines = legend_texts(&h.state().state);
+                assert!(!lines.is_empty(), "{fragment}, figure {f}: an empty legend");
+                let (clip, missing) = lines_not_shown(&h, &lines);
+                let case = format!("{fragment}, figure {f} ({} lines)", lines.len());
+                match clip {
+                    _ if missing.is_empty() => {}
+                    // English, the shorter language, fits whole up to this many lines.
+                    _ if lang == Lang::En && lines.len() <= FITS_IN_ENGLISH => {
+                        wrong.push(format!("{case} scrolls: {missing:?} of {lines:?}"));
+                    }
+                    Some(clip) if last_line_reached(&mut h, clip, &lines) => scrolled.push(case),
+                    _ => wrong.push(format!("{case}: {missing:?} of {lines:?}")),
+                }
+            }
+        }
+    }
+    eprintln!("legends that scroll:\n{}", scrolled.join("\n"));
+    assert!(
+        wrong.is_empty(),
+        "legend lines cut or hidden:\n{}",
+        wrong.join("\n")
+    );
+}
+
+/// Paper 2's lesson step 4 (the star tracker goes blind), where the lesson's text takes a
+/// column and the answers' numbers a row: its legend names both outages.
+#[test]
+fn a_lessons_legend_fits_a_projector() {
+    for lang in Lang::ALL {
+        let fragment = format!("lesson=p2&step=4&presenter=1&lang={}", lang.code());
+        let h = projector(&fragment, 20);
+        let lines = legend_texts(&h.state().state);
+        assert!(lines.len() >= 4, "{fragment}: {lines:?}");
+        let (_, missing) = lines_not_shown(&h, &lines);
+        assert!(missing.is_empty(), "{fragment}: {missing:?} of {lines:?}");
+    }
+}
