@@ -261,10 +261,10 @@ pub fn show(ui: &mut Ui, rec: &Recorder, lines: &[Line], placed: Placed) {
                             LineStyle::dashed_loose(),
                         );
                     }
-                    Line::Outage(k, _) => {
+                    Line::Outage(o, _) => {
                         let shade = mark.with_max_x(mark.min.x + OUTAGE_PT);
                         ui.painter()
-                            .rect_filled(shade, 2.0, outages::color(colours, *k));
+                            .rect_filled(shade, 2.0, outages::color(colours, *o));
                     }
                     Line::Series(_, None) => {}
                 }
