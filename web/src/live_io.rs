@@ -21,17 +21,41 @@ pub struct Polled {
     /// The source is starting (a prompt open) or delivering.
     pub running: bool,
     /// Why it stopped or failed, if it did.
-    pub error: Option<String>,
-    /// Something the user must do (iOS: tap once more to allow the sensors).
-    pub note: Option<String>,
+    pub error: Option<LiveReason>,
+    /// Something the user must do (iOS: tap once more to allow the sensors), or that
+    /// happened and was got over (a serial read error).
+    pub note: Option<LiveReason>,
     /// Which browser API delivers (`Gyroscope + Accelerometer`, `devicemotion`, `Web Serial`).
     pub api: String,
     /// Samples or bytes dropped because the queue was full (the page was not drawing).
     pub dropped: u64,
 }
 
-#[cfg(target_arch = "wasm32")]
-const GLUE: &str = r#"
+/// Why a live source stopped or could not start, or what it asks of the reader: a code the
+/// page says in the reader's language (catalogue id `live-why-<code>`), and the browser's
+/// own detail (its error's message, as the browser wrote it; empty when there is none).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LiveReason {
+    /// What happened, e.g. `unplugged`, `no-serial`, `tap-again`.
+    pub code: String,
+    /// The browser's words, if any.
+    pub detail: String,
+}
+
+impl LiveReason {
+    /// A reason with no detail.
+    pub fn new(code: &str) -> Self {
+        Self {
+            code: code.into(),
+            detail: String::new(),
+        }
+    }
+}
+
+/// The page script. Its reasons are codes with the browser's detail (`L.fail(code,
+/// detail)`, `L.say(code, detail)`); the page words them ([`LiveReason`]).
+#[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
+pub(crate) const GLUE: &str = r#"
 if (!window.attlabLive) {
   const MAX_SAMPLES = 8 * 60000, MAX_BYTES = 4 << 20;
   const L = window.attlabLive = { samples: [], chunks: [], bytes: 0, running: false,
@@ -39,8 +63,10 @@ if (!window.attlabLive) {
   L.reset = () => { if (L.halt) { try { L.halt(); } catch (e) {} } L.samples = []; L.chunks = [];
     L.bytes = 0; L.running = false; L.starting = true; L.error = null; L.note = null; L.api = '';
     L.dropped = 0; L.halt = null; };
-  L.fail = (why) => { if (L.running || L.starting) { L.error = why; } L.running = false;
-    L.starting = false; };
+  const why = (code, detail) => [code, detail === undefined ? '' : String(detail)];
+  L.fail = (code, detail) => { if (L.running || L.starting) { L.error = why(code, detail); }
+    L.running = false; L.starting = false; };
+  L.say = (code, detail) => { L.note = why(code, detail); };
   L.run = (api) => { L.running = true; L.starting = false; L.api = api; };
   // Full (the page has not drawn for minutes): a new sample is dropped and counted; the
   // gap it leaves is the clock's to show.
@@ -57,7 +83,7 @@ if (!window.attlabLive) {
     L.halt = () => window.removeEventListener('devicemotion', h);
   };
   const askThenMotion = () => DeviceMotionEvent.requestPermission().then((s) => {
-      if (s === 'granted') { motion(); } else { L.fail('motion sensors: permission denied'); } });
+      if (s === 'granted') { motion(); } else { L.fail('permission-denied'); } });
   L.startPhone = (hz) => {
     L.reset();
     if ('Gyroscope' in window && 'Accelerometer' in window) {
@@ -67,7 +93,7 @@ if (!window.attlabLive) {
         acc.addEventListener('reading', () => { a = [acc.x, acc.y, acc.z]; });
         gyr.addEventListener('reading', () => {
           if (a) L.push(gyr.timestamp, a, [gyr.x, gyr.y, gyr.z], 180 / Math.PI); });
-        const onError = (e) => L.fail('motion sensors: ' + e.error.name + ': ' + e.error.message);
+        const onError = (e) => L.fail('sensor-error', e.error.name + ': ' + e.error.message);
         acc.addEventListener('error', onError); gyr.addEventListener('error', onError);
         acc.start(); gyr.start();
         L.run('Gyroscope + Accelerometer');
@@ -75,12 +101,12 @@ if (!window.attlabLive) {
         return;
       } catch (e) { /* no access: the event below */ }
     }
-    if (!('DeviceMotionEvent' in window)) { L.fail('this browser has no motion sensors'); return; }
+    if (!('DeviceMotionEvent' in window)) { L.fail('no-motion'); return; }
     if (typeof DeviceMotionEvent.requestPermission !== 'function') { motion(); return; }
     // iOS asks inside a tap: now, if this tap still counts, else at the next one.
     askThenMotion().catch(() => {
-      L.note = 'tap the page once more to allow the motion sensors';
-      const again = () => askThenMotion().catch((e) => L.fail('motion sensors: ' + e));
+      L.say('tap-again');
+      const again = () => askThenMotion().catch((e) => L.fail('sensor-error', e));
       window.addEventListener('touchend', again, { once: true });
       window.addEventListener('click', again, { once: true });
     });
@@ -88,24 +114,24 @@ if (!window.attlabLive) {
   L.startSerial = async (baud) => {
     L.reset();
     if (!('serial' in navigator)) {
-      L.fail('this browser has no Web Serial (Chrome, Edge and Opera on a computer; Firefox from 151)');
+      L.fail('no-serial');
       return;
     }
     let port, reader;
     try { port = await navigator.serial.requestPort(); }
-    catch (e) { L.fail('no port chosen (' + e.message + ')'); return; }
+    catch (e) { L.fail('no-port', e.message); return; }
     try { await port.open({ baudRate: baud }); }
-    catch (e) { L.fail('cannot open the port: ' + e.message); return; }
+    catch (e) { L.fail('cannot-open', e.message); return; }
     L.run('Web Serial');
     let stopped = false;
     L.halt = () => { stopped = true; if (reader) reader.cancel().catch(() => {}); };
-    const gone = (e) => { if (e.target === port) L.fail('the device was unplugged'); };
+    const gone = (e) => { if (e.target === port) L.fail('unplugged'); };
     navigator.serial.addEventListener('disconnect', gone);
     // A read error (a framing error, an overrun) is not the end: the port gives a new
     // stream. The end is the device closing it, unplugging, or Stop.
     let closed = false;
     while (!stopped && !closed && L.running) {
-      if (!port.readable) { L.fail('the device was unplugged'); break; }
+      if (!port.readable) { L.fail('unplugged'); break; }
       reader = port.readable.getReader();
       try {
         for (;;) {
@@ -114,10 +140,10 @@ if (!window.attlabLive) {
           if (L.bytes + value.length > MAX_BYTES) { L.dropped += value.length; continue; }
           L.chunks.push(value); L.bytes += value.length;
         }
-      } catch (e) { L.note = 'serial read error, reading on: ' + e.message; }
+      } catch (e) { L.say('read-error', e.message); }
       finally { reader.releaseLock(); }
     }
-    if (closed && !stopped) L.fail('the device closed the stream');
+    if (closed && !stopped) L.fail('closed');
     navigator.serial.removeEventListener('disconnect', gone);
     L.running = false;
     try { await port.close(); } catch (e) {}
@@ -169,24 +195,37 @@ fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::Js
 }
 
 /// Starts the phone's motion sensors at `hz` (the iOS prompt appears inside this tap).
-pub fn start_phone(hz: f64) -> Result<(), String> {
+pub fn start_phone(hz: f64) -> Result<(), LiveReason> {
     #[cfg(target_arch = "wasm32")]
-    return call("startPhone", &[hz.into()]).map(|_| ());
+    return call("startPhone", &[hz.into()])
+        .map(|_| ())
+        .map_err(script_failed);
     #[cfg(not(target_arch = "wasm32"))]
     {
         let _ = hz;
-        Err("live sensors run in the web page (a phone's browser)".into())
+        Err(LiveReason::new("desktop-phone"))
     }
 }
 
 /// Asks for a serial port and reads it at `baud`.
-pub fn start_serial(baud: u32) -> Result<(), String> {
+pub fn start_serial(baud: u32) -> Result<(), LiveReason> {
     #[cfg(target_arch = "wasm32")]
-    return call("startSerial", &[baud.into()]).map(|_| ());
+    return call("startSerial", &[baud.into()])
+        .map(|_| ())
+        .map_err(script_failed);
     #[cfg(not(target_arch = "wasm32"))]
     {
         let _ = baud;
-        Err("Web Serial runs in the web page (Chrome or Edge on a computer)".into())
+        Err(LiveReason::new("desktop-serial"))
+    }
+}
+
+/// The page script itself failed (it could not be installed or called).
+#[cfg(target_arch = "wasm32")]
+fn script_failed(detail: String) -> LiveReason {
+    LiveReason {
+        code: "script".into(),
+        detail,
     }
 }
 
@@ -194,6 +233,17 @@ pub fn start_serial(baud: u32) -> Result<(), String> {
 pub fn stop() {
     #[cfg(target_arch = "wasm32")]
     let _ = call("stop", &[]);
+}
+
+/// A reason as the page script gives it (`[code, detail]`), if it gave one.
+#[cfg(target_arch = "wasm32")]
+fn reason(v: &wasm_bindgen::JsValue) -> Option<LiveReason> {
+    use wasm_bindgen::JsCast as _;
+    // `null` when there is none (Array.from would throw on it).
+    let pair = v.dyn_ref::<js_sys::Array>()?;
+    let code = pair.get(0).as_string()?;
+    let detail = pair.get(1).as_string().unwrap_or_default();
+    Some(LiveReason { code, detail })
 }
 
 /// Takes what arrived since the last call.
@@ -215,8 +265,8 @@ pub fn poll() -> Polled {
                 .map(|a| a.to_vec())
                 .unwrap_or_default(),
             running: get("running").as_bool().unwrap_or(false),
-            error: get("error").as_string(),
-            note: get("note").as_string(),
+            error: reason(&get("error")),
+            note: reason(&get("note")),
             api: get("api").as_string().unwrap_or_default(),
             dropped: get("dropped").as_f64().unwrap_or(0.0) as u64,
         }

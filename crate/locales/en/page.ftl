@@ -265,6 +265,20 @@ live-status = { $source } · { $api } · { $state } · { $n } lines recorded, { 
 live-zero = Zero: the pose held now is level
 live-stop = Stop
 live-save = Save record (CSV)
+live-why-permission-denied = the motion sensors' permission was denied
+live-why-sensor-error = the motion sensors failed: { $detail }
+live-why-no-motion = this browser has no motion sensors
+live-why-no-serial = this browser has no Web Serial (Chrome, Edge and Opera on a computer; Firefox from 151)
+live-why-no-port = no port chosen ({ $detail })
+live-why-cannot-open = cannot open the port: { $detail }
+live-why-unplugged = the device was unplugged
+live-why-closed = the device closed the stream
+live-why-stopped = the source stopped
+live-why-script = the page's sensor script failed: { $detail }
+live-why-desktop-phone = live sensors run in the web page (a phone's browser)
+live-why-desktop-serial = Web Serial runs in the web page (Chrome or Edge on a computer)
+live-why-tap-again = tap the page once more to allow the motion sensors
+live-why-read-error = serial read error, reading on: { $detail }
 msg-live-failed = live sensors: { $why }
 msg-live-waiting = live sensors: waiting for the first samples…
 msg-live-zeroed = live sensors: the pose held now is level (later samples are turned by it)
@@ -305,6 +319,15 @@ link-out-of-range = Link item { $item }: “{ $label }” goes from { $range } �
 link-not-whole = Link item { $item }: “{ $label }” takes a whole number — kept at { $kept }.
 link-no-option = Link item { $item }: “{ $label }” is one of: { $range } — kept at { $kept }.
 link-malformed = Link item { $item }: not of the form name=value — ignored.
+
+## A value a slider or a log's unit choice refused (the run goes on unchanged)
+param-out-of-range = “{ $label }” goes from { $range }; { $given } is outside it — unchanged.
+param-not-a-number = “{ $label }” needs a number; “{ $given }” is not one — unchanged.
+param-not-finite = “{ $label }” needs a finite number — unchanged.
+param-not-whole = “{ $label }” takes a whole number; { $given } is not one — unchanged.
+param-no-option = “{ $label }” is one of: { $range }; “{ $given }” names none of them — unchanged.
+param-unknown = This lab has no setting “{ $key }”.
+param-malformed = “{ $text }” is not of the form name=value.
 
 ## The command line's `attlab labs --lang`
 cli-paper = paper

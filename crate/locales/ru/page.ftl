@@ -275,6 +275,20 @@ live-status = { $source } · { $api } · { $state } · записано стро
 live-zero = Ноль: текущее положение — горизонт
 live-stop = Остановить
 live-save = Сохранить запись (CSV)
+live-why-permission-denied = доступ к датчикам движения не разрешён
+live-why-sensor-error = сбой датчиков движения: { $detail }
+live-why-no-motion = в этом браузере нет датчиков движения
+live-why-no-serial = в этом браузере нет Web Serial (Chrome, Edge и Opera на компьютере; Firefox с версии 151)
+live-why-no-port = порт не выбран ({ $detail })
+live-why-cannot-open = не удаётся открыть порт: { $detail }
+live-why-unplugged = устройство отключено
+live-why-closed = устройство закрыло поток
+live-why-stopped = источник остановлен
+live-why-script = сбой сценария датчиков на странице: { $detail }
+live-why-desktop-phone = живые датчики работают на веб-странице (в браузере телефона)
+live-why-desktop-serial = Web Serial работает на веб-странице (Chrome или Edge на компьютере)
+live-why-tap-again = коснитесь страницы ещё раз, чтобы разрешить датчики движения
+live-why-read-error = ошибка чтения порта, чтение продолжается: { $detail }
 msg-live-failed = живые датчики: { $why }
 msg-live-waiting = живые датчики: ждём первых отсчётов…
 msg-live-zeroed = живые датчики: текущее положение принято за горизонт (следующие отсчёты повёрнуты на него)
@@ -315,6 +329,15 @@ link-out-of-range = Элемент ссылки { $item }: «{ $label }» — о
 link-not-whole = Элемент ссылки { $item }: «{ $label }» принимает целое число — оставлено { $kept }.
 link-no-option = Элемент ссылки { $item }: «{ $label }» — одно из: { $range } — оставлено { $kept }.
 link-malformed = Элемент ссылки { $item }: не в виде имя=значение — пропущен.
+
+## Значение, которое ползунок или выбор единиц записи не принял (прогон идёт без изменений)
+param-out-of-range = «{ $label }»: допустимо { $range }, { $given } вне этих пределов; значение не изменено.
+param-not-a-number = для «{ $label }» нужно число, а «{ $given }» — не число; значение не изменено.
+param-not-finite = для «{ $label }» нужно конечное число; значение не изменено.
+param-not-whole = «{ $label }» принимает только целые числа, а { $given } — не целое; значение не изменено.
+param-no-option = «{ $label }» — одно из: { $range }; «{ $given }» не называет ни одного из них; значение не изменено.
+param-unknown = В этой работе нет настройки «{ $key }».
+param-malformed = «{ $text }» не имеет вида имя=значение.
 
 ## Командная строка: `attlab labs --lang`
 cli-paper = статья

@@ -113,6 +113,8 @@ const TEXT_ARGUMENTS: &[&str] = &[
     "first",
     "g",
     "unit",
+    "given",
+    "key",
     "gives",
 ];
 

@@ -109,7 +109,7 @@ impl AppState {
                 self.io.units.insert(format.id, units);
                 self.start_replay(log.name.into(), log.text.as_bytes());
             }
-            Err(e) => self.error(e.to_string()),
+            Err(e) => self.refused_unit(format.units, &e),
         }
     }
 
@@ -142,8 +142,19 @@ impl AppState {
             Ok(()) => {
                 self.io.units.insert(format.id, units);
             }
-            Err(e) => self.error(e.to_string()),
+            Err(e) => self.refused_unit(format.units, &e),
         }
+    }
+
+    /// A unit choice of the log format refused, said by its label in the reader's language.
+    fn refused_unit(&mut self, units: &[attlab::model::ParamSpec], e: &attlab::model::ParamError) {
+        let lang = self.view.lang();
+        self.error(super::link_words::param_problem(
+            lang,
+            self.sim.lab(),
+            units,
+            e,
+        ));
     }
 
     /// Parses `bytes` as the lab's kind of log and replays it: every bad line is listed

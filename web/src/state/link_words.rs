@@ -1,4 +1,4 @@
-//! A bad item of a link, in words a student knows: the slider's label rather than its key,
+//! A bad item of a link, or a refused value, in words a student knows: the slider's label rather than its key,
 //! the value the page keeps instead, the slider a mistyped key most likely meant — and no
 //! list of the lab's forty internal names.
 
@@ -39,7 +39,56 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
         return i18n::t_with(lang, "link-bad", &[item, ("why", e.reason.clone().into())]);
     };
     let kept = ParamValues::defaults(lab.params()).get(spec.key);
-    let range = match spec.kind {
+    let args = [
+        item,
+        ("label", label(lang, lab, spec).into()),
+        ("range", range(lang, lab, spec).into()),
+        ("kept", shown(spec, kept).into()),
+    ];
+    i18n::t_with(lang, id, &args)
+}
+
+/// Why a value for one of `specs` (the lab's sliders, or its log format's unit choices) was
+/// refused, in `lang`: named by the control's label with its range, never by its key. The
+/// run and the choice stay as they were.
+pub fn param_problem(lang: Lang, lab: &dyn Lab, specs: &[ParamSpec], e: &ParamError) -> String {
+    let key = match e {
+        ParamError::Malformed { text } => {
+            return i18n::t_with(lang, "param-malformed", &[("text", text.clone().into())]);
+        }
+        ParamError::Unknown { key, .. }
+        | ParamError::NotANumber { key, .. }
+        | ParamError::NotFinite { key }
+        | ParamError::OutOfRange { key, .. }
+        | ParamError::NotInteger { key, .. }
+        | ParamError::NoSuchOption { key, .. } => key,
+    };
+    let Some(spec) = specs.iter().find(|s| s.key == key.as_str()) else {
+        return i18n::t_with(lang, "param-unknown", &[("key", key.clone().into())]);
+    };
+    let choice = matches!(spec.kind, ParamKind::Choice(_));
+    let (id, given) = match e {
+        // A choice is said by its options, whatever number was asked for.
+        ParamError::OutOfRange { value, .. } | ParamError::NotInteger { value, .. } if choice => {
+            ("param-no-option", value.to_string())
+        }
+        ParamError::NotANumber { text, .. } => ("param-not-a-number", text.clone()),
+        ParamError::NoSuchOption { text, .. } => ("param-no-option", text.clone()),
+        ParamError::OutOfRange { value, .. } => ("param-out-of-range", shown(spec, *value)),
+        ParamError::NotInteger { value, .. } => ("param-not-whole", value.to_string()),
+        _ => ("param-not-finite", String::new()),
+    };
+    let args = [
+        ("label", label(lang, lab, spec).into()),
+        ("range", range(lang, lab, spec).into()),
+        ("given", given.into()),
+    ];
+    i18n::t_with(lang, id, &args)
+}
+
+/// What a control takes, in `lang`: its options, or its range with the unit.
+fn range(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
+    match spec.kind {
         ParamKind::Choice(options) => (0..options.len())
             .map(|i| {
                 let id = i18n::param_option_id(lab.id(), spec.key, i);
@@ -50,14 +99,7 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
         _ => format!("{} … {} {}", spec.min, spec.max, spec.unit)
             .trim_end()
             .to_string(),
-    };
-    let args = [
-        item,
-        ("label", label(lang, lab, spec).into()),
-        ("range", range.into()),
-        ("kept", shown(spec, kept).into()),
-    ];
-    i18n::t_with(lang, id, &args)
+    }
 }
 
 /// A parameter's label in `lang`.
@@ -124,5 +166,48 @@ mod tests {
                 .collect::<Vec<_>>()
         };
         assert!(ru.iter().all(|m| !m.is_empty()), "{ru:?}");
+    }
+
+    /// Each refused value, in both languages: named by the slider's label (Russian in
+    /// Russian), with the value given and what the slider takes; never by its key.
+    #[test]
+    fn a_refused_value_is_said_by_the_sliders_label_in_the_readers_language() {
+        let lab = attlab::labs::find("free-rotation").expect("registered");
+        let key = "gyro_noise_deg_s";
+        let spec = lab
+            .params()
+            .iter()
+            .find(|s| s.key == key)
+            .expect("a slider");
+        let mut values = ParamValues::defaults(lab.params());
+        let refused = [
+            values.set(lab.params(), key, 1e9),
+            values.set(lab.params(), key, f64::NAN),
+            values.set_text(lab.params(), key, "abc"),
+            values.set(lab.params(), "no_such_key", 1.0),
+        ];
+        for lang in Lang::ALL {
+            let label = label(lang, lab, spec);
+            for r in &refused {
+                let e = r.as_ref().expect_err("refused");
+                let said = param_problem(lang, lab, lab.params(), e);
+                assert!(
+                    !said.contains(key) && !said.contains('{'),
+                    "{lang:?}: {said}"
+                );
+                match e {
+                    ParamError::Unknown { .. } => assert!(said.contains("no_such_key"), "{said}"),
+                    _ => assert!(said.contains(&label), "{lang:?}: {said} lacks {label}"),
+                }
+                if let ParamError::OutOfRange { .. } = e {
+                    assert!(said.contains("1000000000") && said.contains('…'), "{said}");
+                }
+                if lang == Lang::Ru {
+                    assert!(said.chars().any(|c| ('а'..='я').contains(&c)), "{said}");
+                }
+            }
+        }
+        let label_ru = label(Lang::Ru, lab, spec);
+        assert_ne!(label_ru, spec.label, "the slider has a Russian label");
     }
 }

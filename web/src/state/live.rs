@@ -6,6 +6,7 @@
 
 use super::AppState;
 use crate::live_io;
+use attlab::i18n::{self, Lang};
 use attlab::sensors::ImuScales;
 use attlab::sensors::live::{LiveStream, PHONE_SCALES, phone_line, phone_to_body, zero_mount};
 use attlab::sim::{SharedLog, SimOptions, Simulation};
@@ -126,6 +127,7 @@ impl AppState {
             LiveSource::Serial(baud) => live_io::start_serial(baud),
         };
         if let Err(why) = started {
+            let why = live_reason(self.view.lang(), &why);
             return self.warn("msg-live-failed", &[("why", why.into())]);
         }
         let scales = match source {
@@ -225,7 +227,8 @@ impl AppState {
         let news = LiveNews {
             stall,
             dropped: polled.dropped,
-            ended: ended.then(|| polled.error.unwrap_or_default()),
+            ended: ended
+                .then(|| (polled.error).unwrap_or_else(|| live_io::LiveReason::new("stopped"))),
             note: polled.note,
         };
         self.say_live_news(news);
@@ -260,10 +263,13 @@ impl AppState {
             self.warn("msg-live-dropped", &[("n", news.dropped.into())]);
         }
         if let Some(note) = news.note {
-            self.info(note);
+            self.info(live_reason(lang, &note));
         }
         if let Some(why) = news.ended {
-            let args = [("why", why.into()), ("n", recorded.into())];
+            let args = [
+                ("why", live_reason(lang, &why).into()),
+                ("n", recorded.into()),
+            ];
             self.warn("msg-live-ended", &args);
         }
     }
@@ -338,8 +344,21 @@ impl AppState {
 struct LiveNews {
     stall: bool,
     dropped: u64,
-    ended: Option<String>,
-    note: Option<String>,
+    ended: Option<live_io::LiveReason>,
+    note: Option<live_io::LiveReason>,
+}
+
+/// A live source's reason in `lang`: its code's message with the browser's detail; a code
+/// the catalogue lacks is said as the code and the detail.
+pub fn live_reason(lang: Lang, why: &live_io::LiveReason) -> String {
+    let id = format!("live-why-{}", why.code);
+    if i18n::has(Lang::En, &id) {
+        i18n::t_with(lang, &id, &[("detail", why.detail.clone().into())])
+    } else if why.detail.is_empty() {
+        why.code.clone()
+    } else {
+        format!("{}: {}", why.code, why.detail)
+    }
 }
 
 /// The `attlab replay` flags of `scales`.
@@ -356,4 +375,67 @@ fn scale_flags(scales: ImuScales) -> String {
         name(&attlab::sensors::AccelUnit::ALL, scales.accel),
         name(&attlab::sensors::GyroUnit::ALL, scales.gyro),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use live_io::LiveReason;
+
+    /// The codes the page script reports (`L.fail('…'`, `L.say('…'`), and the page's own.
+    fn codes() -> Vec<String> {
+        let mut out: Vec<String> = ["L.fail('", "L.say('"]
+            .iter()
+            .flat_map(|call| live_io::GLUE.split(call).skip(1))
+            .filter_map(|rest| rest.split('\'').next())
+            .map(str::to_string)
+            .collect();
+        out.extend(["stopped", "script", "desktop-phone", "desktop-serial"].map(String::from));
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    #[test]
+    fn every_reason_the_script_gives_is_said_in_both_languages() {
+        let codes = codes();
+        assert!(codes.len() >= 12, "{codes:?}");
+        for code in &codes {
+            let why = LiveReason {
+                code: code.clone(),
+                detail: "NotAllowedError: xyz".into(),
+            };
+            let en = live_reason(Lang::En, &why);
+            let ru = live_reason(Lang::Ru, &why);
+            assert!(
+                i18n::has(Lang::Ru, &format!("live-why-{code}")),
+                "{code}: no Russian"
+            );
+            assert!(
+                i18n::has(Lang::En, &format!("live-why-{code}")),
+                "{code}: {en}"
+            );
+            assert!(ru.chars().any(|c| ('а'..='я').contains(&c)), "{code}: {ru}");
+            assert!(
+                !ru.contains('{') && !en.contains('{'),
+                "{code}: {en} / {ru}"
+            );
+            let detailed = en.contains("xyz");
+            assert_eq!(ru.contains("xyz"), detailed, "{code}: {en} / {ru}");
+        }
+    }
+
+    #[test]
+    fn a_reason_the_catalogue_lacks_is_said_as_given() {
+        let why = LiveReason {
+            code: "new-thing".into(),
+            detail: "details".into(),
+        };
+        assert_eq!(live_reason(Lang::Ru, &why), "new-thing: details");
+        assert_eq!(live_reason(Lang::En, &LiveReason::new("x")), "x");
+        assert_eq!(
+            live_reason(Lang::En, &LiveReason::new("unplugged")),
+            "the device was unplugged"
+        );
+    }
 }

@@ -150,7 +150,14 @@ impl AppState {
             RunCommand::SelectLab(lab) => self.select_lab(lab),
             RunCommand::SetParam(key, value) => {
                 if let Err(e) = self.sim.set_param(key, value) {
-                    self.error(e.to_string());
+                    let lab = self.sim.lab();
+                    let lang = self.view.lang();
+                    self.error(super::link_words::param_problem(
+                        lang,
+                        lab,
+                        lab.params(),
+                        &e,
+                    ));
                 }
             }
             RunCommand::ApplyPreset(i) => self.apply_preset(i),

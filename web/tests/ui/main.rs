@@ -22,6 +22,7 @@ mod lessons;
 mod live;
 mod narrow;
 mod png;
+mod refusals;
 mod replay;
 mod shader;
 

@@ -1,0 +1,68 @@
+//! A value the page refuses is said in the reader's language by the control's label: a
+//! slider's value out of its range, a log's unit choice that is none of its options.
+
+use super::*;
+use attlab_web::state::AppState;
+
+fn page(fragment: &str) -> Harness<'static, AttLabApp> {
+    let mut app = AttLabApp::headless(AppState::from_fragment(fragment));
+    app.apply(RunCommand::SetPlaying(false).into());
+    Harness::builder()
+        .with_size(egui::vec2(1400.0, 900.0))
+        .with_context_setup(attlab_web::render::fonts::install)
+        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
+}
+
+/// The last message's words after `command`, and whether it is an error.
+fn said_after(h: &mut Harness<'_, AttLabApp>, command: attlab_web::state::Command) -> String {
+    let before = h.state().state.messages().len();
+    h.state_mut().apply(command);
+    h.run();
+    let messages = h.state().state.messages();
+    assert_eq!(messages.len(), before + 1, "one message: {messages:?}");
+    let last = messages.last().expect("a message");
+    assert!(last.is_error, "{last:?}");
+    last.text.clone()
+}
+
+#[test]
+fn a_sliders_refused_value_is_said_by_its_label_in_russian() {
+    let mut h = page("lab=free-rotation&lang=ru");
+    let before = h.state().state.sim().params().get("gyro_noise_deg_s");
+    let said = said_after(&mut h, RunCommand::SetParam("gyro_noise_deg_s", 1e9).into());
+    assert!(said.contains("«Шум гироскопа σ»"), "{said}");
+    assert!(
+        said.contains("1000000000") && !said.contains("gyro_noise"),
+        "{said}"
+    );
+    assert_eq!(
+        h.state().state.sim().params().get("gyro_noise_deg_s"),
+        before,
+        "the run keeps its value"
+    );
+}
+
+#[test]
+fn a_logs_refused_unit_choice_is_said_by_its_label_in_either_language() {
+    for (lang, label) in [
+        ("en", "“accelerometer columns”"),
+        ("ru", "«столбцы акселерометра»"),
+    ] {
+        let mut h = page(&format!("lab=p4&lang={lang}"));
+        let said = said_after(&mut h, IoCommand::SetLogUnit("accel_unit", 99.0).into());
+        assert!(
+            said.contains(label) && !said.contains("accel_unit"),
+            "{lang}: {said}"
+        );
+        // A choice is said by its options.
+        let option = if lang == "ru" {
+            "отсчёты, диапазон ±2 g"
+        } else {
+            "counts, ±2 g range"
+        };
+        assert!(
+            said.contains(option) && said.contains("99"),
+            "{lang}: {said}"
+        );
+    }
+}
