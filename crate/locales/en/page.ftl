@@ -84,6 +84,7 @@ truth = truth
 body-truth = truth (solid)
 body-ghost = estimate (ghost): { $label }
 body-hint = drag: orbit · wheel or pinch: zoom · double-click: reset · x red, y green, z blue
+body-hint-touch = drag: turn · pinch: zoom · x red, y green, z blue
 sphere-title = Riemann sphere: vertical k in body axes
 chart-all-w = every filter in chart w (from S)
 chart-w-rest = { $n ->

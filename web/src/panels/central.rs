@@ -122,12 +122,17 @@ fn reset_button(ui: &mut Ui, app: &AppState, view: &mut View, kind: ViewKind, re
     }
 }
 
+/// A phone or a tablet: the narrow layout, or a finger on the screen.
+fn touch_screen(ui: &Ui) -> bool {
+    super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.any_touches())
+}
+
 /// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
 /// the view (so it hides no caption otherwise; never while a capture runs, so it is not in
 /// the picture).
 fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut Vec<Command>) {
     // On a touch screen there is no hover: the button stays.
-    let touch = super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.any_touches());
+    let touch = touch_screen(ui);
     if app.view().capturing || !(touch || ui.rect_contains_pointer(rect)) {
         return;
     }
@@ -301,7 +306,19 @@ fn draw_body(
             .get(app.view().ghost_index)
             .and_then(|e| e.unobservable_axis_body()),
         orbit: extras.orbit,
-        captions: (top, tr(app, "body-hint")),
+        // No wheel or double click on a touch screen (the ⟲ button resets a turned view):
+        // a hint of one line leaves the body more of a phone's short view.
+        captions: (
+            top,
+            tr(
+                app,
+                if touch_screen(ui) {
+                    "body-hint-touch"
+                } else {
+                    "body-hint"
+                },
+            ),
+        ),
         words: body3d::SceneWords {
             vectors: extras
                 .vectors
