@@ -122,9 +122,10 @@ fn reset_button(ui: &mut Ui, app: &AppState, view: &mut View, kind: ViewKind, re
     }
 }
 
-/// A phone or a tablet: the narrow layout, or a finger on the screen.
+/// A phone or a tablet: the narrow layout, or a screen a finger has touched (since, not
+/// only while: the hint must not change under a dragging finger).
 fn touch_screen(ui: &Ui) -> bool {
-    super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.any_touches())
+    super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.has_touch_screen())
 }
 
 /// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
@@ -136,8 +137,7 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
     if app.view().capturing || !(touch || ui.rect_contains_pointer(rect)) {
         return;
     }
-    let size = Vec2::new(38.0, 18.0);
-    let at = Rect::from_min_size(rect.max - size - Vec2::splat(4.0), size);
+    let at = body3d::png_button_rect(rect);
     let button = egui::Button::new(egui::RichText::new(tr(app, "png")).small());
     if ui
         .put(at, button)

@@ -291,6 +291,13 @@ pub struct SceneWords {
     pub no_gpu: String,
 }
 
+/// Where a view's small "PNG" button goes: the bottom-right corner of `view` (the page
+/// draws it there over every view; the orbit inset keeps clear of it).
+pub fn png_button_rect(view: Rect) -> Rect {
+    let size = egui::vec2(38.0, 18.0);
+    Rect::from_min_size(view.max - size - egui::Vec2::splat(4.0), size)
+}
+
 /// Shows the 3D view filling `rect`.
 pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>, gpu_ready: bool) {
     let response = ui.allocate_rect(rect, Sense::click_and_drag());
@@ -329,8 +336,10 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
         }
     }
     let (caption_rects, hint_rect) = captions(&painter, rect, scene);
+    // The inset sits above the hint and above the view's PNG button in the same corner.
+    let below = hint_rect.union(png_button_rect(rect));
     if let Some(orbit) = &scene.orbit
-        && let Some(area) = super::orbit_inset::area(rect, &caption_rects, hint_rect)
+        && let Some(area) = super::orbit_inset::area(rect, &caption_rects, below)
     {
         super::orbit_inset::orbit_picture(&painter, area, orbit, &scene.words.orbit);
     }

@@ -138,6 +138,11 @@ fn check(h: &Harness<'_>, case: &str) {
         inset.width() >= 48.0,
         "{case}: inset {inset:?} too small to read"
     );
+    let png = body3d::png_button_rect(view);
+    assert!(
+        !inset.intersects(png),
+        "{case}: the inset {inset:?} is under the PNG button {png:?}"
+    );
     for (r, text) in texts.iter().filter(|(_, t)| !t.contains('β')) {
         assert!(
             !r.intersects(inset),
