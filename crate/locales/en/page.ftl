@@ -266,6 +266,7 @@ live-status = { $source } · { $api } · { $state } · { $n } lines recorded, { 
 live-zero = Zero: the pose held now is level
 live-stop = Stop
 live-save = Save record (CSV)
+live-no-detail = no detail given
 live-why-permission-denied = the motion sensors' permission was denied
 live-why-sensor-error = the motion sensors failed: { $detail }
 live-why-no-motion = this browser has no motion sensors

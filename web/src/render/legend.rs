@@ -164,8 +164,7 @@ pub fn place(ui: &Ui, full: egui::Rect, lines: &[Line]) -> (egui::Rect, egui::Re
         full.height()
     } else {
         // As high as the lines need at the body's type, at most a third of the plot's room.
-        let one = body + gap;
-        (one * (lines.len() as f32 + 1.0)).min(full.height() / 3.0)
+        height(&laid(1.0, full.width()), gap).min(full.height() / 3.0)
     };
     let widths: &[f32] = if side { &[0.27, 0.34, WIDEST] } else { &[1.0] };
     let width_of = |share: f32| {

@@ -49,8 +49,8 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
 }
 
 /// Why a value for one of `specs` (the lab's sliders, or its log format's unit choices) was
-/// refused, in `lang`: named by the control's label with its range, never by its key. The
-/// run and the choice stay as they were.
+/// refused, in `lang`: named by the control's label with its range, not by its key (only a
+/// key no control has is said as given). The run and the choice stay as they were.
 pub fn param_problem(lang: Lang, lab: &dyn Lab, specs: &[ParamSpec], e: &ParamError) -> String {
     let key = match e {
         ParamError::Malformed { text } => {

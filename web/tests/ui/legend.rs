@@ -132,6 +132,30 @@ fn last_line_reached(h: &mut Harness<'_, AttLabApp>, clip: Rect, lines: &[String
 /// its lines and fitted its type, a legend of 9 lines did not).
 const FITS_IN_ENGLISH: usize = 16;
 
+/// How many legends of all the labs' figures, in both languages, may scroll at a
+/// projector's size.
+const MOST_THAT_SCROLL: usize = 4;
+
+/// The `missing` lines painted across the legend's left or right edge (cut sideways, which
+/// scrolling cannot bring into view).
+fn cut_sideways<'a>(
+    h: &Harness<'_, AttLabApp>,
+    clip: Rect,
+    missing: &'a [String],
+) -> impl Iterator<Item = &'a String> {
+    let cut: Vec<String> = (h.output().shapes.iter())
+        .filter_map(|c| match &c.shape {
+            Shape::Text(t) if c.clip_rect == clip => {
+                let r = t.visual_bounding_rect();
+                let sideways = r.left() < clip.left() - 0.5 || r.right() > clip.right() + 0.5;
+                (sideways && r.intersects(clip)).then(|| t.galley.text().to_owned())
+            }
+            _ => None,
+        })
+        .collect();
+    missing.iter().filter(move |l| cut.contains(l))
+}
+
 /// Every legend line of every figure of every lab is painted whole at a projector's size,
 /// in English and Russian; where a legend has more lines than its column holds at the
 /// smallest type (paper 2's sixteen filters on one plot; in Russian, whose words are
@@ -159,6 +183,9 @@ fn the_legend_of_every_figure_fits_a_projector() {
                 assert!(!lines.is_empty(), "{fragment}, figure {f}: an empty legend");
                 let (clip, missing) = lines_not_shown(&h, &lines);
                 let case = format!("{fragment}, figure {f} ({} lines)", lines.len());
+                if let Some(clip) = clip {
+                    wrong.extend(cut_sideways(&h, clip, &missing).map(|l| format!("{case}: {l}")));
+                }
                 match clip {
                     _ if missing.is_empty() => {}
                     // English, the shorter language, fits whole up to this many lines.
@@ -172,6 +199,14 @@ fn the_legend_of_every_figure_fits_a_projector() {
         }
     }
     eprintln!("legends that scroll:\n{}", scrolled.join("\n"));
+    // Paper 2's "every filter" in both languages and two more of its figures in Russian
+    // scrolled when this was written (2026-12-06); a layout that makes more scroll fails.
+    assert!(
+        scrolled.len() <= MOST_THAT_SCROLL,
+        "{} legends scroll:\n{}",
+        scrolled.len(),
+        scrolled.join("\n")
+    );
     assert!(
         wrong.is_empty(),
         "legend lines cut or hidden:\n{}",
