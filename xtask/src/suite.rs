@@ -258,9 +258,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     })?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
-    // Every page test but those beside them, the page fuzz included (its default: one
-    // round of random input per lab); one at a time, as most of them count frames, and a
-    // second Chromium on the 2 cores halves the frame rate of the first.
+    // Every page test but those beside them, one at a time: most of them count frames, and
+    // a third Chromium on the 2 cores would slow the frames of the other two.
     // `--workspace`, as the native tests: the same features for every dependency, so the
     // page test reuses that build (`-p attlab-tests` alone re-resolved them and rebuilt 71
     // crates, 83 s in CI).
@@ -271,20 +270,26 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    // The soak and the lessons beside them (see `beside`): they wait on the clock.
-    let beside = suite.step("start the soak and lessons beside", || {
+    // The soak, the lessons and the fuzz beside them (see `beside`).
+    let beside = suite.step("start the soak, lessons and fuzz beside", || {
         crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE)
     })?;
     suite.tests("page (headless Chromium)", page)?;
     suite.finish_beside(
-        &format!("soak ({CI_SOAK_MINUTES} min) and lessons, beside"),
+        &format!("soak ({CI_SOAK_MINUTES} min), lessons, fuzz, beside"),
         beside,
     )
 }
 
 /// The page tests `cargo xtask test` runs beside the others, in this order (exact names):
-/// both wait on the clock more than on the cores.
-const BESIDE: [&str; 2] = ["soak", "lessons_open_at_their_step_and_pause"];
+/// the soak and the lessons wait on the clock more than on the cores; the fuzz (its default:
+/// one round of random input per lab) keeps one core busy with the app's UI passes, which
+/// the other page tests, mostly painting, left partly idle (see `beside`).
+const BESIDE: [&str; 3] = [
+    "soak",
+    "lessons_open_at_their_step_and_pause",
+    "page_survives_random_input",
+];
 
 /// The native tests. With cargo-nextest (on this project's machines): every test of every
 /// binary in one pool, so a binary of one long test no longer leaves a core idle while the
