@@ -208,8 +208,14 @@ fn hold(session: &Session<'_>, roll_deg: f64, rate_rad_s: f64) -> Result<(), Str
     let (s, c) = roll_deg.to_radians().sin_cos();
     let g = 9.80665;
     let accel = json!({ "type": "accelerometer", "reading": { "xyz": { "x": -g * s, "y": 0.0, "z": g * c } } });
-    let gyro = json!({ "type": "gyroscope", "reading": { "xyz": { "x": 0.0, "y": rate_rad_s, "z": 0.0 } } });
     session.cdp("Emulation.setSensorOverrideReadings", accel)?;
+    spin(session, rate_rad_s)
+}
+
+/// Sets the emulated gyro alone at `rate_rad_s` about the phone's long axis: the page makes
+/// a sample of each gyro reading with the last accelerometer reading.
+fn spin(session: &Session<'_>, rate_rad_s: f64) -> Result<(), String> {
+    let gyro = json!({ "type": "gyroscope", "reading": { "xyz": { "x": 0.0, "y": rate_rad_s, "z": 0.0 } } });
     session.cdp("Emulation.setSensorOverrideReadings", gyro)
 }
 
@@ -239,28 +245,17 @@ fn phone_problems(session: &Session<'_>, base: &str) -> Vec<String> {
             problems.push(format!("live phone: no control `{control}` in the mirror"));
         }
     }
-    // Level for 20 readings (the period is set by the first 16), a turn of 90° in nine
-    // steps with the gyro turning, then held at 90° for 30 readings.
+    // Level for 20 readings (the period is set by the first 16), then a turn of 90° in nine
+    // steps with the gyro turning.
     let mut script: Vec<(f64, f64)> = vec![(0.0, 0.0); 20];
     script.extend((1..=9).map(|k| (10.0 * f64::from(k), 0.5)));
-    script.extend(std::iter::repeat_n((90.0, 0.0), 30));
     for (roll, rate) in script {
         if let Err(e) = hold(session, roll, rate) {
             problems.push(format!("live phone: a reading was refused: {e}"));
             break;
         }
     }
-    let kf = || {
-        status(session)["anglesRad"][0]
-            .as_f64()
-            .map(f64::to_degrees)
-    };
-    if !eventually(|| kf().is_some_and(|a| (a - 90.0).abs() < 3.0)) {
-        problems.push(format!(
-            "live phone: the KF roll is {:?}°, not 90° ± 3°",
-            kf()
-        ));
-    }
+    problems.extend(settle_at_ninety(session));
     if !mirror_says(
         session,
         &["phone", "Gyroscope + Accelerometer", "lines recorded"],
@@ -276,4 +271,53 @@ fn phone_problems(session: &Session<'_>, base: &str) -> Vec<String> {
         problems.push(format!("live phone: cannot end the emulation: {e}"));
     }
     problems
+}
+
+/// The phone held at 90° after its turn until the KF's roll has followed: its problems.
+fn settle_at_ninety(session: &Session<'_>) -> Vec<String> {
+    let kf = || {
+        status(session)["anglesRad"][0]
+            .as_f64()
+            .map(f64::to_degrees)
+    };
+    // Then held at 90°, reading after reading, as a phone at rest goes on streaming. How far
+    // the gyro turned the KF depends on the sample period the page measured from the first
+    // readings (0.5 rad/s over nine periods), which depends on how fast the machine sent
+    // them, and Chromium delivers a reading only when one is set: a fixed count of thirty
+    // held readings left the KF at 93.5° once on a loaded machine. So readings go on, ten at
+    // a time, until the roll is within 3° of 90° at two checks in a row (at most 60 s). The
+    // accelerometer is set once; the page makes a sample of each gyro reading, and each
+    // differs from the last by 1e-9 rad/s, so every one is a new reading.
+    let start = Instant::now();
+    let (mut held, mut within, mut settled) = (0u32, 0u32, false);
+    let mut refused = hold(session, 90.0, 0.0).err();
+    while refused.is_none() && !settled && start.elapsed() < Duration::from_secs(60) {
+        for _ in 0..10 {
+            if let Err(e) = spin(session, 1e-9 * f64::from(held % 2)) {
+                refused = Some(e);
+                break;
+            }
+            held += 1;
+        }
+        within = if kf().is_some_and(|a| (a - 90.0).abs() < 3.0) {
+            within + 1
+        } else {
+            0
+        };
+        settled = within >= 2;
+    }
+    if let Some(e) = refused {
+        vec![format!("live phone: a reading was refused: {e}")]
+    } else if !settled {
+        vec![format!(
+            "live phone: the KF roll is {:?}° after {held} readings held at 90°, not 90° ± 3°",
+            kf()
+        )]
+    } else {
+        println!(
+            "page test: live phone: the KF roll within 3° of 90° after {held} readings held ({:.1} s)",
+            start.elapsed().as_secs_f64()
+        );
+        Vec::new()
+    }
 }
