@@ -1,5 +1,5 @@
-//! Page tests started beside the others instead of after them: the soak, the lessons, then
-//! the page fuzz. The soak and the lessons wait on the clock more than on the cores: the soak
+//! Page tests started beside the others instead of after them: the lessons, the page fuzz
+//! and the soak (the test runner takes them in the order of their names). The soak and the lessons wait on the clock more than on the cores: the soak
 //! keeps each lab for its seconds, and the lessons run to their pauses at the lesson's speed,
 //! so a slower frame does not make either take much longer there. The fuzz is the other
 //! kind: eframe runs a UI pass for every press and key it is sent, on the page's one thread,
@@ -24,7 +24,8 @@ pub struct Beside {
     line: String,
 }
 
-/// Starts the page tests named `tests` (exact names, run one at a time, in order) against
+/// Starts the page tests named `tests` (exact names, run one at a time, in the order of their
+/// names, as the test runner sorts them) against
 /// `url` in the background, a soak among them running for `soak_minutes`.
 pub fn start(url: &str, soak_minutes: f64, tests: &[&str]) -> Result<Beside> {
     let exe = page_test_binary()?;

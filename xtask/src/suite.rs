@@ -281,8 +281,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     )
 }
 
-/// The page tests `cargo xtask test` runs beside the others, in this order (exact names):
-/// the soak and the lessons wait on the clock more than on the cores; the fuzz (its default:
+/// The page tests `cargo xtask test` runs beside the others (exact names; the test runner
+/// takes them in the order of their names: the lessons, the fuzz, the soak): the soak and the lessons wait on the clock more than on the cores; the fuzz (its default:
 /// one round of random input per lab) keeps one core busy with the app's UI passes, which
 /// the other page tests, mostly painting, left partly idle (see `beside`).
 const BESIDE: [&str; 3] = [
@@ -310,7 +310,7 @@ fn native_tests(suite: &mut Suite) -> Result<()> {
 }
 
 /// The page fuzz against `url` for `minutes` (`cargo xtask test` runs one round per lab
-/// instead, with the other page tests).
+/// instead, beside the other page tests).
 pub fn fuzz_command(url: &str, minutes: f64) -> Command {
     let mut fuzz = cargo(
         "test --workspace --test page -- --ignored --nocapture --exact page_survives_random_input",

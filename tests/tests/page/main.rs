@@ -237,8 +237,8 @@ fn page_works_offline_after_one_visit() {
 }
 
 /// A step of every lab's lesson from the teacher's link on a projector (see `lessons.rs`).
-/// Its own test, so that `cargo xtask test` runs it beside the other page tests, after the
-/// soak: it waits on the lessons' own speed more than on the cores.
+/// Its own test, so that `cargo xtask test` runs it beside the other page tests (with the
+/// soak and the fuzz): it waits on the lessons' own speed more than on the cores.
 #[test]
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn lessons_open_at_their_step_and_pause() {
