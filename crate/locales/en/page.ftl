@@ -72,7 +72,13 @@ replay-gaps = no logged sample (a gap or a restart of the log's clock)
 outages-hint = Shade the intervals where a sensor gives nothing (every plot)
 axis-time = t [s]
 axis-mixed-units = mixed units (see the legend)
+axis-attitude = angle
+axis-rate = angular rate
+axis-error = error
+axis-covariance = covariance
+axis-innovation = innovation
 bands-legend = ±3σ of the filter's own covariance
+legend-no-data = no values recorded
 
 ## The views
 view-body3d = 3D body

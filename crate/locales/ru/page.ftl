@@ -71,7 +71,13 @@ replay-gaps = нет отсчёта в записи (разрыв или пер�
 outages-hint = Закрасить интервалы, когда датчик ничего не даёт (на всех графиках)
 axis-time = t [с]
 axis-mixed-units = разные единицы (см. легенду)
+axis-attitude = угол
+axis-rate = угловая скорость
+axis-error = ошибка
+axis-covariance = ковариация
+axis-innovation = невязка
 bands-legend = ±3σ по собственной ковариации фильтра
+legend-no-data = значений не записано
 
 ## Виды
 view-body3d = Тело в 3D

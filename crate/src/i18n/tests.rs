@@ -32,6 +32,24 @@ fn every_message_is_in_both_languages() {
     assert!(en.len() > 50, "{} messages", en.len());
 }
 
+#[test]
+fn every_series_groups_tab_title_and_axis_noun_are_in_the_catalogue() {
+    let en = ids(Lang::En);
+    let mut nouns = 0;
+    for group in crate::model::SeriesGroup::ALL {
+        assert!(
+            en.contains(group.message()),
+            "{group:?}: no `{}`",
+            group.message()
+        );
+        if let Some(id) = group.axis_message() {
+            assert!(en.contains(id), "{group:?}: no `{id}`");
+            nouns += 1;
+        }
+    }
+    assert_eq!(nouns, 5, "the groups whose series measure one thing");
+}
+
 /// The arguments the catalogue's messages take as text, each given "x" by the format test.
 const TEXT_ARGUMENTS: &[&str] = &[
     "help",

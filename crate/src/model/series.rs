@@ -24,6 +24,18 @@ pub enum SeriesGroup {
 }
 
 impl SeriesGroup {
+    /// Every group, in the order of the plot tabs.
+    pub const ALL: [Self; 8] = [
+        Self::Time,
+        Self::Attitude,
+        Self::Rate,
+        Self::Error,
+        Self::Covariance,
+        Self::Innovation,
+        Self::Sphere,
+        Self::Lab,
+    ];
+
     /// The id of the plot tab's title in the page's message catalogue (`group-attitude`…).
     pub fn message(self) -> &'static str {
         match self {
@@ -35,6 +47,20 @@ impl SeriesGroup {
             Self::Innovation => "group-innovation",
             Self::Sphere => "group-sphere",
             Self::Lab => "group-lab",
+        }
+    }
+
+    /// The id of the noun its plots' y axis carries before the unit ("error [°]"), or `None`
+    /// where the group's series measure different things (the sphere's, a lab's own).
+    /// The unit alone, "[°]", turned on its side, reads as a small box.
+    pub fn axis_message(self) -> Option<&'static str> {
+        match self {
+            Self::Attitude => Some("axis-attitude"),
+            Self::Rate => Some("axis-rate"),
+            Self::Error => Some("axis-error"),
+            Self::Covariance => Some("axis-covariance"),
+            Self::Innovation => Some("axis-innovation"),
+            Self::Time | Self::Sphere | Self::Lab => None,
         }
     }
 

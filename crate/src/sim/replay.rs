@@ -121,8 +121,8 @@ impl Simulation {
 }
 
 /// "Truth" of a replay: time runs on the log's clock (from one period before its first
-/// sample), the logged rate stands in for the true rate, the angle is unknown (so every
-/// error is missing).
+/// sample); the angle and the rate are unknown (the logged rate is the sensors' reading,
+/// with its noise and bias), so every error is missing.
 pub struct LogTruth {
     log: SharedLog,
     t_s: f64,
@@ -163,14 +163,11 @@ impl TruthModel for LogTruth {
     }
 
     fn state(&self) -> TruthState {
-        let rate = self
-            .index
-            .and_then(|k| self.log.read().rate_rad_s.get(k).copied())
-            .unwrap_or(f64::NAN);
         TruthState {
             t_s: self.t_s,
             q_ref_from_body: UnitQuaternion::identity(),
-            rate_body_rad_s: Vector3::new(0.0, 0.0, rate),
+            // The logged rate is a reading, not the truth: it is the sensors' series.
+            rate_body_rad_s: Vector3::repeat(f64::NAN),
             angle_rad: Some(f64::NAN),
             lab: LabData::default(),
         }

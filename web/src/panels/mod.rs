@@ -111,7 +111,9 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         }),
         time_axis: tr(app, "axis-time"),
         mixed_units: tr(app, "axis-mixed-units"),
+        group_axis: Box::new(move |group| group.axis_message().map(|id| tr(app, id))),
         bands: tr(app, "bands-legend"),
+        no_data: tr(app, "legend-no-data"),
         reset: tr(app, "plot-reset-hint"),
         outages: outage_words,
     }

@@ -102,7 +102,7 @@ impl Line {
 }
 
 /// The lines of the legend of `shown` series (index into `rec`, colour), in order: the
-/// series grouped by [`rows`], then the ±3σ bands where a drawn series has one, then each
+/// series grouped by [`rows`] (those in `no_data` say they have none), then the ±3σ bands where a drawn series has one, then each
 /// outage where they are shaded.
 pub fn lines(
     rec: &Recorder,
@@ -110,6 +110,7 @@ pub fn lines(
     (log, state): (bool, &PlotState),
     outages: &[Outage],
     words: &PlotWords<'_>,
+    no_data: &[usize],
 ) -> Vec<Line> {
     let legends: Vec<LegendParts> = shown
         .iter()
@@ -117,6 +118,9 @@ pub fn lines(
             let mut parts = (words.legend)(&rec.specs()[*i]);
             if log {
                 parts.what = format!("log10 {}", parts.what);
+            }
+            if no_data.contains(i) {
+                parts.what = format!("{} — {}", parts.what, words.no_data);
             }
             parts
         })

@@ -60,8 +60,13 @@ pub struct PlotWords<'a> {
     pub time_axis: String,
     /// The y axis' title when the series' units differ.
     pub mixed_units: String,
+    /// The noun before the unit on the y axis of a plot of one group's series ("error").
+    pub group_axis: Box<dyn Fn(SeriesGroup) -> Option<String> + 'a>,
     /// The legend's entry for the ±3σ bands.
     pub bands: String,
+    /// After a legend entry whose series has no value anywhere in the run so far ("no values
+    /// recorded"): the truth of a live or replayed run, the errors it cannot have.
+    pub no_data: String,
     /// The lab's outages' labels, by position.
     pub outages: Vec<String>,
     /// The reset button's hint.
@@ -85,14 +90,15 @@ pub fn show(
     let (tab, log, shown) = selection(rec, figures, state, hidden, colours);
     let full = ui.available_rect_before_wrap();
     // The legend never covers data: beside a wide plot, below a narrow one.
-    let lines = super::legend::lines(rec, &shown, (log, state), outages, words);
+    let (points, no_data) = points(rec, &shown);
+    let lines = super::legend::lines(rec, &shown, (log, state), outages, words, &no_data);
     let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
     // brings back the whole run once the reader has zoomed or dragged.
     let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
     let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
-        .y_axis_label(y_title(rec, &shown, log, &words.mixed_units))
+        .y_axis_label(y_title(rec, &shown, log, words))
         .y_grid_spacer(nice_marks)
         .allow_scroll(false);
     if ui
@@ -111,7 +117,7 @@ pub fn show(
             let shown_plot = plot.show(ui, |plot| {
                 wheel_zoom(plot);
                 outages::shade(plot, &bands, colours);
-                for (i, color) in &shown {
+                for ((i, color), pts) in shown.iter().zip(points) {
                     let style = LineLook {
                         color: *color,
                         width: line_width,
@@ -119,7 +125,7 @@ pub fn show(
                         log,
                         bands: state.show_bands,
                     };
-                    draw_series(plot, rec, *i, style, &words.legend);
+                    draw_series(plot, rec, (*i, pts), style, &words.legend);
                 }
                 !plot.auto_bounds().all()
             });
@@ -164,6 +170,22 @@ pub fn selection(
     (tab, log, shown)
 }
 
+/// The plot points of each of `shown` series (read once a frame, for the legend and the
+/// lines), and which series have no value anywhere in the run (the legend says so).
+pub fn points(rec: &Recorder, shown: &[(usize, Color32)]) -> (Vec<Vec<[f64; 2]>>, Vec<usize>) {
+    let points: Vec<Vec<[f64; 2]>> = shown
+        .iter()
+        .map(|(i, _)| rec.plot_points(*i, MAX_POINTS))
+        .collect();
+    let no_data = shown
+        .iter()
+        .zip(&points)
+        .filter(|(_, pts)| !pts.iter().any(|p| p[1].is_finite()))
+        .map(|((i, _), _)| *i)
+        .collect();
+    (points, no_data)
+}
+
 /// The "⟲" in the plot's top-right corner: the next frame shows the whole run again.
 fn reset_button(ui: &mut Ui, plot: egui::Rect, reset_id: egui::Id, hint: &str) {
     let at = egui::Rect::from_min_size(
@@ -190,23 +212,31 @@ fn wheel_zoom(plot: &mut egui_plot::PlotUi<'_>) {
     }
 }
 
-/// The y axis' title: the unit the drawn series share (`[°]`, `log10 [°²]`, `[–]` for none),
-/// or "mixed units (see the legend)".
-fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool, mixed: &str) -> String {
-    let mut units = shown.iter().map(|(i, _)| rec.specs()[*i].unit);
-    let Some(first) = units.next() else {
+/// The y axis' title: what the drawn series measure, when they are of one group, and the
+/// unit they share ("error [°]", "log10 covariance [°²]", "[–]" for none), or "mixed units
+/// (see the legend)".
+fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool, words: &PlotWords<'_>) -> String {
+    let specs = || shown.iter().map(|(i, _)| &rec.specs()[*i]);
+    let Some(first) = specs().next() else {
         return String::new();
     };
-    let unit = if units.all(|u| u == first) {
-        if first.is_empty() {
-            "[–]".to_string()
-        } else {
-            format!("[{}]", attlab::model::display_unit(first))
-        }
+    let noun = specs()
+        .all(|s| s.group == first.group)
+        .then(|| (words.group_axis)(first.group))
+        .flatten();
+    let title = if !specs().all(|s| s.unit == first.unit) {
+        words.mixed_units.clone()
     } else {
-        mixed.to_string()
+        let unit = match first.unit {
+            "" => "[–]".to_string(),
+            unit => format!("[{}]", attlab::model::display_unit(unit)),
+        };
+        match noun {
+            Some(noun) => format!("{noun} {unit}"),
+            None => unit,
+        }
     };
-    if log { format!("log10 {unit}") } else { unit }
+    if log { format!("log10 {title}") } else { title }
 }
 
 /// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
@@ -287,17 +317,16 @@ struct LineLook {
     bands: bool,
 }
 
-/// Series `i`, broken at its missing samples, with its ±3σ band from the variance series it
-/// names (never from its name).
+/// Series `i` from its plot points, broken at its missing samples, with its ±3σ band from
+/// the variance series it names (never from its name).
 fn draw_series(
     plot: &mut egui_plot::PlotUi<'_>,
     rec: &Recorder,
-    i: usize,
+    (i, mut pts): (usize, Vec<[f64; 2]>),
     look: LineLook,
     legend: &dyn Fn(&SeriesSpec) -> LegendParts,
 ) {
     let spec = &rec.specs()[i];
-    let mut pts = rec.plot_points(i, MAX_POINTS);
     let mut label = legend(spec).joined();
     if look.log {
         for p in &mut pts {
@@ -391,5 +420,45 @@ mod tests {
         // −7 … 7 (the issue's one lone "0"): −6 … 6 in steps of 2 or 5.
         assert!(labelled(-7.0, 7.0).contains(&0.0));
         assert!(labelled(f64::NAN, 1.0).is_empty());
+    }
+
+    fn words() -> PlotWords<'static> {
+        PlotWords {
+            legend: Box::new(|_| unreachable!("the title needs no legend")),
+            time_axis: String::new(),
+            mixed_units: "mixed".into(),
+            group_axis: Box::new(|g| g.axis_message().map(str::to_string)),
+            bands: String::new(),
+            no_data: String::new(),
+            outages: Vec::new(),
+            reset: String::new(),
+        }
+    }
+
+    #[test]
+    fn the_y_axis_names_what_one_groups_series_measure_before_their_unit() {
+        let spec = |name: &str, unit, group| SeriesSpec::new(name, unit, group);
+        let rec = Recorder::with_window(
+            vec![
+                spec("ex", "deg", SeriesGroup::Error),
+                spec("ey", "deg", SeriesGroup::Error),
+                spec("wx", "deg/s", SeriesGroup::Rate),
+                spec("roll", "deg", SeriesGroup::Lab),
+                spec("pxx", "", SeriesGroup::Covariance),
+            ],
+            8,
+        );
+        let title = |shown: &[usize], log| {
+            let shown: Vec<_> = shown.iter().map(|i| (*i, Color32::RED)).collect();
+            y_title(&rec, &shown, log, &words())
+        };
+        assert_eq!(title(&[0, 1], false), "axis-error [°]");
+        assert_eq!(title(&[2], false), "axis-rate [°/s]");
+        assert_eq!(title(&[4], true), "log10 axis-covariance [–]");
+        // A lab's own series, or two groups with one unit: the unit alone.
+        assert_eq!(title(&[3], false), "[°]");
+        assert_eq!(title(&[0, 3], false), "[°]");
+        assert_eq!(title(&[0, 2], true), "log10 mixed");
+        assert_eq!(title(&[], false), "");
     }
 }

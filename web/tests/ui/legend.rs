@@ -37,7 +37,7 @@ fn projector(fragment: &str, steps: usize) -> Harness<'static, AttLabApp> {
 const PRESENTER_ZOOM: f32 = 1.5;
 
 /// Shows `tab`, its series re-run where they were not recorded.
-fn select(h: &mut Harness<'_, AttLabApp>, tab: PlotTab) {
+pub(super) fn select(h: &mut Harness<'_, AttLabApp>, tab: PlotTab) {
     h.state_mut().apply(ViewCommand::SelectTab(tab).into());
     let mut frames = 0;
     while h.state().state.run().job().is_some() {
@@ -49,7 +49,7 @@ fn select(h: &mut Harness<'_, AttLabApp>, tab: PlotTab) {
 }
 
 /// The legend's lines as the page words them for its current tab.
-fn legend_texts(app: &AppState) -> Vec<String> {
+pub(super) fn legend_texts(app: &AppState) -> Vec<String> {
     let sim = app.sim();
     let colours = palette::of(&egui::Visuals::light());
     let figures = sim.lab().page().figures;
@@ -58,10 +58,18 @@ fn legend_texts(app: &AppState) -> Vec<String> {
         plots::selection(sim.recorder(), figures, plot, &app.view().hidden, colours);
     let words = panels::plot_words(app);
     let outages = panels::outages(app);
-    legend::lines(sim.recorder(), &shown, (log, plot), &outages, &words)
-        .iter()
-        .map(|l| l.text().to_owned())
-        .collect()
+    let (_, no_data) = plots::points(sim.recorder(), &shown);
+    legend::lines(
+        sim.recorder(),
+        &shown,
+        (log, plot),
+        &outages,
+        &words,
+        &no_data,
+    )
+    .iter()
+    .map(|l| l.text().to_owned())
+    .collect()
 }
 
 /// Every text painted whole inside its clip rectangle, with that rectangle.

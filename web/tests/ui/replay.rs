@@ -240,3 +240,37 @@ fn a_refused_log_is_said_in_the_readers_language() {
         assert!(state.sim().replay_log().is_none(), "nothing replayed");
     }
 }
+
+/// A replay has no truth: the legend says the truth's angle and every filter's error have
+/// no values recorded, and says it of nothing the log or the filters give.
+#[test]
+fn a_replays_legend_says_which_series_have_no_values() {
+    let mut h = replay_example(
+        "p4",
+        "Real data: an Arduino MPU-6050 log",
+        "1000 samples of 1003 lines",
+        "3 rejected",
+    );
+    for _ in 0..300 {
+        h.state_mut().apply(RunCommand::StepOnce.into());
+    }
+    h.run_steps(2);
+    const NONE: &str = " — no values recorded";
+    let texts = super::legend::legend_texts(&h.state().state);
+    let empty: Vec<&String> = texts.iter().filter(|t| t.contains(NONE)).collect();
+    assert_eq!(
+        empty,
+        ["Truth: angle [°] — no values recorded"],
+        "{texts:#?}"
+    );
+    assert!(
+        texts.len() >= 6,
+        "the estimates and the accelerometer: {texts:#?}"
+    );
+    let errors = attlab::model::PlotTab::Group(attlab::model::SeriesGroup::Error);
+    super::legend::select(&mut h, errors);
+    let texts = super::legend::legend_texts(&h.state().state);
+    let series: Vec<&String> = texts.iter().filter(|t| t.contains(" error")).collect();
+    assert!(series.len() >= 4, "{texts:#?}");
+    assert!(series.iter().all(|t| t.ends_with(NONE)), "{texts:#?}");
+}
