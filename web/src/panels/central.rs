@@ -283,7 +283,8 @@ fn draw_body(
     rect: Rect,
     gpu_ready: bool,
 ) {
-    let truth = app.sim().truth().q_ref_from_body;
+    // A replayed or live log has no truth: the estimate is drawn alone, solid.
+    let truth = super::has_truth(app).then(|| app.sim().truth().q_ref_from_body);
     let ghost_name = super::estimator_name(app, app.view().ghost_index);
     let ghost = app
         .sim()
@@ -292,8 +293,7 @@ fn draw_body(
         .and_then(|e| e.quaternion())
         .map(|q| (q, ghost_name.as_str()));
     let extras = app.sim().scene();
-    let mut top = vec![tr(app, "body-truth")];
-    top.extend(ghost.map(|(_, label)| tr_with(app, "body-ghost", &[("label", arg(label))])));
+    let top = super::body_captions(app, ghost.map(|(_, label)| label));
     let scene = body3d::Scene {
         truth,
         ghost,

@@ -255,10 +255,11 @@ impl egui_wgpu::CallbackTrait for Body3dCallback {
     }
 }
 
-/// What the 3D view draws: the truth and, beside it, an estimate as a ghost.
+/// What the 3D view draws: the truth and, beside it, an estimate as a ghost; a replayed or
+/// live log, which has no truth, the estimate alone, solid.
 pub struct Scene<'a> {
-    /// True attitude.
-    pub truth: UnitQuaternion<f64>,
+    /// True attitude, where the run has one (not a log's).
+    pub truth: Option<UnitQuaternion<f64>>,
     /// Estimated attitude (ghost) and its label, if the lab's estimator has one.
     pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
     /// The body hangs on a string from above (paper 1).
@@ -356,12 +357,20 @@ type Placed = (f64, [Vertex; 3]);
 fn scene_triangles<'a>(scene: &'a Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>, Vec<Label<'a>>) {
     let body = mesh(scene.shape);
     let mut tris = Vec::with_capacity(body.len() * 2 + 64);
-    let spacing = if scene.ghost.is_some() { 1.6 } else { 0.0 };
+    // Side by side when both are drawn; the estimate solid when there is no truth.
+    let spacing = if scene.truth.is_some() && scene.ghost.is_some() {
+        1.6
+    } else {
+        0.0
+    };
+    let ghost_alpha = if scene.truth.is_some() { 0.35 } else { 1.0 };
     let truth_at = Vector3::new(0.0, -spacing, 0.0);
     let ghost_at = Vector3::new(0.0, spacing, 0.0);
-    place(body, &scene.truth, truth_at, 1.0, eye, &mut tris);
+    if let Some(q) = scene.truth {
+        place(body, &q, truth_at, 1.0, eye, &mut tris);
+    }
     if let Some((q, _)) = scene.ghost {
-        place(body, &q, ghost_at, 0.35, eye, &mut tris);
+        place(body, &q, ghost_at, ghost_alpha, eye, &mut tris);
     }
     let mut labels: Vec<Label<'a>> = Vec::new();
     let mut rods = Vec::new();
@@ -396,8 +405,12 @@ fn scene_triangles<'a>(scene: &'a Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>,
     place(&rods, &world, Vector3::zeros(), 1.0, eye, &mut tris);
     if scene.suspended {
         let top = Vector3::new(0.0, 0.0, 0.3);
-        let mut bodies = vec![(scene.truth, -spacing, 1.0)];
-        bodies.extend(scene.ghost.map(|(q, _)| (q, spacing, 0.35)));
+        let mut bodies: Vec<_> = scene
+            .truth
+            .map(|q| (q, -spacing, 1.0))
+            .into_iter()
+            .collect();
+        bodies.extend(scene.ghost.map(|(q, _)| (q, spacing, ghost_alpha)));
         for (q, y, alpha) in bodies {
             let attach = q * top + Vector3::new(0.0, y, 0.0);
             let string = string_mesh(attach, 4.0);

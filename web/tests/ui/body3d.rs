@@ -21,10 +21,17 @@ const VIEWS: [(f32, f32, &str); 2] = [
 /// Paper 2's ghost label, the longest the view shows by default.
 const GHOST: &str = "1 ST+Gyro+Mag+Sun [λ,ω]";
 
-fn scene(lang: Lang, eclipse: bool, hint: &str) -> Scene<'static> {
+/// The scene with its captions: the truth and the ghost, or, for a log (`truth` false),
+/// the estimate alone.
+fn scene(lang: Lang, (eclipse, truth): (bool, bool), hint: &str) -> Scene<'static> {
     let label = FluentValue::from(GHOST);
+    let (first, ghost) = if truth {
+        ("body-truth", "body-ghost")
+    } else {
+        ("body-no-truth", "body-estimate")
+    };
     Scene {
-        truth: UnitQuaternion::identity(),
+        truth: truth.then(UnitQuaternion::identity),
         ghost: Some((UnitQuaternion::identity(), GHOST)),
         suspended: false,
         shape: BodyShape::HexPrism,
@@ -39,8 +46,8 @@ fn scene(lang: Lang, eclipse: bool, hint: &str) -> Scene<'static> {
         }),
         captions: (
             vec![
-                i18n::t(lang, "body-truth"),
-                i18n::t_with(lang, "body-ghost", &[("label", label)]),
+                i18n::t(lang, first),
+                i18n::t_with(lang, ghost, &[("label", label)]),
             ],
             i18n::t(lang, hint),
         ),
@@ -79,8 +86,8 @@ fn inset(h: &Harness<'_>, caption: Rect) -> Option<Rect> {
 fn the_views_words_and_orbit_inset_do_not_cover_one_another() {
     for lang in Lang::ALL {
         for (w, h, hint) in VIEWS {
-            for eclipse in [false, true] {
-                let scene = scene(lang, eclipse, hint);
+            for (eclipse, truth) in [(false, true), (true, true), (false, false)] {
+                let scene = scene(lang, (eclipse, truth), hint);
                 let mut harness = Harness::builder()
                     .with_size(Vec2::new(w, h))
                     .with_context_setup(attlab_web::render::fonts::install)
@@ -89,7 +96,7 @@ fn the_views_words_and_orbit_inset_do_not_cover_one_another() {
                         body3d::show(ui, rect, &mut OrbitCamera::default(), &scene, true);
                     });
                 harness.run();
-                let case = format!("{lang:?} {w}×{h} eclipse {eclipse}");
+                let case = format!("{lang:?} {w}×{h} eclipse {eclipse} truth {truth}");
                 check(&harness, &case);
                 // The phone's view is short: its English hint takes one line of it.
                 if hint == "body-hint-touch" && lang == Lang::En {

@@ -273,4 +273,14 @@ fn a_replays_legend_says_which_series_have_no_values() {
     let series: Vec<&String> = texts.iter().filter(|t| t.contains(" error")).collect();
     assert!(series.len() >= 4, "{texts:#?}");
     assert!(series.iter().all(|t| t.ends_with(NONE)), "{texts:#?}");
+    // The 3D view draws the estimate alone, solid, and says why.
+    let app = &h.state().state;
+    assert!(!attlab_web::panels::has_truth(app));
+    assert_eq!(
+        attlab_web::panels::body_captions(app, Some("KF")),
+        [
+            "no truth: a log holds only readings",
+            "estimate (solid): KF"
+        ]
+    );
 }
