@@ -441,24 +441,23 @@ fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
 fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) -> (Vec<Rect>, Rect) {
     let font = egui::FontId::proportional(13.0);
     let colours = super::palette::of_ctx(painter.ctx());
-    // Each wrapped inside the view (left of the orbit inset's column), so a long estimator
-    // label shows whole on a narrow view; each on its own line, so it cannot run into the
-    // truth's. The hint at the bottom takes the whole width, under the inset.
+    // Each wrapped inside the view, so a long estimator label shows whole on a narrow view;
+    // each on its own line, so it cannot run into the truth's. They take the whole width
+    // where the orbit inset below them keeps its full size, else they wrap left of its
+    // column. The hint at the bottom takes the whole width, under the inset.
     let wrap = (rect.width() - 16.0).max(40.0);
-    let inset = if scene.orbit.is_some() {
-        super::orbit_inset::column(rect)
-    } else {
-        0.0
+    let lay = |width: f32| -> (Vec<_>, Vec<Rect>) {
+        let mut y = rect.top() + 6.0;
+        (scene.captions.0.iter())
+            .map(|text| {
+                let galley = painter.layout(text.clone(), font.clone(), colours.ink, width);
+                let at = egui::pos2(rect.left() + 8.0, y);
+                y += galley.size().y;
+                let laid = Rect::from_min_size(at, galley.size());
+                (galley, laid)
+            })
+            .unzip()
     };
-    let mut y = rect.top() + 6.0;
-    let mut top = Vec::with_capacity(scene.captions.0.len());
-    for text in &scene.captions.0 {
-        let galley = painter.layout(text.clone(), font.clone(), colours.ink, wrap - inset);
-        let at = egui::pos2(rect.left() + 8.0, y);
-        top.push(Rect::from_min_size(at, galley.size()));
-        y += galley.size().y;
-        painter.galley(at, galley, colours.ink);
-    }
     let hint = painter.layout(
         scene.captions.1.clone(),
         egui::FontId::proportional(12.0),
@@ -468,6 +467,13 @@ fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) -> (Vec<Rect
     let at = rect.left_bottom() + egui::vec2(8.0, -6.0 - hint.size().y);
     let hint_rect = Rect::from_min_size(at, hint.size());
     painter.galley(at, hint, colours.ink_dim);
+    let (mut galleys, mut top) = lay(wrap);
+    if scene.orbit.is_some() && !super::orbit_inset::keeps_its_size(rect, &top, hint_rect) {
+        (galleys, top) = lay(wrap - super::orbit_inset::column(rect));
+    }
+    for (galley, laid) in galleys.into_iter().zip(&top) {
+        painter.galley(laid.min, galley, colours.ink);
+    }
     (top, hint_rect)
 }
 

@@ -24,6 +24,11 @@ fn side(view: Rect) -> f32 {
     (short * 0.34).max(84.0).min(short * 0.45)
 }
 
+/// Whether the inset, placed below `captions` and above `hint`, has its full size.
+pub(super) fn keeps_its_size(view: Rect, captions: &[Rect], hint: Rect) -> bool {
+    area(view, captions, hint).is_some_and(|a| a.width() >= side(view) - 0.5)
+}
+
 /// Where the inset goes in a 3D view `view` whose caption lines take `captions` (on top)
 /// and whose hint takes `hint` (at the bottom): bottom right, [`side`] large, above the
 /// hint and below any caption line that reaches into its column, shrunk to fit between

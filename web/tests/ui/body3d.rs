@@ -11,11 +11,12 @@ use egui_kittest::Harness;
 use nalgebra::{UnitQuaternion, Vector3};
 
 /// The sizes of the 3D view in the page tests' screenshots, in points, with the hint each
-/// shows: the projector's presenter mode (378 × 193 px at 1.5 px a point) and the phone's
-/// (a touch screen: no wheel, no double click).
-const VIEWS: [(f32, f32, &str); 2] = [
+/// shows: the projector's presenter mode (378 × 193 px at 1.5 px a point), the phone's
+/// (a touch screen: no wheel, no double click) and a laptop's (1366×768).
+const VIEWS: [(f32, f32, &str); 3] = [
     (252.0, 129.0, "body-hint"),
     (374.0, 120.0, "body-hint-touch"),
+    (360.0, 293.0, "body-hint"),
 ];
 
 /// Paper 2's ghost label, the longest the view shows by default.
@@ -88,6 +89,7 @@ fn the_views_words_and_orbit_inset_do_not_cover_one_another() {
         for (w, h, hint) in VIEWS {
             for (eclipse, truth) in [(false, true), (true, true), (false, false)] {
                 let scene = scene(lang, (eclipse, truth), hint);
+                let ghost_caption = scene.captions.0[1].clone();
                 let mut harness = Harness::builder()
                     .with_size(Vec2::new(w, h))
                     .with_context_setup(attlab_web::render::fonts::install)
@@ -98,13 +100,20 @@ fn the_views_words_and_orbit_inset_do_not_cover_one_another() {
                 harness.run();
                 let case = format!("{lang:?} {w}×{h} eclipse {eclipse} truth {truth}");
                 check(&harness, &case);
+                let one_line = |said: &str| {
+                    let (r, _) = (texts(&harness).into_iter())
+                        .find(|(_, t)| t == said)
+                        .unwrap_or_else(|| panic!("{case}: “{said}” not drawn"));
+                    assert!(r.height() < 20.0, "{case}: “{said}” is {r:?}");
+                };
                 // The phone's view is short: its English hint takes one line of it.
                 if hint == "body-hint-touch" && lang == Lang::En {
-                    let said = i18n::t(lang, hint);
-                    let (r, _) = (texts(&harness).into_iter())
-                        .find(|(_, t)| *t == said)
-                        .expect("the hint");
-                    assert!(r.height() < 20.0, "{case}: the hint is {r:?}");
+                    one_line(&i18n::t(lang, hint));
+                }
+                // A laptop's view is wide enough for the ghost's caption on one line, the
+                // inset below it.
+                if w > 355.0 && h > 200.0 && lang == Lang::En && truth {
+                    one_line(&ghost_caption);
                 }
             }
         }
