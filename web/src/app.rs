@@ -305,7 +305,7 @@ impl AttLabApp {
         }
         let name = self.png_name(target);
         let lang = self.state.view().lang();
-        let message = result.and_then(|png| {
+        let message = result.map_err(|e| e.message(lang)).and_then(|png| {
             let (w, h, n) = (png.width, png.height, png.bytes.len());
             let dir = self.state.io().save_dir.as_deref();
             let saved = platform::save_file(&name, "image/png", png.bytes, dir, lang)?;

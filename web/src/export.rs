@@ -51,13 +51,43 @@ pub struct Png {
     pub height: usize,
 }
 
+/// Why no picture was made; [`PngError::message`] says it in the reader's language.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PngError {
+    /// The renderer gave no screenshot within this many frames (it cannot take them).
+    NoPicture(u32),
+    /// The part to capture was not drawn (the view was closed meanwhile).
+    OffScreen,
+    /// The picture has no pixels (width × height).
+    Empty(usize, usize),
+    /// The picture is too large for a PNG (width × height).
+    TooLarge(usize, usize),
+    /// The PNG encoder's own error (its words are the png crate's).
+    Encoder(String),
+}
+
+impl PngError {
+    /// The reason in `lang`, after "PNG export failed:".
+    pub fn message(&self, lang: attlab::i18n::Lang) -> String {
+        use attlab::i18n::{t, t_with};
+        let size = |w: &usize, h: &usize| [("w", (*w).into()), ("h", (*h).into())];
+        match self {
+            Self::NoPicture(n) => t_with(lang, "png-why-no-picture", &[("n", (*n).into())]),
+            Self::OffScreen => t(lang, "png-why-off-screen"),
+            Self::Empty(w, h) => t_with(lang, "png-why-empty", &size(w, h)),
+            Self::TooLarge(w, h) => t_with(lang, "png-why-too-large", &size(w, h)),
+            Self::Encoder(e) => t_with(lang, "png-why-encoder", &[("detail", e.clone().into())]),
+        }
+    }
+}
+
 /// What a capture asks of the frame loop after a frame.
 #[derive(Debug)]
 pub enum Step {
     /// Draw another frame (a repaint has been requested).
     Continue,
     /// The capture is over.
-    Done(Result<Png, String>),
+    Done(Result<Png, PngError>),
 }
 
 /// The screenshot a request delivers, filled in by the renderer's callback.
@@ -128,16 +158,13 @@ impl Capture {
             let Some(image) = image else {
                 *waited += 1;
                 if *waited > MAX_WAIT_FRAMES {
-                    return Step::Done(Err(format!(
-                        "no picture from the renderer after {MAX_WAIT_FRAMES} frames \
-                         (this renderer cannot take screenshots)"
-                    )));
+                    return Step::Done(Err(PngError::NoPicture(MAX_WAIT_FRAMES)));
                 }
                 return Step::Continue;
             };
             self.pending = None;
             let Some(rect) = regions.of(self.target) else {
-                return Step::Done(Err("the part to capture is not on screen".into()));
+                return Step::Done(Err(PngError::OffScreen));
             };
             self.parts.push(crop(&image, rect, ctx.pixels_per_point()));
             return match self.queue.pop_front() {
@@ -211,12 +238,10 @@ pub fn stack(parts: &[ColorImage]) -> ColorImage {
 }
 
 /// `image` as an 8-bit RGBA PNG.
-pub fn encode(image: &ColorImage) -> Result<Png, String> {
+pub fn encode(image: &ColorImage) -> Result<Png, PngError> {
     let [width, height] = image.size;
     if width == 0 || height == 0 {
-        return Err(format!(
-            "nothing to save: the picture is {width}×{height} pixels"
-        ));
+        return Err(PngError::Empty(width, height));
     }
     let rgba: Vec<u8> = image
         .pixels
@@ -225,7 +250,7 @@ pub fn encode(image: &ColorImage) -> Result<Png, String> {
         .collect();
     let mut bytes = Vec::new();
     {
-        let too_big = |_| format!("the picture is too large: {width}×{height} pixels");
+        let too_big = |_| PngError::TooLarge(width, height);
         let mut encoder = png::Encoder::new(
             &mut bytes,
             u32::try_from(width).map_err(too_big)?,
@@ -235,10 +260,10 @@ pub fn encode(image: &ColorImage) -> Result<Png, String> {
         encoder.set_depth(png::BitDepth::Eight);
         let mut writer = encoder
             .write_header()
-            .map_err(|e| format!("PNG header: {e}"))?;
+            .map_err(|e| PngError::Encoder(e.to_string()))?;
         writer
             .write_image_data(&rgba)
-            .map_err(|e| format!("PNG data: {e}"))?;
+            .map_err(|e| PngError::Encoder(e.to_string()))?;
     }
     Ok(Png {
         bytes,
@@ -302,7 +327,8 @@ mod tests {
         assert_eq!((info.width, info.height), (20, 10));
         let at = |x: usize, y: usize| &buf[(y * 20 + x) * 4..(y * 20 + x) * 4 + 4];
         assert_eq!(at(13, 8), &[13, 8, 7, 255]);
-        assert!(encode(&ColorImage::new([0, 0], vec![])).is_err());
+        let empty = encode(&ColorImage::new([0, 0], vec![])).expect_err("no pixels");
+        assert_eq!(empty, PngError::Empty(0, 0));
     }
 
     #[test]
@@ -353,6 +379,14 @@ mod tests {
             }
         }
         let err = outcome.expect("gives up").expect_err("no picture");
-        assert!(err.contains("no picture from the renderer"), "{err}");
+        assert_eq!(err, PngError::NoPicture(MAX_WAIT_FRAMES));
+        // In the reader's language, with the count.
+        use attlab::i18n::Lang;
+        let (en, ru) = (err.message(Lang::En), err.message(Lang::Ru));
+        assert!(
+            en.starts_with("no picture from the renderer after 120 frames"),
+            "{en}"
+        );
+        assert!(ru.contains("120") && ru != en, "{ru}");
     }
 }
