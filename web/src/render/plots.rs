@@ -100,6 +100,7 @@ pub fn show(
         .x_axis_label(words.time_axis.clone())
         .y_axis_label(y_title(rec, &shown, log, words))
         .y_grid_spacer(nice_marks)
+        .y_axis_formatter(tick_label)
         .allow_scroll(false);
     if ui
         .data_mut(|d| d.remove_temp::<bool>(reset_id))
@@ -267,6 +268,19 @@ pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
     out
 }
 
+/// A mark's label with as many decimals as its step needs, so neighbours differ: 359.95
+/// beside 360.00 (egui_plot's own rounds a step of 0.05 to one decimal, and both read
+/// "360.0"), and never "-0".
+pub fn tick_label(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
+    // A step of m × 10ᵉ (m = 1, 2 or 5) needs −e decimals.
+    let decimals = (-(mark.step_size.log10() + 1e-9).floor()).clamp(0.0, 15.0) as usize;
+    let text = format!("{:.*}", decimals, mark.value);
+    match text.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => text,
+    }
+}
+
 /// The least of 1, 2, 5 × 10ⁿ at least `raw`.
 fn nice_step(raw: f64) -> f64 {
     let decade = 10f64.powf(raw.log10().floor());
@@ -420,6 +434,37 @@ mod tests {
         // −7 … 7 (the one lone "0"): −6 … 6 in steps of 2 or 5.
         assert!(labelled(-7.0, 7.0).contains(&0.0));
         assert!(labelled(f64::NAN, 1.0).is_empty());
+    }
+
+    #[test]
+    fn neighbouring_tick_labels_differ_and_zero_has_no_sign() {
+        // Paper 1's angle near 360° on a projector: marks 0.05 apart.
+        for (lo, hi) in [
+            (359.87, 360.01),
+            (-0.37, 0.42),
+            (1.6, 1.72),
+            (-2e-4, 9e-4),
+            (-1.3, 2.9),
+            (3.0, 3e4),
+        ] {
+            let marks = nice_marks(egui_plot::GridInput {
+                bounds: (lo, hi),
+                base_step_size: (hi - lo) / 1000.0,
+            });
+            let texts: Vec<String> = marks.iter().map(|m| tick_label(*m, &(lo..=hi))).collect();
+            for (m, t) in marks.iter().zip(&texts) {
+                let back: f64 = t.parse().expect("a number");
+                assert!(
+                    (back - m.value).abs() < m.step_size * 1e-6,
+                    "{lo}..{hi}: {t}"
+                );
+                assert!(!t.starts_with("-0") || back != 0.0, "{lo}..{hi}: {t}");
+            }
+        }
+        let mark = |value, step_size| egui_plot::GridMark { value, step_size };
+        assert_eq!(tick_label(mark(359.95, 0.05), &(0.0..=1.0)), "359.95");
+        assert_eq!(tick_label(mark(-1e-17, 0.1), &(0.0..=1.0)), "0.0");
+        assert_eq!(tick_label(mark(2500.0, 500.0), &(0.0..=1.0)), "2500");
     }
 
     fn words() -> PlotWords<'static> {
