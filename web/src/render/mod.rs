@@ -12,3 +12,4 @@ pub mod palette;
 pub mod plots;
 pub mod riemann_sphere;
 pub mod single_axis;
+pub mod ticks;

@@ -99,8 +99,8 @@ pub fn show(
     let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
         .y_axis_label(y_title(rec, &shown, log, words))
-        .y_grid_spacer(nice_marks)
-        .y_axis_formatter(tick_label)
+        .y_grid_spacer(super::ticks::nice_marks)
+        .y_axis_formatter(super::ticks::tick_label)
         .allow_scroll(false);
     if ui
         .data_mut(|d| d.remove_temp::<bool>(reset_id))
@@ -240,57 +240,6 @@ fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool, words: &PlotWo
     if log { format!("log10 {title}") } else { title }
 }
 
-/// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
-/// marks whatever its height, with a finer unlabelled grid of a fifth of it.
-pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
-    let (lo, hi) = input.bounds;
-    let span = hi - lo;
-    if !(span.is_finite() && span > 0.0) {
-        return Vec::new();
-    }
-    // The largest round step that still gives three labelled marks.
-    let mut step = nice_step(span / 5.0);
-    while ((hi / step).floor() - (lo / step).ceil()) < 2.0 {
-        step = nice_step(step * 0.99 / 2.5);
-    }
-    let mut out = Vec::new();
-    for (size, limit) in [(step, 12.0), (step / 5.0, 60.0)] {
-        if span / size > limit {
-            continue;
-        }
-        let first = (lo / size).ceil() as i64;
-        let last = (hi / size).floor() as i64;
-        out.extend((first..=last).map(|k| egui_plot::GridMark {
-            value: k as f64 * size,
-            step_size: size,
-        }));
-    }
-    out
-}
-
-/// A mark's label with as many decimals as its step needs, so neighbours differ: 359.95
-/// beside 360.00 (egui_plot's own rounds a step of 0.05 to one decimal, and both read
-/// "360.0"), and never "-0".
-pub fn tick_label(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
-    // A step of m × 10ᵉ (m = 1, 2 or 5) needs −e decimals.
-    let decimals = (-(mark.step_size.log10() + 1e-9).floor()).clamp(0.0, 15.0) as usize;
-    let text = format!("{:.*}", decimals, mark.value);
-    match text.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
-        _ => text,
-    }
-}
-
-/// The least of 1, 2, 5 × 10ⁿ at least `raw`.
-fn nice_step(raw: f64) -> f64 {
-    let decade = 10f64.powf(raw.log10().floor());
-    [1.0, 2.0, 5.0, 10.0]
-        .into_iter()
-        .map(|m| m * decade)
-        .find(|s| *s >= raw * (1.0 - 1e-9))
-        .unwrap_or(10.0 * decade)
-}
-
 /// The series a tab draws with their colours: by source, so an estimator has one colour
 /// everywhere; a figure that shows several series of one source tells them apart by
 /// position.
@@ -399,73 +348,6 @@ pub fn pieces(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn labelled(lo: f64, hi: f64) -> Vec<f64> {
-        let marks = nice_marks(egui_plot::GridInput {
-            bounds: (lo, hi),
-            base_step_size: (hi - lo) / 1000.0,
-        });
-        let biggest = marks.iter().map(|m| m.step_size).fold(0.0, f64::max);
-        marks
-            .iter()
-            .filter(|m| m.step_size == biggest)
-            .map(|m| m.value)
-            .collect()
-    }
-
-    #[test]
-    fn every_axis_gets_at_least_three_labelled_ticks_on_round_numbers() {
-        for (lo, hi) in [
-            (-7.0, 7.0),
-            (0.0, 0.3),
-            (-2e-4, 9e-4),
-            (1.6, 1.72),
-            (3.0, 3e4),
-        ] {
-            let marks = labelled(lo, hi);
-            assert!((3..=12).contains(&marks.len()), "{lo}..{hi}: {marks:?}");
-            let step = marks[1] - marks[0];
-            let mantissa = step / 10f64.powf(step.log10().floor());
-            assert!(
-                [1.0, 2.0, 5.0].iter().any(|m| (mantissa - m).abs() < 1e-6),
-                "{lo}..{hi}: step {step}"
-            );
-        }
-        // −7 … 7 (the one lone "0"): −6 … 6 in steps of 2 or 5.
-        assert!(labelled(-7.0, 7.0).contains(&0.0));
-        assert!(labelled(f64::NAN, 1.0).is_empty());
-    }
-
-    #[test]
-    fn neighbouring_tick_labels_differ_and_zero_has_no_sign() {
-        // Paper 1's angle near 360° on a projector: marks 0.05 apart.
-        for (lo, hi) in [
-            (359.87, 360.01),
-            (-0.37, 0.42),
-            (1.6, 1.72),
-            (-2e-4, 9e-4),
-            (-1.3, 2.9),
-            (3.0, 3e4),
-        ] {
-            let marks = nice_marks(egui_plot::GridInput {
-                bounds: (lo, hi),
-                base_step_size: (hi - lo) / 1000.0,
-            });
-            let texts: Vec<String> = marks.iter().map(|m| tick_label(*m, &(lo..=hi))).collect();
-            for (m, t) in marks.iter().zip(&texts) {
-                let back: f64 = t.parse().expect("a number");
-                assert!(
-                    (back - m.value).abs() < m.step_size * 1e-6,
-                    "{lo}..{hi}: {t}"
-                );
-                assert!(!t.starts_with("-0") || back != 0.0, "{lo}..{hi}: {t}");
-            }
-        }
-        let mark = |value, step_size| egui_plot::GridMark { value, step_size };
-        assert_eq!(tick_label(mark(359.95, 0.05), &(0.0..=1.0)), "359.95");
-        assert_eq!(tick_label(mark(-1e-17, 0.1), &(0.0..=1.0)), "0.0");
-        assert_eq!(tick_label(mark(2500.0, 500.0), &(0.0..=1.0)), "2500");
-    }
 
     fn words() -> PlotWords<'static> {
         PlotWords {
