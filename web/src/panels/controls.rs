@@ -77,20 +77,38 @@ pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command
     let title = |lab: &dyn attlab::model::Lab| {
         i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title())
     };
-    egui::ComboBox::from_label(tr(app, "lab"))
-        .selected_text(title(current))
-        .width(220.0)
-        .show_ui(ui, |ui| {
-            for lab in labs::all() {
-                if ui
-                    .selectable_label(lab.id() == current.id(), title(*lab))
-                    .clicked()
-                    && lab.id() != current.id()
-                {
-                    commands.push(Command::from(RunCommand::SelectLab(*lab)));
-                }
-            }
+    // The picker fills the row left of its label "Lab". Given the label, egui's combo box
+    // grows to the whole row and squeezes the label: in the presenter's narrow panel "Lab"
+    // wrapped letter by letter past the panel's edge, widening every line below it.
+    ui.horizontal(|ui| {
+        let label = tr(app, "lab");
+        let font = egui::TextStyle::Body.resolve(ui.style());
+        let label_width = (ui.painter())
+            .layout_no_wrap(label.clone(), font, egui::Color32::WHITE)
+            .size()
+            .x;
+        let width = (ui.available_width() - label_width - ui.spacing().item_spacing.x).max(80.0);
+        let size = egui::vec2(width, ui.spacing().interact_size.y);
+        let picker = ui.allocate_ui(size, |ui| {
+            egui::ComboBox::from_id_salt("lab-picker")
+                .selected_text(title(current))
+                .wrap()
+                .show_ui(ui, |ui| {
+                    for lab in labs::all() {
+                        if ui
+                            .selectable_label(lab.id() == current.id(), title(*lab))
+                            .clicked()
+                            && lab.id() != current.id()
+                        {
+                            commands.push(Command::from(RunCommand::SelectLab(*lab)));
+                        }
+                    }
+                })
+                .response
         });
+        let label = ui.label(label);
+        picker.inner.labelled_by(label.id);
+    });
     ui.label(RichText::new(current.paper()).small().italics());
 }
 

@@ -13,22 +13,31 @@ use egui::epaint::Shape;
 
 /// The page at a projector's 1280×720 pixels in presenter mode, as `fragment` opens it,
 /// after `steps` steps: 853×480 points at presenter mode's zoom.
-fn projector(fragment: &str, steps: usize) -> Harness<'static, AttLabApp> {
+pub(super) fn projector(fragment: &str, steps: usize) -> Harness<'static, AttLabApp> {
+    window(fragment, steps, (egui::vec2(1280.0, 720.0), PRESENTER_ZOOM))
+}
+
+/// The page in a window of `pixels` at `zoom`, as `fragment` opens it, after `steps` steps.
+pub(super) fn window(
+    fragment: &str,
+    steps: usize,
+    (pixels, zoom): (egui::Vec2, f32),
+) -> Harness<'static, AttLabApp> {
     let mut app = AttLabApp::headless(AppState::from_fragment(fragment));
     app.apply(RunCommand::SetPlaying(false).into());
     for _ in 0..steps {
         app.apply(RunCommand::StepOnce.into());
     }
     let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 720.0))
-        .with_context_setup(|ctx| {
+        .with_size(pixels)
+        .with_context_setup(move |ctx| {
             attlab_web::render::fonts::install(ctx);
-            ctx.set_zoom_factor(PRESENTER_ZOOM);
+            ctx.set_zoom_factor(zoom);
         })
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);
     // As the browser does: the window's size in points at the zoom, every frame from now
     // on (egui rescales the harness's first size by the zoom set before its first frame).
-    h.set_size(egui::vec2(1280.0, 720.0) / PRESENTER_ZOOM);
+    h.set_size(pixels / zoom);
     h.run_steps(2);
     h
 }

@@ -180,9 +180,12 @@ fn the_share_link_round_trips_and_hides_and_locks_what_it_says() {
             .is_none(),
         "hidden slider shown"
     );
-    // In presenter mode the sliders wait behind "All parameters".
-    if let Some(all) = h.query_by_label("All parameters") {
-        all.click();
+    // In presenter mode the sliders wait behind "All parameters" (scrolled to, as a reader
+    // would: the panel is longer than the window).
+    if h.query_by_label("All parameters").is_some() {
+        h.get_by_label("All parameters").scroll_to_me();
+        h.run();
+        h.get_by_label("All parameters").click();
         h.run_steps(6);
     }
     let locked_node = h.get_by_role_and_label(Role::Slider, label(locked));

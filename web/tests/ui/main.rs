@@ -25,6 +25,7 @@ mod png;
 mod refusals;
 mod replay;
 mod shader;
+mod side_panel;
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
