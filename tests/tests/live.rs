@@ -208,3 +208,36 @@ fn a_phone_turns_paper_3s_estimates_on_the_sphere() {
         );
     }
 }
+
+/// A live run of paper 3 records what its sphere and w plane draw, as the simulated lab
+/// does: each filter's vertical in body axes and its w = u + iv (they had been laid out as
+/// a one-axis lab's, an angle each, because a log's truth had an angle). The truth's own
+/// series stay empty: a log has no truth.
+#[test]
+fn a_live_paper_3_run_records_its_filters_on_the_sphere() {
+    let session = phone_session(&UnitQuaternion::identity());
+    let (_, _, live) = run_live_in("p3", &session);
+    assert!(!live.has_truth());
+    let values = |name: &str| {
+        let i = live.recorder().index_of(name);
+        let i = i.unwrap_or_else(|| panic!("p3 live records no `{name}`"));
+        live.recorder().recent_vec(i)
+    };
+    for e in live.estimators() {
+        for q in ["k_x", "k_y", "k_z"] {
+            let v = values(&format!("{}.{q}", e.id()));
+            assert!(v.iter().any(|x| x.is_finite()), "{}.{q}: no value", e.id());
+        }
+    }
+    // The accelerometer-aided filters end rolled 90°: their vertical along body y.
+    let k_y = values("kf-uv.k_y");
+    let last = k_y.iter().rev().find(|x| x.is_finite()).expect("a value");
+    assert!(
+        (last.abs() - 1.0).abs() < 0.05,
+        "kf-uv's k_y at the end: {last}"
+    );
+    for q in ["k_x", "k_y", "k_z", "u", "v"] {
+        let v = values(&format!("truth.{q}"));
+        assert!(v.iter().all(|x| x.is_nan()), "truth.{q} has values");
+    }
+}

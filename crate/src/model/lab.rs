@@ -20,9 +20,9 @@ use rand_chacha::ChaCha8Rng;
 pub struct TruthState {
     /// Simulation time (s).
     pub t_s: f64,
-    /// True attitude.
+    /// True attitude (NaN for a replayed or live log, which has no truth).
     pub q_ref_from_body: UnitQuaternion<f64>,
-    /// True body rate (rad/s).
+    /// True body rate (rad/s; NaN for a log).
     pub rate_body_rad_s: Vector3<f64>,
     /// True angle of a single-axis lab (rad).
     pub angle_rad: Option<f64>,

@@ -39,7 +39,7 @@ impl Simulation {
         let estimate = self.estimates().get(i)?;
         let outputs = estimator.outputs();
         let truth = self.truth();
-        let error_deg = if self.replay_log().is_some() {
+        let error_deg = if !self.has_truth() {
             f64::NAN
         } else if outputs.attitude {
             estimate.quaternion().map_or(f64::NAN, |q| {

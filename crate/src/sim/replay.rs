@@ -7,7 +7,7 @@ use crate::model::{
     SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
 };
 use crate::sensors::RateLog;
-use nalgebra::{UnitQuaternion, Vector3};
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::sync::{Arc, PoisonError, RwLock, RwLockReadGuard};
@@ -86,7 +86,10 @@ impl Simulation {
             .ok_or("the log needs at least two samples with increasing times")?;
         let mut rng = ChaCha8Rng::seed_from_u64(0);
         let mut run = lab.build_for_log(&params, &mut rng);
-        run.truth = Box::new(LogTruth::new(log.clone()));
+        // The lab's own truth says whether it turns about one axis (p1, p4) or three (p3):
+        // a log's series are laid out the same way.
+        let single_axis = run.truth.state().angle_rad.is_some();
+        run.truth = Box::new(LogTruth::new(log.clone(), single_axis));
         run.sensors = Box::new(LogSensor::new(log.clone()));
         let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
         Ok(Self::assemble(
@@ -99,6 +102,11 @@ impl Simulation {
             layout,
             Some(log),
         ))
+    }
+
+    /// Whether the run has a truth: a replayed or live log holds only readings.
+    pub fn has_truth(&self) -> bool {
+        self.replay.is_none()
     }
 
     /// The log being replayed, if this is a replay.
@@ -121,22 +129,26 @@ impl Simulation {
 }
 
 /// "Truth" of a replay: time runs on the log's clock (from one period before its first
-/// sample); the angle and the rate are unknown (the logged rate is the sensors' reading,
-/// with its noise and bias), so every error is missing.
+/// sample); the attitude, the angle and the rate are unknown (the logged rate is the
+/// sensors' reading, with its noise and bias), so every error and every series of the
+/// truth is missing.
 pub struct LogTruth {
     log: SharedLog,
     t_s: f64,
     index: Option<usize>,
+    single_axis: bool,
 }
 
 impl LogTruth {
-    /// Starts one period before the log's first sample.
-    pub fn new(log: SharedLog) -> Self {
+    /// Starts one period before the log's first sample; `single_axis` for a lab that turns
+    /// about one axis (its truth has an angle, unknown here).
+    pub fn new(log: SharedLog, single_axis: bool) -> Self {
         let period_s = log.read().period_s;
         Self {
             t_s: -period_s,
             log,
             index: None,
+            single_axis,
         }
     }
 }
@@ -165,10 +177,15 @@ impl TruthModel for LogTruth {
     fn state(&self) -> TruthState {
         TruthState {
             t_s: self.t_s,
-            q_ref_from_body: UnitQuaternion::identity(),
+            q_ref_from_body: UnitQuaternion::new_unchecked(Quaternion::new(
+                f64::NAN,
+                f64::NAN,
+                f64::NAN,
+                f64::NAN,
+            )),
             // The logged rate is a reading, not the truth: it is the sensors' series.
             rate_body_rad_s: Vector3::repeat(f64::NAN),
-            angle_rad: Some(f64::NAN),
+            angle_rad: self.single_axis.then_some(f64::NAN),
             lab: LabData::default(),
         }
     }

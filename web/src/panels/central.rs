@@ -284,7 +284,10 @@ fn draw_body(
     gpu_ready: bool,
 ) {
     // A replayed or live log has no truth: the estimate is drawn alone, solid.
-    let truth = super::has_truth(app).then(|| app.sim().truth().q_ref_from_body);
+    let truth = app
+        .sim()
+        .has_truth()
+        .then(|| app.sim().truth().q_ref_from_body);
     let ghost_name = super::estimator_name(app, app.view().ghost_index);
     let ghost = app
         .sim()

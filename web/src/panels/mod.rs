@@ -119,15 +119,10 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
     }
 }
 
-/// Whether the run has a truth to draw: a replayed or live log has only readings.
-pub fn has_truth(app: &AppState) -> bool {
-    app.sim().replay_log().is_none()
-}
-
 /// The 3D view's lines on top: what is solid and what is the ghost (labelled `ghost`), or,
 /// for a log, that there is no truth and the estimate is the solid body.
 pub fn body_captions(app: &AppState, ghost: Option<&str>) -> Vec<String> {
-    let (first, ghost_words) = if has_truth(app) {
+    let (first, ghost_words) = if app.sim().has_truth() {
         ("body-truth", "body-ghost")
     } else {
         ("body-no-truth", "body-estimate")

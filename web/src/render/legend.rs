@@ -102,8 +102,9 @@ impl Line {
 }
 
 /// The lines of the legend of `shown` series (index into `rec`, colour), in order: the
-/// series grouped by [`rows`] (those in `no_data` say they have none), then the ±3σ bands where a drawn series has one, then each
-/// outage where they are shaded.
+/// series grouped by [`rows`] (an entry of a series in `no_data` says it has no values),
+/// then the ±3σ bands where a drawn series has one, then each outage where they are
+/// shaded.
 pub fn lines(
     rec: &Recorder,
     shown: &[(usize, Color32)],
@@ -119,17 +120,22 @@ pub fn lines(
             if log {
                 parts.what = format!("log10 {}", parts.what);
             }
-            if no_data.contains(i) {
-                parts.what = format!("{} — {}", parts.what, words.no_data);
-            }
             parts
         })
         .collect();
+    // Grouped first, so an entry without values still stands under its heading; then the
+    // entry says so.
     let mut out: Vec<Line> = rows(&legends)
         .into_iter()
-        .map(|row| {
-            let series = match row {
-                Row::Entry { index, .. } => shown.get(index).copied(),
+        .map(|mut row| {
+            let series = match &mut row {
+                Row::Entry { index, text, .. } => {
+                    let series = shown.get(*index).copied();
+                    if series.is_some_and(|(i, _)| no_data.contains(&i)) {
+                        *text = format!("{text} — {}", words.no_data);
+                    }
+                    series
+                }
                 Row::Heading(_) => None,
             };
             Line::Series(row, series)

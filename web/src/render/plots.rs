@@ -90,7 +90,7 @@ pub fn show(
     let (tab, log, shown) = selection(rec, figures, state, hidden, colours);
     let full = ui.available_rect_before_wrap();
     // The legend never covers data: beside a wide plot, below a narrow one.
-    let (points, no_data) = points(rec, &shown);
+    let (points, no_data) = points(rec, &shown, log);
     let lines = super::legend::lines(rec, &shown, (log, state), outages, words, &no_data);
     let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
@@ -172,8 +172,14 @@ pub fn selection(
 }
 
 /// The plot points of each of `shown` series (read once a frame, for the legend and the
-/// lines), and which series have no value anywhere in the run (the legend says so).
-pub fn points(rec: &Recorder, shown: &[(usize, Color32)]) -> (Vec<Vec<[f64; 2]>>, Vec<usize>) {
+/// lines), and which series have no value anywhere in the run that the plot can draw
+/// (none positive on a `log` plot): the legend says so.
+pub fn points(
+    rec: &Recorder,
+    shown: &[(usize, Color32)],
+    log: bool,
+) -> (Vec<Vec<[f64; 2]>>, Vec<usize>) {
+    let drawable = |y: f64| y.is_finite() && (!log || y > 0.0);
     let points: Vec<Vec<[f64; 2]>> = shown
         .iter()
         .map(|(i, _)| rec.plot_points(*i, MAX_POINTS))
@@ -181,7 +187,7 @@ pub fn points(rec: &Recorder, shown: &[(usize, Color32)]) -> (Vec<Vec<[f64; 2]>>
     let no_data = shown
         .iter()
         .zip(&points)
-        .filter(|(_, pts)| !pts.iter().any(|p| p[1].is_finite()))
+        .filter(|(_, pts)| !pts.iter().any(|p| drawable(p[1])))
         .map(|((i, _), _)| *i)
         .collect();
     (points, no_data)

@@ -67,7 +67,7 @@ pub(super) fn legend_texts(app: &AppState) -> Vec<String> {
         plots::selection(sim.recorder(), figures, plot, &app.view().hidden, colours);
     let words = panels::plot_words(app);
     let outages = panels::outages(app);
-    let (_, no_data) = plots::points(sim.recorder(), &shown);
+    let (_, no_data) = plots::points(sim.recorder(), &shown, log);
     legend::lines(
         sim.recorder(),
         &shown,

@@ -275,7 +275,7 @@ fn a_replays_legend_says_which_series_have_no_values() {
     assert!(series.iter().all(|t| t.ends_with(NONE)), "{texts:#?}");
     // The 3D view draws the estimate alone, solid, and says why.
     let app = &h.state().state;
-    assert!(!attlab_web::panels::has_truth(app));
+    assert!(!app.sim().has_truth());
     assert_eq!(
         attlab_web::panels::body_captions(app, Some("KF")),
         [
@@ -283,4 +283,33 @@ fn a_replays_legend_says_which_series_have_no_values() {
             "estimate (solid): KF"
         ]
     );
+}
+
+/// Paper 1's replay: its angle figure's owners share one measure, so they stand under it,
+/// the truth among them saying it has no values (the marker does not break the group).
+#[test]
+fn a_replays_truth_without_values_stays_in_its_group() {
+    let mut h = replay_example(
+        "p1",
+        "Laboratory mode: recorded gyro log",
+        "6001 samples of 6001 lines",
+        "0 rejected",
+    );
+    for _ in 0..50 {
+        h.state_mut().apply(RunCommand::StepOnce.into());
+    }
+    h.run_steps(2);
+    let texts = super::legend::legend_texts(&h.state().state);
+    assert_eq!(
+        texts.first().map(String::as_str),
+        Some("angle [°]"),
+        "{texts:#?}"
+    );
+    assert_eq!(
+        texts.get(1).map(String::as_str),
+        Some("Truth — no values recorded"),
+        "{texts:#?}"
+    );
+    let marked = texts.iter().filter(|t| t.contains("no values")).count();
+    assert_eq!(marked, 1, "{texts:#?}");
 }
