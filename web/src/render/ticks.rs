@@ -2,7 +2,9 @@
 //! labelled marks, and labels with the decimals their step needs.
 
 /// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
-/// marks whatever its height, with a finer unlabelled grid of a fifth of it.
+/// marks whatever its height, with a finer grid of a fifth of it between them (one mark
+/// per value: egui_plot labels a fine mark too where there is room, and a fine mark on a
+/// coarse one would draw a second label, "1.0" over "1").
 pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
     let (lo, hi) = input.bounds;
     let span = hi - lo;
@@ -15,16 +17,23 @@ pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
         step = nice_step(step * 0.99 / 2.5);
     }
     let mut out = Vec::new();
-    for (size, limit) in [(step, 12.0), (step / 5.0, 60.0)] {
+    let mut coarse = false;
+    for (size, limit, fine) in [(step, 12.0, false), (step / 5.0, 60.0, true)] {
         if span / size > limit {
             continue;
         }
         let first = (lo / size).ceil() as i64;
         let last = (hi / size).floor() as i64;
-        out.extend((first..=last).map(|k| egui_plot::GridMark {
-            value: k as f64 * size,
-            step_size: size,
-        }));
+        let on_coarse = |k: &i64| fine && coarse && k % 5 == 0;
+        out.extend(
+            (first..=last)
+                .filter(|k| !on_coarse(k))
+                .map(|k| egui_plot::GridMark {
+                    value: k as f64 * size,
+                    step_size: size,
+                }),
+        );
+        coarse |= !fine;
     }
     out
 }
@@ -102,6 +111,9 @@ mod tests {
             (-2e-4, 9e-4),
             (-1.3, 2.9),
             (3.0, 3e4),
+            (-3e-7, 4e-7),
+            (-2e6, 7e6),
+            (0.0, 10.0),
         ] {
             let marks = nice_marks(egui_plot::GridInput {
                 bounds: (lo, hi),
@@ -115,6 +127,13 @@ mod tests {
                     "{lo}..{hi}: {t}"
                 );
                 assert!(!t.starts_with("-0") || back != 0.0, "{lo}..{hi}: {t}");
+            }
+            // One mark per value, so no label is drawn twice in two forms.
+            for (i, a) in marks.iter().enumerate() {
+                let twice = marks[i + 1..]
+                    .iter()
+                    .any(|b| (a.value - b.value).abs() < 1e-9 * a.step_size.max(b.step_size));
+                assert!(!twice, "{lo}..{hi}: {} twice in {marks:?}", a.value);
             }
         }
         let mark = |value, step_size| egui_plot::GridMark { value, step_size };
