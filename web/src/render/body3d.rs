@@ -1,5 +1,6 @@
 //! The 3D body view: a wgpu paint callback drawing the truth body and the estimate as a
-//! translucent ghost beside it, with a mouse-orbit camera.
+//! translucent ghost beside it (a log, which has no truth: the estimate alone, solid),
+//! with a mouse-orbit camera.
 
 use super::mesh::{
     Triangle, Vertex, body_mesh, hex_prism_mesh, place, rod, sorted_vertices, string_mesh,
@@ -260,7 +261,8 @@ impl egui_wgpu::CallbackTrait for Body3dCallback {
 pub struct Scene<'a> {
     /// True attitude, where the run has one (not a log's).
     pub truth: Option<UnitQuaternion<f64>>,
-    /// Estimated attitude (ghost) and its label, if the lab's estimator has one.
+    /// Estimated attitude and its label, if the lab's estimator has one: a ghost beside
+    /// the truth, or solid where there is no truth.
     pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
     /// The body hangs on a string from above (paper 1).
     pub suspended: bool,
@@ -336,9 +338,7 @@ pub fn show(ui: &mut Ui, rect: Rect, camera: &mut OrbitCamera, scene: &Scene<'_>
             );
         }
     }
-    let (caption_rects, hint_rect) = captions(&painter, rect, scene);
-    // The inset sits above the hint and above the view's PNG button in the same corner.
-    let below = hint_rect.union(png_button_rect(rect));
+    let (caption_rects, below) = captions(&painter, rect, scene);
     if let Some(orbit) = &scene.orbit
         && let Some(area) = super::orbit_inset::area(rect, &caption_rects, below)
     {
@@ -437,7 +437,8 @@ fn uniforms(vp: &Matrix4<f64>) -> Uniforms {
 }
 
 /// What is solid and what is the ghost (on top), and how to move the camera (at the
-/// bottom); returns where they were drawn (the top lines, the bottom text).
+/// bottom); returns where the top lines were drawn and what the orbit inset must stay
+/// above (the hint, and the view's PNG button in the same corner).
 fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) -> (Vec<Rect>, Rect) {
     let font = egui::FontId::proportional(13.0);
     let colours = super::palette::of_ctx(painter.ctx());
@@ -465,16 +466,16 @@ fn captions(painter: &egui::Painter, rect: Rect, scene: &Scene<'_>) -> (Vec<Rect
         wrap,
     );
     let at = rect.left_bottom() + egui::vec2(8.0, -6.0 - hint.size().y);
-    let hint_rect = Rect::from_min_size(at, hint.size());
+    let below = Rect::from_min_size(at, hint.size()).union(png_button_rect(rect));
     painter.galley(at, hint, colours.ink_dim);
     let (mut galleys, mut top) = lay(wrap);
-    if scene.orbit.is_some() && !super::orbit_inset::keeps_its_size(rect, &top, hint_rect) {
+    if scene.orbit.is_some() && !super::orbit_inset::keeps_its_size(rect, &top, below) {
         (galleys, top) = lay(wrap - super::orbit_inset::column(rect));
     }
     for (galley, laid) in galleys.into_iter().zip(&top) {
         painter.galley(laid.min, galley, colours.ink);
     }
-    (top, hint_rect)
+    (top, below)
 }
 
 /// `p` (world) on the screen, if it is in front of the camera.
