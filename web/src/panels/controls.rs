@@ -92,6 +92,7 @@ pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command
         let picker = ui.allocate_ui(size, |ui| {
             egui::ComboBox::from_id_salt("lab-picker")
                 .selected_text(title(current))
+                .width(width)
                 .wrap()
                 .show_ui(ui, |ui| {
                     for lab in labs::all() {
