@@ -311,7 +311,10 @@ msg-preset-waits = preset { $name }: some values apply at Reset
 msg-png-lab-changed = PNG export stopped: the lab changed
 msg-png-busy = a PNG is being made already: one at a time
 msg-png-failed = PNG export failed: { $why }
-png-why-no-picture = no picture from the renderer after { $n } frames (this renderer cannot take screenshots)
+png-why-no-picture = no picture from the renderer after { $n ->
+    [one] { $n } frame
+   *[other] { $n } frames
+} (this renderer cannot take screenshots)
 png-why-off-screen = the part to capture is not on screen
 png-why-empty = nothing to save: the picture is { $w }×{ $h } pixels
 png-why-too-large = the picture is too large: { $w }×{ $h } pixels

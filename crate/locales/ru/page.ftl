@@ -320,12 +320,16 @@ msg-preset-applied = набор «{ $name }» применён
 msg-preset-waits = набор «{ $name }»: часть значений вступит в силу при сбросе
 msg-png-lab-changed = выгрузка PNG остановлена: сменилась работа
 msg-png-busy = PNG уже делается: по одному за раз
-png-why-no-picture = отрисовщик не дал снимка за { $n } кадров (этот отрисовщик не умеет делать снимки)
+msg-png-failed = выгрузка PNG не удалась: { $why }
+png-why-no-picture = отрисовщик не дал снимка за { $n ->
+    [one] { $n } кадр
+    [few] { $n } кадра
+   *[many] { $n } кадров
+} (этот отрисовщик не умеет делать снимки)
 png-why-off-screen = снимаемой части нет на экране
 png-why-empty = нечего сохранять: снимок { $w }×{ $h } пикселей
 png-why-too-large = снимок слишком велик: { $w }×{ $h } пикселей
 png-why-encoder = кодировщик PNG: { $detail }
-msg-png-failed = выгрузка PNG не удалась: { $why }
 saved-downloaded = { $name } скачан
 saved-written = сохранено: { $path }
 saved-cancelled = сохранение отменено

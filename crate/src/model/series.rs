@@ -24,7 +24,7 @@ pub enum SeriesGroup {
 }
 
 impl SeriesGroup {
-    /// Every group, in the order of the plot tabs.
+    /// Every group, in the order declared (a test checks each has its words).
     pub const ALL: [Self; 8] = [
         Self::Time,
         Self::Attitude,
