@@ -69,6 +69,15 @@ fn run_live(session: &[(usize, String)]) -> (Vec<Vec<f64>>, String, Simulation) 
 }
 
 fn run_live_in(lab: &str, session: &[(usize, String)]) -> (Vec<Vec<f64>>, String, Simulation) {
+    run_live_with(lab, session, options())
+}
+
+/// [`run_live_in`] recording what `options` select.
+fn run_live_with(
+    lab: &str,
+    session: &[(usize, String)],
+    options: SimOptions,
+) -> (Vec<Vec<f64>>, String, Simulation) {
     let lab = attlab_tests::lab(lab);
     let params = ParamValues::defaults(lab.params());
     let mut stream = LiveStream::new(PHONE_SCALES);
@@ -85,7 +94,7 @@ fn run_live_in(lab: &str, session: &[(usize, String)]) -> (Vec<Vec<f64>>, String
         }
         log.append(&stream.take_new());
         if sim.is_none() && log.read().t_s.len() >= 2 {
-            let s = Simulation::live(lab, params.clone(), log.clone(), options()).unwrap();
+            let s = Simulation::live(lab, params.clone(), log.clone(), options.clone()).unwrap();
             rows.push(s.last_row().to_vec());
             sim = Some(s);
         }
@@ -212,32 +221,54 @@ fn a_phone_turns_paper_3s_estimates_on_the_sphere() {
 /// A live run of paper 3 records what its sphere and w plane draw, as the simulated lab
 /// does: each filter's vertical in body axes and its w = u + iv (they had been laid out as
 /// a one-axis lab's, an angle each, because a log's truth had an angle). The truth's own
-/// series stay empty: a log has no truth.
+/// series and every error stay empty: a log has no truth (a NaN truth once gave the
+/// full-attitude filters an error of exactly 0°).
 #[test]
 fn a_live_paper_3_run_records_its_filters_on_the_sphere() {
     let session = phone_session(&UnitQuaternion::identity());
-    let (_, _, live) = run_live_in("p3", &session);
-    assert!(!live.has_truth());
-    let values = |name: &str| {
-        let i = live.recorder().index_of(name);
-        let i = i.unwrap_or_else(|| panic!("p3 live records no `{name}`"));
-        live.recorder().recent_vec(i)
-    };
-    for e in live.estimators() {
-        for q in ["k_x", "k_y", "k_z"] {
-            let v = values(&format!("{}.{q}", e.id()));
-            assert!(v.iter().any(|x| x.is_finite()), "{}.{q}: no value", e.id());
+    // Every series, and what the page records by default.
+    for options in [options(), SimOptions::default()] {
+        let (_, _, live) = run_live_with("p3", &session, options);
+        assert!(!live.has_truth());
+        let values = |name: &str| {
+            let i = live.recorder().index_of(name);
+            let i = i.unwrap_or_else(|| panic!("p3 live records no `{name}`"));
+            live.recorder().recent_vec(i)
+        };
+        for e in live.estimators() {
+            for q in ["k_x", "k_y", "k_z", "u", "v"] {
+                let v = values(&format!("{}.{q}", e.id()));
+                assert!(v.iter().any(|x| x.is_finite()), "{}.{q}: no value", e.id());
+            }
         }
-    }
-    // The accelerometer-aided filters end rolled 90°: their vertical along body y.
-    let k_y = values("kf-uv.k_y");
-    let last = k_y.iter().rev().find(|x| x.is_finite()).expect("a value");
-    assert!(
-        (last.abs() - 1.0).abs() < 0.05,
-        "kf-uv's k_y at the end: {last}"
-    );
-    for q in ["k_x", "k_y", "k_z", "u", "v"] {
-        let v = values(&format!("truth.{q}"));
-        assert!(v.iter().all(|x| x.is_nan()), "truth.{q} has values");
+        // Every error, the full-attitude filters' err_deg among them, is empty.
+        let rec = live.recorder();
+        let errors: Vec<usize> = (0..rec.specs().len())
+            .filter(|i| rec.specs()[*i].group == attlab::model::SeriesGroup::Error)
+            .collect();
+        for name in ["uvz-rk4.err_deg", "quat-rk4.err_deg"] {
+            assert!(
+                errors.iter().any(|i| rec.specs()[*i].name == name),
+                "no {name}"
+            );
+        }
+        for i in errors {
+            let v = rec.recent_vec(i);
+            assert!(
+                v.iter().all(|x| x.is_nan()),
+                "{} has values",
+                rec.specs()[i].name
+            );
+        }
+        // The accelerometer-aided filters end rolled +90°: their vertical along body +y.
+        for id in ["accel", "blend", "kf-uv"] {
+            let k_y = values(&format!("{id}.k_y"));
+            let last = k_y.iter().rev().find(|x| x.is_finite()).expect("a value");
+            assert!((last - 1.0).abs() < 0.01, "{id}'s k_y at the end: {last}");
+        }
+        for q in ["k_x", "k_y", "k_z", "u", "v"] {
+            let v = values(&format!("truth.{q}"));
+            assert!(v.iter().all(|x| x.is_nan()), "truth.{q} has values");
+        }
     }
 }

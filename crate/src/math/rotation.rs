@@ -111,20 +111,28 @@ pub fn rotation_angle_between(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>) 
 
 /// Small-angle attitude error in body axes (rad): the rotation vector of
 /// `q_true⁻¹ ⊗ q_estimate`, i.e. how far the estimate is turned, seen from the true body.
+/// NaN when either attitude is not finite (a log's unknown truth, a filter gone to NaN):
+/// nalgebra's rotation vector of a NaN quaternion is zero, which would read as no error.
 ///
 /// ```
 /// # use attlab::math::small_angle_error_body;
-/// # use nalgebra::{UnitQuaternion, Vector3};
+/// # use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 /// # use approx::assert_relative_eq;
 /// let truth = UnitQuaternion::from_euler_angles(0.3, 0.1, -0.5);
 /// let est = truth * UnitQuaternion::from_scaled_axis(Vector3::new(0.01, -0.02, 0.0));
 /// let e = small_angle_error_body(&truth, &est);
 /// assert_relative_eq!(e, Vector3::new(0.01, -0.02, 0.0), epsilon = 1e-12);
+/// let unknown = UnitQuaternion::new_unchecked(Quaternion::new(f64::NAN, 0.0, 0.0, 0.0));
+/// assert!(small_angle_error_body(&unknown, &est).iter().all(|c| c.is_nan()));
 /// ```
 pub fn small_angle_error_body(
     q_true_ref_from_body: &UnitQuaternion<f64>,
     q_est_ref_from_body: &UnitQuaternion<f64>,
 ) -> Vector3<f64> {
+    let finite = |q: &UnitQuaternion<f64>| q.coords.iter().all(|c| c.is_finite());
+    if !(finite(q_true_ref_from_body) && finite(q_est_ref_from_body)) {
+        return Vector3::repeat(f64::NAN);
+    }
     (q_true_ref_from_body.inverse() * q_est_ref_from_body).scaled_axis()
 }
 
