@@ -79,6 +79,7 @@ axis-covariance = covariance
 axis-innovation = innovation
 bands-legend = ±3σ of the filter's own covariance
 legend-no-data = no values recorded
+legend-no-positive = no values above 0 to draw on a log scale
 
 ## The views
 view-body3d = 3D body

@@ -78,6 +78,7 @@ axis-covariance = ковариация
 axis-innovation = невязка
 bands-legend = ±3σ по собственной ковариации фильтра
 legend-no-data = значений не записано
+legend-no-positive = нет значений больше 0 для логарифмической шкалы
 
 ## Виды
 view-body3d = Тело в 3D

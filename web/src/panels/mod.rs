@@ -114,6 +114,7 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         group_axis: Box::new(move |group| group.axis_message().map(|id| tr(app, id))),
         bands: tr(app, "bands-legend"),
         no_data: tr(app, "legend-no-data"),
+        no_positive: tr(app, "legend-no-positive"),
         reset: tr(app, "plot-reset-hint"),
         outages: outage_words,
     }

@@ -132,7 +132,12 @@ pub fn lines(
                 Row::Entry { index, text, .. } => {
                     let series = shown.get(*index).copied();
                     if series.is_some_and(|(i, _)| no_data.contains(&i)) {
-                        *text = format!("{text} — {}", words.no_data);
+                        let none = if log {
+                            &words.no_positive
+                        } else {
+                            &words.no_data
+                        };
+                        *text = format!("{text} — {none}");
                     }
                     series
                 }

@@ -67,6 +67,8 @@ pub struct PlotWords<'a> {
     /// After a legend entry whose series has no value anywhere in the run so far ("no values
     /// recorded"): the truth of a live or replayed run, the errors it cannot have.
     pub no_data: String,
+    /// The same on a log plot, where only values above 0 can be drawn.
+    pub no_positive: String,
     /// The lab's outages' labels, by position.
     pub outages: Vec<String>,
     /// The reset button's hint.
@@ -363,6 +365,7 @@ mod tests {
             group_axis: Box::new(|g| g.axis_message().map(str::to_string)),
             bands: String::new(),
             no_data: String::new(),
+            no_positive: String::new(),
             outages: Vec::new(),
             reset: String::new(),
         }
