@@ -104,6 +104,9 @@ chart-s = chart s = 1/w (upside down): { $ids }
 dial-title = Angle on a dial (0° up)
 
 ## The status line
+job-reselect = Re-running the simulation for this plot
+job-export-csv = Exporting every sample as CSV
+job-progress = { $what } · { $percent } %
 job-holds = the simulation holds meanwhile
 stop = Stop
 status-short = t = { $t } s · ×{ $realtime } real time (×{ $asked } asked)

@@ -104,6 +104,9 @@ chart-s = карта s = 1/w (вверх дном): { $ids }
 dial-title = Угол на шкале (0° вверх)
 
 ## Строка состояния
+job-reselect = Повторный прогон моделирования для этого графика
+job-export-csv = Выгрузка всех отсчётов в CSV
+job-progress = { $what } · { $percent } %
 job-holds = моделирование пока стоит
 stop = Стоп
 status-short = t = { $t } с · ×{ $realtime } реального времени (задано ×{ $asked })

@@ -169,10 +169,19 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
         if let Some(job) = app.run().job() {
             ui.horizontal(|ui| {
                 let done = job.progress();
+                let percent = format!("{:.0}", 100.0 * done);
+                let text = tr_with(
+                    app,
+                    "job-progress",
+                    &[
+                        ("what", arg(tr(app, job.title_id()))),
+                        ("percent", arg(percent)),
+                    ],
+                );
                 ui.add(
                     egui::ProgressBar::new(done as f32)
                         .desired_width(220.0)
-                        .text(format!("{} · {:.0} %", job.title(), 100.0 * done)),
+                        .text(text),
                 );
                 ui.label(tr(app, "job-holds"));
                 if ui.small_button(tr(app, "stop")).clicked() {

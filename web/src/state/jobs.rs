@@ -27,11 +27,11 @@ pub struct Job {
 }
 
 impl Job {
-    /// What the job is doing, for the progress line.
-    pub fn title(&self) -> &'static str {
+    /// The catalogue's message for what the job is doing, for the progress line.
+    pub fn title_id(&self) -> &'static str {
         match self.purpose {
-            Purpose::Reselect => "Re-running the simulation for this plot",
-            Purpose::ExportCsv { .. } => "Exporting every sample as CSV",
+            Purpose::Reselect => "job-reselect",
+            Purpose::ExportCsv { .. } => "job-export-csv",
         }
     }
 

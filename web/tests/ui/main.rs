@@ -26,6 +26,7 @@ mod refusals;
 mod replay;
 mod shader;
 mod side_panel;
+mod status;
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
