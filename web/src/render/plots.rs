@@ -101,6 +101,8 @@ pub fn show(
     let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
         .y_axis_label(y_title(rec, &shown, log, words))
+        .x_grid_spacer(super::ticks::nice_marks)
+        .x_axis_formatter(super::ticks::tick_label)
         .y_grid_spacer(super::ticks::nice_marks)
         .y_axis_formatter(super::ticks::tick_label)
         .allow_scroll(false);

@@ -1,5 +1,6 @@
-//! The y axis' marks: round steps (1, 2 or 5 × 10ⁿ) that give every axis at least three
-//! labelled marks, and labels with the decimals their step needs.
+//! A plot's marks on both axes: round steps (1, 2 or 5 × 10ⁿ) that give every axis at
+//! least three labelled marks, and labels with the decimals their step needs. (egui_plot's
+//! own marks are powers of ten: a run of 600 s had one labelled mark on its time axis, "0".)
 
 /// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
 /// marks whatever its height, with a finer grid of a fifth of it between them (one mark

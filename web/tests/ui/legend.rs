@@ -43,7 +43,7 @@ pub(super) fn window(
 }
 
 /// Presenter mode's zoom (`AttLabApp::set_zoom_and_theme`).
-const PRESENTER_ZOOM: f32 = 1.5;
+pub(super) const PRESENTER_ZOOM: f32 = 1.5;
 
 /// Shows `tab`, its series re-run where they were not recorded.
 pub(super) fn select(h: &mut Harness<'_, AttLabApp>, tab: PlotTab) {

@@ -13,6 +13,7 @@ use egui_kittest::kittest::{NodeT, Queryable};
 
 mod a11y;
 mod accuracy;
+mod axes;
 mod body3d;
 mod clock;
 mod fill;
