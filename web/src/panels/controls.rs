@@ -53,7 +53,7 @@ pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             Some(step) => super::sliders::slider_rows(ui, app, commands, Some(step.highlight)),
             None => presets(ui, app, commands),
         }
-        egui::CollapsingHeader::new(tr(app, "all-parameters"))
+        super::fit::header(ui, tr(app, "all-parameters"))
             .default_open(false)
             .show(ui, |ui| parameters(ui, app, commands));
         super::lab_tools::accuracy(ui, app, commands);
@@ -77,38 +77,21 @@ pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command
     let title = |lab: &dyn attlab::model::Lab| {
         i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title())
     };
-    // The picker fills the row left of its label "Lab". Given the label, egui's combo box
-    // grows to the whole row and squeezes the label: in the presenter's narrow panel "Lab"
-    // wrapped letter by letter past the panel's edge, widening every line below it.
-    ui.horizontal(|ui| {
-        let label = tr(app, "lab");
-        let font = egui::TextStyle::Body.resolve(ui.style());
-        let label_width = (ui.painter())
-            .layout_no_wrap(label.clone(), font, egui::Color32::WHITE)
-            .size()
-            .x;
-        let width = (ui.available_width() - label_width - ui.spacing().item_spacing.x).max(80.0);
-        let size = egui::vec2(width, ui.spacing().interact_size.y);
-        let picker = ui.allocate_ui(size, |ui| {
-            egui::ComboBox::from_id_salt("lab-picker")
-                .selected_text(title(current))
-                .width(width)
-                .wrap()
-                .show_ui(ui, |ui| {
-                    for lab in labs::all() {
-                        if ui
-                            .selectable_label(lab.id() == current.id(), title(*lab))
-                            .clicked()
-                            && lab.id() != current.id()
-                        {
-                            commands.push(Command::from(RunCommand::SelectLab(*lab)));
-                        }
+    let combo = egui::ComboBox::from_id_salt("lab-picker").selected_text(title(current));
+    super::fit::labelled(ui, tr(app, "lab"), combo, |combo, ui| {
+        combo
+            .show_ui(ui, |ui| {
+                for lab in labs::all() {
+                    if ui
+                        .selectable_label(lab.id() == current.id(), title(*lab))
+                        .clicked()
+                        && lab.id() != current.id()
+                    {
+                        commands.push(Command::from(RunCommand::SelectLab(*lab)));
                     }
-                })
-                .response
-        });
-        let label = ui.label(label);
-        picker.inner.labelled_by(label.id);
+                }
+            })
+            .response
     });
     ui.label(RichText::new(current.paper()).small().italics());
 }
@@ -311,15 +294,15 @@ pub(super) fn param_widget(
             } else {
                 "?".into()
             };
-            let r = egui::ComboBox::from_label(label)
-                .selected_text(selected)
-                .show_index(ui, &mut index, options.len(), option);
+            let combo = egui::ComboBox::from_id_salt(("param", spec.key)).selected_text(selected);
+            let r = super::fit::labelled(ui, label, combo, |combo, ui| {
+                combo.show_index(ui, &mut index, options.len(), option)
+            });
             v = index as f64;
             r
         }
         ParamKind::Real | ParamKind::Integer => {
             let mut slider = egui::Slider::new(&mut v, spec.min..=spec.max)
-                .text(label)
                 .logarithmic(spec.scale == Scale::Log && spec.min > 0.0);
             if spec.scale == Scale::Log && spec.min == 0.0 {
                 slider = slider.logarithmic(true).smallest_positive(1e-4);
@@ -330,7 +313,7 @@ pub(super) fn param_widget(
             if spec.kind == ParamKind::Integer {
                 slider = slider.integer();
             }
-            let r = ui.add(slider);
+            let r = super::fit::slider(ui, slider, label, spec.unit);
             // A screen reader reads the value with its unit ("0.02 °/s").
             let text = format!("{} {}", crate::a11y::tidy(v), spec.unit);
             ui.ctx()
@@ -359,34 +342,9 @@ fn spec_option(spec: &ParamSpec, i: usize) -> &'static str {
 }
 
 fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let with_attitude: Vec<(usize, String)> = app
-        .sim()
-        .estimators()
-        .iter()
-        .zip(app.sim().estimates())
-        .enumerate()
-        .filter(|(_, (_, est))| est.quaternion().is_some())
-        .map(|(i, _)| (i, super::estimator_name(app, i)))
-        .collect();
-    if !with_attitude.is_empty() {
-        let current = with_attitude
-            .iter()
-            .find(|(i, _)| *i == app.view().ghost_index)
-            .map_or("—", |x| &x.1[..]);
-        egui::ComboBox::from_label(tr(app, "ghost"))
-            .selected_text(current)
-            .show_ui(ui, |ui| {
-                for (i, label) in &with_attitude {
-                    if ui
-                        .selectable_label(*i == app.view().ghost_index, &label[..])
-                        .clicked()
-                    {
-                        commands.push(Command::from(ViewCommand::SetGhost(*i)));
-                    }
-                }
-            });
-    }
-    ui.horizontal(|ui| {
+    ghost_picker(ui, app, commands);
+    // Wrapped: on a phone's sheet the five buttons ran past the screen's edge.
+    ui.horizontal_wrapped(|ui| {
         if ui
             .button(tr(app, "export-csv"))
             .on_hover_text(tr(app, "export-csv-hint"))
@@ -436,6 +394,40 @@ fn outputs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     }
 }
 
+/// The estimator drawn as the ghost beside the truth, of those with an attitude.
+fn ghost_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let with_attitude: Vec<(usize, String)> = app
+        .sim()
+        .estimators()
+        .iter()
+        .zip(app.sim().estimates())
+        .enumerate()
+        .filter(|(_, (_, est))| est.quaternion().is_some())
+        .map(|(i, _)| (i, super::estimator_name(app, i)))
+        .collect();
+    if !with_attitude.is_empty() {
+        let current = with_attitude
+            .iter()
+            .find(|(i, _)| *i == app.view().ghost_index)
+            .map_or("—", |x| &x.1[..]);
+        let combo = egui::ComboBox::from_id_salt("ghost").selected_text(current);
+        super::fit::labelled(ui, tr(app, "ghost"), combo, |combo, ui| {
+            combo
+                .show_ui(ui, |ui| {
+                    for (i, label) in &with_attitude {
+                        if ui
+                            .selectable_label(*i == app.view().ghost_index, &label[..])
+                            .clicked()
+                        {
+                            commands.push(Command::from(ViewCommand::SetGhost(*i)));
+                        }
+                    }
+                })
+                .response
+        });
+    }
+}
+
 fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     for (i, m) in app.messages().iter().enumerate() {
         ui.horizontal_wrapped(|ui| {
@@ -454,7 +446,7 @@ fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 }
 
 fn explanation(ui: &mut Ui, app: &AppState) {
-    egui::CollapsingHeader::new(tr(app, "what-am-i-looking-at"))
+    super::fit::header(ui, tr(app, "what-am-i-looking-at"))
         .default_open(false)
         .show(ui, |ui| {
             let lab = app.sim().lab();

@@ -25,7 +25,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     };
     let paper = |x: Option<f64>| x.map_or_else(|| "—".into(), |v| format!("{v:e}"));
     let title = lab_word(app, &i18n::accuracy_title_id(app.sim().lab().id()), title);
-    egui::CollapsingHeader::new(title)
+    super::fit::header(ui, title)
         .default_open(true)
         .show(ui, |ui| {
             let covered = app.sim().t_s().min(window_s);
@@ -203,7 +203,7 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
     };
     let lab = app.sim().lab().id();
     let word = |part: &str, english: &str| lab_word(app, &i18n::log_format_id(lab, part), english);
-    egui::CollapsingHeader::new(word("title", format.title))
+    super::fit::header(ui, word("title", format.title))
         .default_open(false)
         .show(ui, |ui| {
             ui.label(word("help", format.help));

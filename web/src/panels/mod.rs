@@ -5,6 +5,7 @@
 mod central;
 mod controls;
 mod cycle;
+mod fit;
 mod keys;
 mod lab_tools;
 mod lesson;

@@ -80,7 +80,7 @@ fn choices(ui: &mut Ui, app: &AppState, o: &ShareOptions, commands: &mut Vec<Com
 
 /// Hide and lock: every control at once, or one by one.
 fn controls(ui: &mut Ui, app: &AppState, o: &ShareOptions, commands: &mut Vec<Command>) {
-    egui::CollapsingHeader::new(tr(app, "share-controls"))
+    super::fit::header(ui, tr(app, "share-controls"))
         .default_open(!o.hide.is_empty() || !o.lock.is_empty())
         .show(ui, |ui| {
             egui::ScrollArea::vertical()

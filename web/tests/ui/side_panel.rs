@@ -1,17 +1,22 @@
-//! The side panel on a projector (presenter mode, 1280×720) and on a laptop (1366×768):
-//! nothing in it is cut at its right edge, in English and in Russian.
+//! The side panel on a projector (presenter mode, 1280 pixels wide at its zoom) and on a
+//! laptop (1366 wide), and the controls' sheet on a phone (390 wide): nothing in them is
+//! cut at their right edge, in English and in Russian, with every parameter shown.
 
-use super::legend::{projector, window};
+use super::legend::{PRESENTER_ZOOM, window};
 use attlab::i18n::Lang;
 use attlab::labs;
+use attlab_web::state::ViewCommand;
 use egui::epaint::Shape;
+use egui_kittest::kittest::Queryable;
 
-/// Texts painted across the right edge of the side panel (the clip the lab picker's label
-/// "Lab" is painted in); fails when that label, or the panel's other texts, are not
-/// found, so the check cannot pass on nothing.
+/// Texts painted across the right edge of the panel (the clip the catalogue's text
+/// `anchor` is painted in: the lab picker's label "Lab" in a side panel, "Parameters" in
+/// the phone's sheet), and the lab's parameters not painted in it; fails when that text,
+/// or the panel's other texts, are not found, so the check cannot pass on nothing.
 fn cut_at_the_panels_edge(
     h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>,
     case: &str,
+    anchor: &str,
 ) -> Vec<String> {
     let texts: Vec<_> = (h.output().shapes.iter())
         .filter_map(|c| match &c.shape {
@@ -19,7 +24,7 @@ fn cut_at_the_panels_edge(
             _ => None,
         })
         .collect();
-    let lab = attlab::i18n::t(h.state().state.view().lang(), "lab");
+    let lab = attlab::i18n::t(h.state().state.view().lang(), anchor);
     let panel = texts.iter().find(|(_, t)| t.galley.text() == lab);
     let panel = panel
         .unwrap_or_else(|| panic!("{case}: no “{lab}” label"))
@@ -32,18 +37,54 @@ fn cut_at_the_panels_edge(
         "{case}: {} texts in the panel",
         in_panel.len()
     );
+    let missing = parameter_labels(h)
+        .into_iter()
+        .filter(|label| !in_panel.iter().any(|(_, t)| t.galley.text() == label))
+        .map(|label| format!("not painted: {label}"))
+        .collect::<Vec<_>>();
     (in_panel.into_iter())
         .filter_map(|(clip, t)| {
             let r = t.visual_bounding_rect();
             (r.right() > clip.right() + 0.5 && r.left() < clip.right())
                 .then(|| format!("{r:?} in {clip:?}: {}", t.galley.text()))
         })
+        .chain(missing)
         .collect()
 }
 
-/// Each lab in both languages: the projector's narrow presenter panel (where the lab
-/// picker's label once wrapped letter by letter past the edge and widened every line below
-/// it), and a laptop's panel.
+/// The labels of the lab's parameters in the page's language (every one is in the panel).
+fn parameter_labels(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
+    let state = &h.state().state;
+    let (lang, lab) = (state.view().lang(), state.sim().lab());
+    (lab.params().iter())
+        .map(|spec| {
+            let id = attlab::i18n::param_label_id(lab.id(), spec.key);
+            attlab::i18n::lab_text(lang, &id, spec.label)
+        })
+        .collect()
+}
+
+/// The page `pixels` wide at `zoom`, tall enough that the whole side panel is painted
+/// (egui paints no widget outside the scrolled view), with "All parameters" open where
+/// presenter mode folds them away.
+fn whole_panel(
+    fragment: &str,
+    pixels: f32,
+    zoom: f32,
+) -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
+    let mut h = window(fragment, 5, (egui::vec2(pixels, 6000.0), zoom));
+    let all = attlab::i18n::t(h.state().state.view().lang(), "all-parameters");
+    if h.query_by_label(&all).is_some() {
+        h.get_by_label(&all).click();
+        h.run_steps(2);
+    }
+    h
+}
+
+/// Each lab in both languages, with every parameter shown: the projector's narrow
+/// presenter panel (where the lab picker's label once wrapped letter by letter past the
+/// edge and widened every line below it; every slider's label ran past it too), a
+/// laptop's panel, and a phone's sheet.
 #[test]
 fn nothing_in_the_side_panel_is_cut_at_its_edge() {
     let mut wrong = Vec::new();
@@ -51,14 +92,19 @@ fn nothing_in_the_side_panel_is_cut_at_its_edge() {
         for lang in Lang::ALL {
             let presenter = format!("lab={}&presenter=1&lang={}", lab.id(), lang.code());
             let laptop = format!("lab={}&lang={}", lab.id(), lang.code());
-            for (fragment, h) in [
-                (&presenter, projector(&presenter, 5)),
+            let mut phone = whole_panel(&laptop, 390.0, 1.0);
+            phone.state_mut().apply(ViewCommand::SetSheet(true).into());
+            phone.run_steps(2);
+            for (fragment, h, anchor) in [
                 (
-                    &laptop,
-                    window(&laptop, 5, (egui::vec2(1366.0, 768.0), 1.0)),
+                    &presenter,
+                    whole_panel(&presenter, 1280.0, PRESENTER_ZOOM),
+                    "lab",
                 ),
+                (&laptop, whole_panel(&laptop, 1366.0, 1.0), "lab"),
+                (&format!("{laptop} (phone)"), phone, "parameters"),
             ] {
-                let cut = cut_at_the_panels_edge(&h, fragment).into_iter();
+                let cut = cut_at_the_panels_edge(&h, fragment, anchor).into_iter();
                 wrong.extend(cut.map(|t| format!("{fragment}: {t}")));
             }
         }

@@ -29,7 +29,7 @@ pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             &i18n::sweep_id(app.sim().lab().id(), i, "title"),
             spec.title,
         );
-        egui::CollapsingHeader::new(tr_with(app, "sweep-title", &[("title", arg(title))]))
+        super::fit::header(ui, tr_with(app, "sweep-title", &[("title", arg(title))]))
             .default_open(true)
             .show(ui, |ui| {
                 let running = app

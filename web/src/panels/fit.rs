@@ -1,0 +1,111 @@
+//! Labelled widgets fitted to the room their row has, so nothing is painted past a panel's
+//! edge: the presenter's panel has a fixed width of 230 points, and the phone's sheet is the
+//! screen's width. Once one row reaches past the edge, egui widens the layout to include
+//! it, and every wrapped line below takes the wider width too.
+//! - Given a label, egui's combo box grows to the whole row and squeezes the label: "Lab"
+//!   wrapped letter by letter past the presenter panel's edge.
+//! - egui's slider draws its rail, its value and then its label on one line, never wrapped:
+//!   in the presenter panel every slider's label ran past the edge.
+
+use egui::{ComboBox, Response, Slider, Ui};
+
+/// The narrowest combo box beside its label: a word or two of its choice still shows.
+const MIN_BESIDE: f32 = 100.0;
+
+/// `combo` labelled `label`: the box fills the row left of its label, or, where the label
+/// would leave it less than [`MIN_BESIDE`], stands under the label (wrapped) at the row's
+/// whole width. Its text wraps rather than widening the panel. `show` adds the box (this
+/// sets its width) and returns its response, which comes back labelled by the label for
+/// AccessKit.
+pub(super) fn labelled(
+    ui: &mut Ui,
+    label: String,
+    combo: ComboBox<'_>,
+    show: impl FnOnce(ComboBox<'_>, &mut Ui) -> Response,
+) -> Response {
+    let beside = ui.available_width() - text_width(ui, &label) - ui.spacing().item_spacing.x;
+    if beside >= MIN_BESIDE {
+        return ui
+            .horizontal(|ui| {
+                let combo = fitted(ui, beside, combo, show);
+                let label = ui.label(label);
+                combo.labelled_by(label.id)
+            })
+            .inner;
+    }
+    let label = ui.label(label);
+    let width = ui.available_width();
+    fitted(ui, width, combo, show).labelled_by(label.id)
+}
+
+/// The combo box `width` wide, its text wrapped inside.
+fn fitted(
+    ui: &mut Ui,
+    width: f32,
+    combo: ComboBox<'_>,
+    show: impl FnOnce(ComboBox<'_>, &mut Ui) -> Response,
+) -> Response {
+    let size = egui::vec2(width, ui.spacing().interact_size.y);
+    ui.allocate_ui(size, |ui| show(combo.width(width).wrap(), ui))
+        .inner
+}
+
+/// `slider` (without a text of its own) labelled `label`: egui's one line of rail, value
+/// and label where the row holds it, else the label (wrapped) above the rail and its value
+/// at the row's whole width. `unit` is the value's suffix, to leave the value room.
+/// Returns the slider's response, labelled by the label for AccessKit.
+pub(super) fn slider(ui: &mut Ui, slider: Slider<'_>, label: String, unit: &str) -> Response {
+    let spacing = ui.spacing();
+    let gap = spacing.item_spacing.x;
+    // The value's box: as wide as a signed number with four decimals and its unit, or as
+    // the widest this slider's box has been drawn (egui picks the decimals as it draws).
+    let id = ui.scope_id().with(("fitted slider's value", &label));
+    let drawn: f32 = ui.data(|d| d.get_temp(id)).unwrap_or(0.0);
+    let value = (text_width(ui, &format!("−0.0000 {unit}")) + 2.0 * spacing.button_padding.x)
+        .max(spacing.interact_size.x)
+        .max(drawn);
+    let in_line = spacing.slider_width + value + text_width(ui, &label) + 2.0 * gap;
+    if in_line <= ui.available_width() {
+        return ui.add(slider.text(label));
+    }
+    let label = ui.add(egui::Label::new(label).wrap());
+    let rail = (ui.available_width() - value - gap).max(MIN_RAIL);
+    let response = ui
+        .scope(|ui| {
+            ui.spacing_mut().slider_width = rail;
+            ui.add(slider)
+        })
+        .inner;
+    let box_width = response.rect.width() - rail - gap;
+    if box_width > drawn {
+        ui.data_mut(|d| d.insert_temp(id, box_width));
+    }
+    response.labelled_by(label.id)
+}
+
+/// The shortest rail of a slider under its label.
+const MIN_RAIL: f32 = 40.0;
+
+/// The width of `text` on one line in the body font.
+fn text_width(ui: &Ui, text: &str) -> f32 {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    (ui.painter())
+        .layout_no_wrap(text.to_owned(), font, egui::Color32::WHITE)
+        .size()
+        .x
+}
+
+/// A collapsing header titled `title`, wrapped within the row: egui lays a header's title
+/// out on one line, and p2's "Accuracy over the last 60 s beside the paper's Tables 3–5" ran
+/// past the presenter panel's edge, the text under it wrapping at the title's width.
+pub(super) fn header(ui: &Ui, title: String) -> egui::CollapsingHeader {
+    let spacing = ui.spacing();
+    let width = ui.available_width() - spacing.indent - spacing.button_padding.x;
+    let galley = egui::WidgetText::from(title).into_galley(
+        ui,
+        Some(egui::TextWrapMode::Wrap),
+        width,
+        egui::TextStyle::Button,
+    );
+    egui::CollapsingHeader::new(galley)
+}
