@@ -100,7 +100,11 @@ pub fn show(
     let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
     let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
-        .y_axis_label(y_title(rec, &shown, log, words))
+        .y_axis_label(fitting_title(
+            ui,
+            y_title(rec, &shown, log, words),
+            plot_rect.height(),
+        ))
         .x_grid_spacer(super::ticks::nice_marks)
         .x_axis_formatter(super::ticks::tick_label)
         .y_grid_spacer(super::ticks::nice_marks)
@@ -225,29 +229,53 @@ fn wheel_zoom(plot: &mut egui_plot::PlotUi<'_>) {
 
 /// The y axis' title: what the drawn series measure, when they are of one group, and the
 /// unit they share ("error [°]", "log10 covariance [°²]", "[–]" for none), or "mixed units
-/// (see the legend)".
-fn y_title(rec: &Recorder, shown: &[(usize, Color32)], log: bool, words: &PlotWords<'_>) -> String {
+/// (see the legend)"; then the same without the words, for a plot too short to hold them
+/// ("[°]", "log10"; the legend names every series with its unit).
+fn y_title(
+    rec: &Recorder,
+    shown: &[(usize, Color32)],
+    log: bool,
+    words: &PlotWords<'_>,
+) -> [String; 2] {
     let specs = || shown.iter().map(|(i, _)| &rec.specs()[*i]);
     let Some(first) = specs().next() else {
-        return String::new();
+        return [String::new(), String::new()];
     };
     let noun = specs()
         .all(|s| s.group == first.group)
         .then(|| (words.group_axis)(first.group))
         .flatten();
-    let title = if !specs().all(|s| s.unit == first.unit) {
-        words.mixed_units.clone()
+    let [full, short] = if !specs().all(|s| s.unit == first.unit) {
+        [words.mixed_units.clone(), String::new()]
     } else {
         let unit = match first.unit {
             "" => "[–]".to_string(),
             unit => format!("[{}]", attlab::model::display_unit(unit)),
         };
         match noun {
-            Some(noun) => format!("{noun} {unit}"),
-            None => unit,
+            Some(noun) => [format!("{noun} {unit}"), unit],
+            None => [unit.clone(), unit],
         }
     };
-    if log { format!("log10 {title}") } else { title }
+    [full, short].map(|t| match (log, t.is_empty()) {
+        (false, _) => t,
+        (true, true) => "log10".to_string(),
+        (true, false) => format!("log10 {t}"),
+    })
+}
+
+/// The first of `titles` that fits along a plot `height` points tall (the x axis' marks and
+/// title take the bottom), else the last: egui_plot centres the y axis' title on the frame
+/// and lets a longer one run over the tabs above the plot (paper 1's lesson on a projector).
+fn fitting_title(ui: &egui::Ui, titles: [String; 2], height: f32) -> String {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let room = height - 3.0 * ui.text_style_height(&egui::TextStyle::Body);
+    let [full, short] = titles;
+    let width = (ui.painter())
+        .layout_no_wrap(full.clone(), font, Color32::WHITE)
+        .size()
+        .x;
+    if width <= room { full } else { short }
 }
 
 /// The series a tab draws with their colours: by source, so an estimator has one colour
@@ -390,13 +418,19 @@ mod tests {
             let shown: Vec<_> = shown.iter().map(|i| (*i, Color32::RED)).collect();
             y_title(&rec, &shown, log, &words())
         };
-        assert_eq!(title(&[0, 1], false), "axis-error [°]");
-        assert_eq!(title(&[2], false), "axis-rate [°/s]");
-        assert_eq!(title(&[4], true), "log10 axis-covariance [–]");
+        let full = |shown: &[usize], log| title(shown, log)[0].clone();
+        assert_eq!(full(&[0, 1], false), "axis-error [°]");
+        assert_eq!(full(&[2], false), "axis-rate [°/s]");
+        assert_eq!(full(&[4], true), "log10 axis-covariance [–]");
         // A lab's own series, or two groups with one unit: the unit alone.
-        assert_eq!(title(&[3], false), "[°]");
-        assert_eq!(title(&[0, 3], false), "[°]");
-        assert_eq!(title(&[0, 2], true), "log10 mixed");
-        assert_eq!(title(&[], false), "");
+        assert_eq!(full(&[3], false), "[°]");
+        assert_eq!(full(&[0, 3], false), "[°]");
+        assert_eq!(full(&[0, 2], true), "log10 mixed");
+        // Without the words, for a short plot: the unit, or log10 alone.
+        assert_eq!(title(&[0, 1], false)[1], "[°]");
+        assert_eq!(title(&[4], true)[1], "log10 [–]");
+        assert_eq!(title(&[0, 2], true)[1], "log10");
+        assert_eq!(title(&[0, 2], false)[1], "");
+        assert_eq!(title(&[], false), ["", ""]);
     }
 }

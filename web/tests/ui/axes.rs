@@ -36,3 +36,36 @@ fn the_time_axis_of_a_long_run_is_labelled_at_round_marks() {
         "no row of numbers holds {marks:?}: {rows:?}"
     );
 }
+
+/// Paper 1's lesson step 2 on a projector, where the plot is short under the tiles and the
+/// tabs: the y axis' title ("log10 mixed units (see the legend)" did) must not run over the
+/// tabs above the plot or any other text; in both languages.
+#[test]
+fn the_y_axis_title_stays_beside_its_plot() {
+    for lang in ["en", "ru"] {
+        let fragment = format!("lesson=p1&step=2&presenter=1&lang={lang}");
+        let h = window(&fragment, 20, (egui::vec2(1280.0, 720.0), PRESENTER_ZOOM));
+        let texts: Vec<_> = (h.output().shapes.iter())
+            .filter_map(|c| match &c.shape {
+                Shape::Text(t) => Some(t),
+                _ => None,
+            })
+            .collect();
+        let title = (texts.iter())
+            .find(|t| t.angle != 0.0 && t.galley.text().starts_with("log10"))
+            .unwrap_or_else(|| panic!("{fragment}: no y axis title"));
+        let over: Vec<&str> = (texts.iter())
+            .filter(|t| t.angle == 0.0)
+            .filter(|t| {
+                t.visual_bounding_rect()
+                    .intersects(title.visual_bounding_rect())
+            })
+            .map(|t| t.galley.text())
+            .collect();
+        assert!(
+            over.is_empty(),
+            "{fragment}: “{}” runs over {over:?}",
+            title.galley.text()
+        );
+    }
+}
