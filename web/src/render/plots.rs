@@ -105,9 +105,9 @@ pub fn show(
             y_title(rec, &shown, log, words),
             plot_rect.height(),
         ))
-        .x_grid_spacer(super::ticks::nice_marks)
+        .x_grid_spacer(super::ticks::x_marks)
         .x_axis_formatter(super::ticks::tick_label)
-        .y_grid_spacer(super::ticks::nice_marks)
+        .y_grid_spacer(super::ticks::y_marks)
         .y_axis_formatter(super::ticks::tick_label)
         .allow_scroll(false);
     if ui

@@ -2,11 +2,24 @@
 //! least three labelled marks, and labels with the decimals their step needs. (egui_plot's
 //! own marks are powers of ten: a run of 600 s had one labelled mark on its time axis, "0".)
 
+/// The time (x) axis' marks: labelled ones at least 80 points apart, where egui_plot draws
+/// an x label at full strength (it fades them from 80 down to 60 and hides closer ones).
+pub fn x_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    marks(input, 80.0)
+}
+
+/// The value (y) axis' marks: labelled ones at least 30 points apart (egui_plot's full
+/// strength for a y label).
+pub fn y_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    marks(input, 30.0)
+}
+
 /// Grid marks at 1, 2 or 5 × 10ⁿ, the step chosen so the axis carries 4 to 10 labelled
-/// marks whatever its height, with a finer grid of a fifth of it between them (one mark
+/// marks whatever its length, but none closer than `min_points` (so on a phone's narrow
+/// plot its labels stay drawn), with a finer grid of a fifth of it between them (one mark
 /// per value: egui_plot labels a fine mark too where there is room, and a fine mark on a
 /// coarse one would draw a second label, "1.0" over "1").
-pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+fn marks(input: egui_plot::GridInput, min_points: f64) -> Vec<egui_plot::GridMark> {
     let (lo, hi) = input.bounds;
     let span = hi - lo;
     if !(span.is_finite() && span > 0.0) {
@@ -16,6 +29,13 @@ pub fn nice_marks(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
     let mut step = nice_step(span / 5.0);
     while ((hi / step).floor() - (lo / step).ceil()) < 2.0 {
         step = nice_step(step * 0.99 / 2.5);
+    }
+    // egui_plot's base step is the value of its least grid spacing, 8 points.
+    let per_point = input.base_step_size / 8.0;
+    if per_point.is_finite() && per_point > 0.0 {
+        while step / per_point < min_points {
+            step = nice_step(step * 1.01);
+        }
     }
     let mut out = Vec::new();
     let mut coarse = false;
@@ -67,7 +87,7 @@ mod tests {
     use super::*;
 
     fn labelled(lo: f64, hi: f64) -> Vec<f64> {
-        let marks = nice_marks(egui_plot::GridInput {
+        let marks = y_marks(egui_plot::GridInput {
             bounds: (lo, hi),
             base_step_size: (hi - lo) / 1000.0,
         });
@@ -116,7 +136,7 @@ mod tests {
             (-2e6, 7e6),
             (0.0, 10.0),
         ] {
-            let marks = nice_marks(egui_plot::GridInput {
+            let marks = y_marks(egui_plot::GridInput {
                 bounds: (lo, hi),
                 base_step_size: (hi - lo) / 1000.0,
             });
@@ -141,5 +161,29 @@ mod tests {
         assert_eq!(tick_label(mark(359.95, 0.05), &(0.0..=1.0)), "359.95");
         assert_eq!(tick_label(mark(-1e-17, 0.1), &(0.0..=1.0)), "0.0");
         assert_eq!(tick_label(mark(2500.0, 500.0), &(0.0..=1.0)), "2500");
+    }
+
+    /// On a phone's plot about 300 points wide, a run of 250 s had marks every 50 s, 60
+    /// points apart, where egui_plot draws no x label: the time axis' marks stand at least
+    /// 80 points apart, and a value axis' 30, and at least two are labelled.
+    #[test]
+    fn labelled_marks_stand_as_far_apart_as_egui_plot_draws_their_labels() {
+        for (lo, hi, points) in [(0.0, 250.0, 300.0), (0.0, 1.0, 320.0), (-3.0, 600.0, 150.0)] {
+            let base_step_size = (hi - lo) / points * 8.0;
+            let input = || egui_plot::GridInput {
+                bounds: (lo, hi),
+                base_step_size,
+            };
+            for (marks, least) in [(x_marks(input()), 80.0), (y_marks(input()), 30.0)] {
+                let biggest = marks.iter().map(|m| m.step_size).fold(0.0, f64::max);
+                let labelled = marks.iter().filter(|m| m.step_size == biggest).count();
+                let apart = biggest / (hi - lo) * points;
+                assert!(
+                    apart >= least,
+                    "{lo}..{hi} on {points} pt: {apart} pt apart"
+                );
+                assert!(labelled >= 2, "{lo}..{hi} on {points} pt: {marks:?}");
+            }
+        }
     }
 }
