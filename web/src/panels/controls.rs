@@ -295,9 +295,12 @@ pub(super) fn param_widget(
                 "?".into()
             };
             let combo = egui::ComboBox::from_id_salt(("param", spec.key)).selected_text(selected);
-            let r = super::fit::labelled(ui, label, combo, |combo, ui| {
+            let (r, label) = super::fit::labelled(ui, label, combo, |combo, ui| {
                 combo.show_index(ui, &mut index, options.len(), option)
             });
+            if !hint.is_empty() {
+                label.on_hover_text(hint.clone());
+            }
             v = index as f64;
             r
         }
@@ -313,7 +316,10 @@ pub(super) fn param_widget(
             if spec.kind == ParamKind::Integer {
                 slider = slider.integer();
             }
-            let r = super::fit::slider(ui, slider, label, spec.unit);
+            let (r, label) = super::fit::slider(ui, slider, label, spec.unit);
+            if !hint.is_empty() {
+                label.on_hover_text(hint.clone());
+            }
             // A screen reader reads the value with its unit ("0.02 °/s").
             let text = format!("{} {}", crate::a11y::tidy(v), spec.unit);
             ui.ctx()

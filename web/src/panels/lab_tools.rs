@@ -208,15 +208,13 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
         .show(ui, |ui| {
             ui.label(word("help", format.help));
             let units = app.io().units_for(format);
-            ui.horizontal_wrapped(|ui| {
-                for spec in format.units {
-                    if let Some(v) =
-                        super::controls::param_widget(ui, app, spec, units.get(spec.key))
-                    {
-                        commands.push(Command::from(IoCommand::SetLogUnit(spec.key, v)));
-                    }
+            // One under another: each takes the room its row has (`fit`), and in a wrapped
+            // row the second was laid past the panel's edge.
+            for spec in format.units {
+                if let Some(v) = super::controls::param_widget(ui, app, spec, units.get(spec.key)) {
+                    commands.push(Command::from(IoCommand::SetLogUnit(spec.key, v)));
                 }
-            });
+            }
             ui.horizontal_wrapped(|ui| {
                 if ui.button(word("load", format.load_label)).clicked() {
                     commands.push(Command::from(IoCommand::LoadLog));

@@ -52,11 +52,15 @@ fn cut_at_the_panels_edge(
         .collect()
 }
 
-/// The labels of the lab's parameters in the page's language (every one is in the panel).
+/// The labels of the lab's parameters in the page's language (every one is in the panel),
+/// and outside presenter mode those of its log's units (in its laboratory mode).
 fn parameter_labels(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
     let state = &h.state().state;
     let (lang, lab) = (state.view().lang(), state.sim().lab());
-    (lab.params().iter())
+    let units = (lab.page().log_format)
+        .filter(|_| !state.view().presenter)
+        .map_or(&[][..], |f| f.units);
+    (lab.params().iter().chain(units))
         .map(|spec| {
             let id = attlab::i18n::param_label_id(lab.id(), spec.key);
             attlab::i18n::lab_text(lang, &id, spec.label)
@@ -64,19 +68,34 @@ fn parameter_labels(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec
         .collect()
 }
 
-/// The page `pixels` wide at `zoom`, tall enough that the whole side panel is painted
-/// (egui paints no widget outside the scrolled view), with "All parameters" open where
-/// presenter mode folds them away.
+/// The page `pixels` wide at `zoom`, tall enough that the whole panel is painted (egui
+/// paints no widget outside the scrolled view), with the phone's controls' sheet open
+/// where `sheet`, and the sections that start closed opened: "All parameters" (presenter
+/// mode) and the laboratory mode of a lab that reads logs. The value boxes take their
+/// width from the frames before, so a box wider than its first guess settles in two.
 fn whole_panel(
     fragment: &str,
-    pixels: f32,
-    zoom: f32,
+    (pixels, zoom): (f32, f32),
+    sheet: bool,
 ) -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
-    let mut h = window(fragment, 5, (egui::vec2(pixels, 6000.0), zoom));
-    let all = attlab::i18n::t(h.state().state.view().lang(), "all-parameters");
-    if h.query_by_label(&all).is_some() {
-        h.get_by_label(&all).click();
+    // The phone's sheet stands at the least of its sizes here, a fifth of the window.
+    let height = if sheet { 30_000.0 } else { 6000.0 };
+    let mut h = window(fragment, 5, (egui::vec2(pixels, height), zoom));
+    if sheet {
+        h.state_mut().apply(ViewCommand::SetSheet(true).into());
         h.run_steps(2);
+    }
+    let (lang, lab) = (h.state().state.view().lang(), h.state().state.sim().lab());
+    let mut closed = vec![attlab::i18n::t(lang, "all-parameters")];
+    if let Some(format) = lab.page().log_format {
+        let id = attlab::i18n::log_format_id(lab.id(), "title");
+        closed.push(attlab::i18n::lab_text(lang, &id, format.title));
+    }
+    for title in closed {
+        if h.query_by_label(&title).is_some() {
+            h.get_by_label(&title).click();
+            h.run_steps(3);
+        }
     }
     h
 }
@@ -92,17 +111,18 @@ fn nothing_in_the_side_panel_is_cut_at_its_edge() {
         for lang in Lang::ALL {
             let presenter = format!("lab={}&presenter=1&lang={}", lab.id(), lang.code());
             let laptop = format!("lab={}&lang={}", lab.id(), lang.code());
-            let mut phone = whole_panel(&laptop, 390.0, 1.0);
-            phone.state_mut().apply(ViewCommand::SetSheet(true).into());
-            phone.run_steps(2);
             for (fragment, h, anchor) in [
                 (
                     &presenter,
-                    whole_panel(&presenter, 1280.0, PRESENTER_ZOOM),
+                    whole_panel(&presenter, (1280.0, PRESENTER_ZOOM), false),
                     "lab",
                 ),
-                (&laptop, whole_panel(&laptop, 1366.0, 1.0), "lab"),
-                (&format!("{laptop} (phone)"), phone, "parameters"),
+                (&laptop, whole_panel(&laptop, (1366.0, 1.0), false), "lab"),
+                (
+                    &format!("{laptop} (phone)"),
+                    whole_panel(&laptop, (390.0, 1.0), true),
+                    "parameters",
+                ),
             ] {
                 let cut = cut_at_the_panels_edge(&h, fragment, anchor).into_iter();
                 wrong.extend(cut.map(|t| format!("{fragment}: {t}")));
