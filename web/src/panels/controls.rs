@@ -215,31 +215,27 @@ pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Com
 
 fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let presets = app.sim().lab().presets();
-    if !presets.is_empty() {
-        ui.horizontal_wrapped(|ui| {
-            ui.label(tr(app, "presets"));
-            for (i, preset) in presets.iter().enumerate() {
-                let id = i18n::preset_id(app.sim().lab().id(), i);
-                if ui
-                    .button(i18n::lab_text(app.view().lang(), &id, preset.name))
-                    .on_hover_text(tr_with(
-                        app,
-                        "preset-hint",
-                        &[(
-                            "help",
-                            arg(super::lab_word(
-                                app,
-                                &i18n::preset_help_id(app.sim().lab().id(), i),
-                                preset.help,
-                            )),
-                        )],
-                    ))
-                    .clicked()
-                {
-                    commands.push(Command::from(RunCommand::ApplyPreset(i)));
-                }
+    if presets.is_empty() {
+        return;
+    }
+    let buttons = |ui: &mut Ui| {
+        ui.label(tr(app, "presets"));
+        for (i, preset) in presets.iter().enumerate() {
+            let lab = app.sim().lab().id();
+            let name = i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), preset.name);
+            let help = super::lab_word(app, &i18n::preset_help_id(lab, i), preset.help);
+            let hint = tr_with(app, "preset-hint", &[("help", arg(help))]);
+            if ui.button(name).on_hover_text(hint).clicked() {
+                commands.push(Command::from(RunCommand::ApplyPreset(i)));
             }
-        });
+        }
+    };
+    // In presenter mode's narrow panel, one under another: wrapped into rows, a preset
+    // whose name took two lines left a row as tall as its own under the next one.
+    if app.view().presenter {
+        ui.vertical(buttons);
+    } else {
+        ui.horizontal_wrapped(buttons);
     }
 }
 

@@ -135,3 +135,28 @@ fn nothing_in_the_side_panel_is_cut_at_its_edge() {
         wrong.join("\n")
     );
 }
+
+/// Presenter mode's presets stand one under another with the panel's usual spacing: in
+/// rows wrapped across the narrow panel, a preset whose name took two lines had left a
+/// gap as tall as itself under the next row.
+#[test]
+fn the_presenters_presets_stand_one_under_another_without_gaps() {
+    for lab in labs::all() {
+        let fragment = format!("lab={}&presenter=1", lab.id());
+        let h = whole_panel(&fragment, (1280.0, PRESENTER_ZOOM), false);
+        let spacing = h.ctx.global_style().spacing.item_spacing.y;
+        let mut rects: Vec<egui::Rect> = (lab.presets().iter())
+            .map(|p| h.get_by_label(p.name).rect())
+            .collect();
+        rects.sort_by(|a, b| a.top().total_cmp(&b.top()));
+        for pair in rects.windows(2) {
+            let gap = pair[1].top() - pair[0].bottom();
+            assert!(
+                (0.0..=spacing + 0.5).contains(&gap),
+                "{fragment}: {gap} points between {:?} and {:?}",
+                pair[0],
+                pair[1]
+            );
+        }
+    }
+}
