@@ -76,15 +76,13 @@ pub(super) fn slider(
     let spacing = ui.spacing();
     let gap = spacing.item_spacing.x;
     // The value's box: as wide as this slider's box has been drawn (egui picks the
-    // decimals as it draws); before it is drawn, a signed number with four decimals.
+    // decimals as it draws), up to twice the first guess, a signed number with four
+    // decimals.
     let id = ui.scope_id().with(("fitted slider's value", &label));
     let drawn: f32 = ui.data(|d| d.get_temp(id)).unwrap_or(0.0);
-    let value = if drawn > 0.0 {
-        drawn
-    } else {
-        (text_width(ui, &format!("−0.0000 {unit}")) + 2.0 * spacing.button_padding.x)
-            .max(spacing.interact_size.x)
-    };
+    let first_guess = (text_width(ui, &format!("−0.0000 {unit}")) + 2.0 * spacing.button_padding.x)
+        .max(spacing.interact_size.x);
+    let value = if drawn > 0.0 { drawn } else { first_guess };
     let rail = spacing.slider_width;
     // The slider in a scope of its own id in either layout, so it keeps its id (and the
     // keyboard focus) when its value's box grows and the row changes layout.
@@ -108,8 +106,10 @@ pub(super) fn slider(
             .inner;
         (response, label, rail)
     };
+    // Not while the value is being typed: egui's text field grows with what is typed, and
+    // a pasted line would have kept the row stacked with a short rail for the session.
     let box_width = response.rect.width() - rail - gap;
-    if box_width > drawn {
+    if box_width > drawn && box_width <= 2.0 * first_guess && !response.has_focus() {
         ui.data_mut(|d| d.insert_temp(id, box_width));
     }
     (response.labelled_by(label.id), label)

@@ -25,17 +25,27 @@ fn marks(input: egui_plot::GridInput, min_points: f64) -> Vec<egui_plot::GridMar
     if !(span.is_finite() && span > 0.0) {
         return Vec::new();
     }
-    // The largest round step that still gives three labelled marks.
+    // The largest round step that still gives three labelled marks. (Each loop is bounded:
+    // near the smallest floats a round step can stay where it is.)
     let mut step = nice_step(span / 5.0);
-    while ((hi / step).floor() - (lo / step).ceil()) < 2.0 {
+    for _ in 0..MAX_TRIES {
+        if ((hi / step).floor() - (lo / step).ceil()) >= 2.0 {
+            break;
+        }
         step = nice_step(step * 0.99 / 2.5);
     }
     // egui_plot's base step is the value of its least grid spacing, 8 points.
     let per_point = input.base_step_size / 8.0;
     if per_point.is_finite() && per_point > 0.0 {
-        while step / per_point < min_points {
+        for _ in 0..MAX_TRIES {
+            if step / per_point >= min_points {
+                break;
+            }
             step = nice_step(step * 1.01);
         }
+    }
+    if !(step.is_normal() && step.is_finite()) {
+        return Vec::new();
     }
     let mut out = Vec::new();
     let mut coarse = false;
@@ -58,6 +68,9 @@ fn marks(input: egui_plot::GridInput, min_points: f64) -> Vec<egui_plot::GridMar
     }
     out
 }
+
+/// The most round steps a search for one tries: 1, 2, 5 per decade over 40 decades.
+const MAX_TRIES: usize = 120;
 
 /// A mark's label with as many decimals as its step needs, so neighbours differ: 359.95
 /// beside 360.00 (egui_plot's own rounds a step of 0.05 to one decimal, and both read
@@ -184,6 +197,19 @@ mod tests {
                 );
                 assert!(labelled >= 2, "{lo}..{hi} on {points} pt: {marks:?}");
             }
+        }
+    }
+
+    /// Zoomed in towards 0 until the span is a denormal float: the search for a step
+    /// ends (it had stayed on one denormal step for ever), with no marks or some.
+    #[test]
+    fn a_span_of_the_smallest_floats_ends_the_search() {
+        for (lo, hi) in [(0.0, 5e-324), (0.0, 1e-320), (1e-310, 1.0000001e-310)] {
+            let marks = x_marks(egui_plot::GridInput {
+                bounds: (lo, hi),
+                base_step_size: (hi - lo) / 300.0 * 8.0,
+            });
+            assert!(marks.len() <= 200, "{lo}..{hi}: {} marks", marks.len());
         }
     }
 }
