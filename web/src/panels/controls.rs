@@ -230,9 +230,21 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             }
         }
     };
-    // In presenter mode's narrow panel, one under another: wrapped into rows, a preset
-    // whose name took two lines left a row as tall as its own under the next one.
-    if app.view().presenter {
+    // Wrapped into rows where every name fits a row, else one under another: in wrapped
+    // rows, a preset whose name took two lines left a row as tall as its own under the
+    // next one (presenter mode's narrow panel; Russian names on a laptop).
+    let room = ui.available_width() - 2.0 * ui.spacing().button_padding.x;
+    let lab = app.sim().lab().id();
+    let font = egui::TextStyle::Button.resolve(ui.style());
+    let wraps = (0..presets.len()).any(|i| {
+        let name = i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), presets[i].name);
+        let width = (ui.painter())
+            .layout_no_wrap(name, font.clone(), egui::Color32::WHITE)
+            .size()
+            .x;
+        width > room
+    });
+    if app.view().presenter || wraps {
         ui.vertical(buttons);
     } else {
         ui.horizontal_wrapped(buttons);

@@ -136,27 +136,44 @@ fn nothing_in_the_side_panel_is_cut_at_its_edge() {
     );
 }
 
-/// Presenter mode's presets stand one under another with the panel's usual spacing: in
-/// rows wrapped across the narrow panel, a preset whose name took two lines had left a
-/// gap as tall as itself under the next row.
+/// Presets stand in rows with the panel's usual spacing between them: in presenter mode
+/// one under another, and on a laptop in English and in Russian. In rows wrapped across
+/// the panel, a preset whose name took two lines had left a gap as tall as itself under
+/// the next row.
 #[test]
-fn the_presenters_presets_stand_one_under_another_without_gaps() {
+fn presets_stand_without_gaps_between_their_rows() {
     for lab in labs::all() {
-        let fragment = format!("lab={}&presenter=1", lab.id());
-        let h = whole_panel(&fragment, (1280.0, PRESENTER_ZOOM), false);
-        let spacing = h.ctx.global_style().spacing.item_spacing.y;
-        let mut rects: Vec<egui::Rect> = (lab.presets().iter())
-            .map(|p| h.get_by_label(p.name).rect())
-            .collect();
-        rects.sort_by(|a, b| a.top().total_cmp(&b.top()));
-        for pair in rects.windows(2) {
-            let gap = pair[1].top() - pair[0].bottom();
-            assert!(
-                (0.0..=spacing + 0.5).contains(&gap),
-                "{fragment}: {gap} points between {:?} and {:?}",
-                pair[0],
-                pair[1]
-            );
+        for (fragment, size, presenter) in [
+            (
+                format!("lab={}&presenter=1", lab.id()),
+                (1280.0, PRESENTER_ZOOM),
+                true,
+            ),
+            (format!("lab={}", lab.id()), (1366.0, 1.0), false),
+            (format!("lab={}&lang=ru", lab.id()), (1366.0, 1.0), false),
+        ] {
+            let h = whole_panel(&fragment, size, false);
+            let lang = h.state().state.view().lang();
+            let spacing = h.ctx.global_style().spacing.item_spacing.y;
+            let mut rects: Vec<egui::Rect> = (0..lab.presets().len())
+                .map(|i| {
+                    let id = attlab::i18n::preset_id(lab.id(), i);
+                    let name = attlab::i18n::lab_text(lang, &id, lab.presets()[i].name);
+                    h.get_by_label(&name).rect()
+                })
+                .collect();
+            rects.sort_by(|a, b| a.top().total_cmp(&b.top()));
+            for pair in rects.windows(2) {
+                let gap = pair[1].top() - pair[0].bottom();
+                // Two presets side by side in one row overlap in height.
+                let same_row = !presenter && pair[1].top() < pair[0].bottom();
+                assert!(
+                    same_row || (0.0..=spacing + 0.5).contains(&gap),
+                    "{fragment}: {gap} points between {:?} and {:?}",
+                    pair[0],
+                    pair[1]
+                );
+            }
         }
     }
 }
