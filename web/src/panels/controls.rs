@@ -78,7 +78,7 @@ pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command
         i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title())
     };
     let combo = egui::ComboBox::from_id_salt("lab-picker").selected_text(title(current));
-    super::fit::labelled(ui, tr(app, "lab"), combo, |combo, ui| {
+    super::fit::labelled(ui, ("lab-picker", tr(app, "lab")), combo, |combo, ui| {
         combo
             .show_ui(ui, |ui| {
                 for lab in labs::all() {
@@ -303,7 +303,7 @@ pub(super) fn param_widget(
                 "?".into()
             };
             let combo = egui::ComboBox::from_id_salt(("param", spec.key)).selected_text(selected);
-            let (r, label) = super::fit::labelled(ui, label, combo, |combo, ui| {
+            let (r, label) = super::fit::labelled(ui, (spec.key, label), combo, |combo, ui| {
                 combo.show_index(ui, &mut index, options.len(), option)
             });
             if !hint.is_empty() {
@@ -324,7 +324,7 @@ pub(super) fn param_widget(
             if spec.kind == ParamKind::Integer {
                 slider = slider.integer();
             }
-            let (r, label) = super::fit::slider(ui, slider, label, spec.unit);
+            let (r, label) = super::fit::slider(ui, slider, (spec.key, label), spec.unit);
             if !hint.is_empty() {
                 label.on_hover_text(hint.clone());
             }
@@ -425,7 +425,7 @@ fn ghost_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             .find(|(i, _)| *i == app.view().ghost_index)
             .map_or("—", |x| &x.1[..]);
         let combo = egui::ComboBox::from_id_salt("ghost").selected_text(current);
-        super::fit::labelled(ui, tr(app, "ghost"), combo, |combo, ui| {
+        super::fit::labelled(ui, ("ghost", tr(app, "ghost")), combo, |combo, ui| {
             combo
                 .show_ui(ui, |ui| {
                     for (i, label) in &with_attitude {

@@ -13,20 +13,21 @@ use egui::{ComboBox, Response, Slider, Ui};
 /// The narrowest combo box beside its label: a word or two of its choice still shows.
 const MIN_BESIDE: f32 = 100.0;
 
-/// `combo` labelled `label`: the box fills the row left of its label, or, where the label
+/// `combo` labelled `label` (`key` names it among its row's neighbours, whatever the
+/// language): the box fills the row left of its label, or, where the label
 /// would leave it less than [`MIN_BESIDE`], stands under the label (wrapped) at the row's
 /// whole width. Its text wraps rather than widening the panel. `show` adds the box (this
 /// sets its width) and returns its response. Returns the box's response, labelled by the
 /// label for AccessKit, and the label's (for its hover text).
 pub(super) fn labelled(
     ui: &mut Ui,
-    label: String,
+    (key, label): (&str, String),
     combo: ComboBox<'_>,
     show: impl FnOnce(ComboBox<'_>, &mut Ui) -> Response,
 ) -> (Response, Response) {
     // The box in a scope of its own id in either layout, so it keeps its id (and its
     // open list) when the row changes layout.
-    let scope = ui.scope_id().with(("fitted combo box", &label));
+    let scope = ui.scope_id().with(("fitted combo box", key));
     let beside = ui.available_width() - text_width(ui, &label) - ui.spacing().item_spacing.x;
     if beside >= MIN_BESIDE {
         return ui
@@ -61,7 +62,8 @@ fn fitted(
     .inner
 }
 
-/// `slider` (without a text of its own) labelled `label`: the rail, its value and the
+/// `slider` (without a text of its own) labelled `label` (`key` names it among its row's
+/// neighbours, whatever the language): the rail, its value and the
 /// label on one row, the label wrapped in the room the value leaves, as long as that room
 /// is at least [`MIN_LABEL`]; else the label (wrapped) above the rail and its value at the
 /// row's whole width. `unit` is the value's suffix, to leave the value room before its box
@@ -70,7 +72,7 @@ fn fitted(
 pub(super) fn slider(
     ui: &mut Ui,
     slider: Slider<'_>,
-    label: String,
+    (key, label): (&str, String),
     unit: &str,
 ) -> (Response, Response) {
     let spacing = ui.spacing();
@@ -78,7 +80,7 @@ pub(super) fn slider(
     // The value's box: as wide as this slider's box has been drawn (egui picks the
     // decimals as it draws), up to twice the first guess, a signed number with four
     // decimals.
-    let id = ui.scope_id().with(("fitted slider's value", &label));
+    let id = ui.scope_id().with(("fitted slider's value", key));
     let drawn: f32 = ui.data(|d| d.get_temp(id)).unwrap_or(0.0);
     let first_guess = (text_width(ui, &format!("−0.0000 {unit}")) + 2.0 * spacing.button_padding.x)
         .max(spacing.interact_size.x);
