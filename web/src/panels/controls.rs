@@ -218,11 +218,19 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     if presets.is_empty() {
         return;
     }
+    let lab = app.sim().lab().id();
+    let names: Vec<String> = (presets.iter().enumerate())
+        .map(|(i, p)| i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), p.name))
+        .collect();
+    // Wrapped into rows where every name fits a row, else one under another: in wrapped
+    // rows, a preset whose name took two lines left a row as tall as its own under the
+    // next one (presenter mode's narrow panel; Russian names on a laptop).
+    let room = ui.available_width() - 2.0 * ui.spacing().button_padding.x;
+    let wraps =
+        (names.iter()).any(|n| super::fit::text_width(ui, n, egui::TextStyle::Button) > room);
     let buttons = |ui: &mut Ui| {
         ui.label(tr(app, "presets"));
-        for (i, preset) in presets.iter().enumerate() {
-            let lab = app.sim().lab().id();
-            let name = i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), preset.name);
+        for (i, (preset, name)) in presets.iter().zip(names).enumerate() {
             let help = super::lab_word(app, &i18n::preset_help_id(lab, i), preset.help);
             let hint = tr_with(app, "preset-hint", &[("help", arg(help))]);
             if ui.button(name).on_hover_text(hint).clicked() {
@@ -230,20 +238,6 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             }
         }
     };
-    // Wrapped into rows where every name fits a row, else one under another: in wrapped
-    // rows, a preset whose name took two lines left a row as tall as its own under the
-    // next one (presenter mode's narrow panel; Russian names on a laptop).
-    let room = ui.available_width() - 2.0 * ui.spacing().button_padding.x;
-    let lab = app.sim().lab().id();
-    let font = egui::TextStyle::Button.resolve(ui.style());
-    let wraps = (0..presets.len()).any(|i| {
-        let name = i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), presets[i].name);
-        let width = (ui.painter())
-            .layout_no_wrap(name, font.clone(), egui::Color32::WHITE)
-            .size()
-            .x;
-        width > room
-    });
     if app.view().presenter || wraps {
         ui.vertical(buttons);
     } else {

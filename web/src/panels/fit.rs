@@ -14,9 +14,8 @@ use egui::{ComboBox, Response, Slider, Ui};
 const MIN_BESIDE: f32 = 100.0;
 
 /// `combo` labelled `label` (`key` names it among its row's neighbours, whatever the
-/// language): the box fills the row left of its label, or, where the label
-/// would leave it less than [`MIN_BESIDE`], stands under the label (wrapped) at the row's
-/// whole width. Its text wraps rather than widening the panel. `show` adds the box (this
+/// language): the box fills the row left of its label, or, where the label would leave it
+/// less than [`MIN_BESIDE`], stands under the label (wrapped) at the row's whole width. Its text wraps rather than widening the panel. `show` adds the box (this
 /// sets its width) and returns its response. Returns the box's response, labelled by the
 /// label for AccessKit, and the label's (for its hover text).
 pub(super) fn labelled(
@@ -28,7 +27,9 @@ pub(super) fn labelled(
     // The box in a scope of its own id in either layout, so it keeps its id (and its
     // open list) when the row changes layout.
     let scope = ui.scope_id().with(("fitted combo box", key));
-    let beside = ui.available_width() - text_width(ui, &label) - ui.spacing().item_spacing.x;
+    let beside = ui.available_width()
+        - text_width(ui, &label, egui::TextStyle::Body)
+        - ui.spacing().item_spacing.x;
     if beside >= MIN_BESIDE {
         return ui
             .horizontal(|ui| {
@@ -63,9 +64,9 @@ fn fitted(
 }
 
 /// `slider` (without a text of its own) labelled `label` (`key` names it among its row's
-/// neighbours, whatever the language): the rail, its value and the
-/// label on one row, the label wrapped in the room the value leaves, as long as that room
-/// is at least [`MIN_LABEL`]; else the label (wrapped) above the rail and its value at the
+/// neighbours, whatever the language): the rail, its value and the label on one row, the
+/// label wrapped in the room the value leaves, as long as that room is at least
+/// [`MIN_LABEL`]; else the label (wrapped) above the rail and its value at the
 /// row's whole width. `unit` is the value's suffix, to leave the value room before its box
 /// has been drawn. Returns the slider's response, labelled by the label for AccessKit, and
 /// the label's (for its hover text).
@@ -82,7 +83,8 @@ pub(super) fn slider(
     // decimals.
     let id = ui.scope_id().with(("fitted slider's value", key));
     let drawn: f32 = ui.data(|d| d.get_temp(id)).unwrap_or(0.0);
-    let first_guess = (text_width(ui, &format!("−0.0000 {unit}")) + 2.0 * spacing.button_padding.x)
+    let first_guess = (text_width(ui, &format!("−0.0000 {unit}"), egui::TextStyle::Body)
+        + 2.0 * spacing.button_padding.x)
         .max(spacing.interact_size.x);
     let value = if drawn > 0.0 { drawn } else { first_guess };
     let rail = spacing.slider_width;
@@ -123,9 +125,9 @@ const MIN_LABEL: f32 = 72.0;
 /// The shortest rail of a slider under its label.
 const MIN_RAIL: f32 = 40.0;
 
-/// The width of `text` on one line in the body font.
-fn text_width(ui: &Ui, text: &str) -> f32 {
-    let font = egui::TextStyle::Body.resolve(ui.style());
+/// The width of `text` on one line in the font of `style`.
+pub(super) fn text_width(ui: &Ui, text: &str, style: egui::TextStyle) -> f32 {
+    let font = style.resolve(ui.style());
     (ui.painter())
         .layout_no_wrap(text.to_owned(), font, egui::Color32::WHITE)
         .size()
