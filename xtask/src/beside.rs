@@ -1,14 +1,18 @@
-//! Page tests started beside the others instead of after them: the lessons, the page fuzz
-//! and the soak (the test runner takes them in the order of their names). The soak and the lessons wait on the clock more than on the cores: the soak
-//! keeps each lab for its seconds, and the lessons run to their pauses at the lesson's speed,
-//! so a slower frame does not make either take much longer there. The fuzz is the other
-//! kind: eframe runs a UI pass for every press and key it is sent, on the page's one thread,
-//! while the page tests beside it mostly wait for SwiftShader's frames, which left a core
-//! partly idle: with the fuzz among them the page tests took 433 s with both cores 84 % busy,
-//! with it beside them 388 s at 95 % (one machine, one run after the other). They run one
-//! after the other (each counts on its own Chromium's frames). cargo holds its build
-//! directory for as long as its tests run, so they run the page tests' binary itself (built
-//! by then) with their output in a file, printed when they end.
+//! Page tests started beside the others instead of after them: the lessons and the page fuzz
+//! in one run (the test runner takes them in the order of their names), the soak in a run of
+//! its own at a lower CPU priority. The lessons wait on the clock more than on the cores: they
+//! run to their pauses at the lesson's speed, so a slower frame does not make them take much
+//! longer. The fuzz is the other kind: eframe runs a UI pass for every press and key it is
+//! sent, on the page's one thread, while the page tests beside it mostly wait for
+//! SwiftShader's frames, which left a core partly idle: with the fuzz among them the page
+//! tests took 433 s with both cores 84 % busy, with it beside them 388 s at 95 % (one
+//! machine, one run after the other). The soak keeps each lab for its seconds whatever the
+//! cores do, and runs each at the highest speed, so it takes every cycle it is given: run
+//! last after the fuzz it held the step for a minute with the page tests done; niced from the
+//! start it takes the cycles the others leave (a third Chromium at their priority would slow
+//! the frames they count). cargo holds its build directory for as long as its tests run, so
+//! these run the page tests' binary itself (built by then) with their output in a file,
+//! printed when they end.
 
 use crate::cmd::Result;
 use std::fs::File;
@@ -25,17 +29,25 @@ pub struct Beside {
 }
 
 /// Starts the page tests named `tests` (exact names, run one at a time, in the order of their
-/// names, as the test runner sorts them) against
-/// `url` in the background, a soak among them running for `soak_minutes`.
-pub fn start(url: &str, soak_minutes: f64, tests: &[&str]) -> Result<Beside> {
+/// names, as the test runner sorts them) against `url` in the background, a soak among them
+/// running for `soak_minutes`; at `niceness` (as `nice -n`; 0: the caller's priority).
+pub fn start(url: &str, soak_minutes: f64, tests: &[&str], niceness: u8) -> Result<Beside> {
     let exe = page_test_binary()?;
     let package = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests");
     let dir = package.join("../target/page-test");
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
-    let log = dir.join("beside.log");
+    let first = tests.first().copied().unwrap_or("page");
+    let log = dir.join(format!("beside-{first}.log"));
     let out = File::create(&log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
     let err = out.try_clone()?;
-    let mut command = Command::new(&exe);
+    let mut command =
+        if niceness > 0 && crate::cmd::probe(Command::new("nice").arg("true")).is_some() {
+            let mut nice = Command::new("nice");
+            nice.args(["-n", &niceness.to_string()]).arg(&exe);
+            nice
+        } else {
+            Command::new(&exe)
+        };
     command
         .args(["--ignored", "--nocapture", "--exact", "--test-threads=1"])
         .args(tests)

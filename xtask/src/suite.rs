@@ -259,7 +259,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     // Every page test but those beside them, one at a time: most of them count frames, and
-    // a third Chromium on the 2 cores would slow the frames of the other two.
+    // a third Chromium at their priority on the 2 cores would slow the frames of the other
+    // two (the soak beside them is niced).
     // `--workspace`, as the native tests: the same features for every dependency, so the
     // page test reuses that build (`-p attlab-tests` alone re-resolved them and rebuilt 71
     // crates, 83 s in CI).
@@ -270,26 +271,35 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     page.env("ATTLAB_PAGE_URL", server.url());
     page.env("ATTLAB_DIST", &dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    // The soak, the lessons and the fuzz beside them (see `beside`).
-    let beside = suite.step("start the soak, lessons and fuzz beside", || {
-        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE)
+    // The lessons and the fuzz beside them, and the soak niced beside them all (see `beside`).
+    let [soak_test, beside_tests @ ..] = BESIDE;
+    let soak = suite.step("start the soak beside, niced", || {
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &[soak_test], SOAK_NICENESS)
+    })?;
+    let beside = suite.step("start the lessons and fuzz beside", || {
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &beside_tests, 0)
     })?;
     suite.tests("page (headless Chromium)", page)?;
-    suite.finish_beside(
-        &format!("soak ({CI_SOAK_MINUTES} min), lessons, fuzz, beside"),
-        beside,
-    )
+    suite.finish_beside("lessons, fuzz, beside", beside)?;
+    suite.finish_beside(&format!("soak ({CI_SOAK_MINUTES} min), niced beside"), soak)
 }
 
-/// The page tests `cargo xtask test` runs beside the others (exact names; the test runner
-/// takes them in the order of their names: the lessons, the fuzz, the soak): the soak and the lessons wait on the clock more than on the cores; the fuzz (its default:
-/// one round of random input per lab) keeps one core busy with the app's UI passes, which
-/// the other page tests, mostly painting, left partly idle (see `beside`).
+/// The page tests `cargo xtask test` runs beside the others (exact names): first the soak,
+/// in a run of its own, niced: it keeps each lab for its seconds at the highest speed and
+/// takes whatever cycles it is given; then the lessons and the fuzz (its default: one round
+/// of random input per lab), one after the other in the order of their names. The lessons
+/// wait on the clock more than on the cores; the fuzz keeps one core busy with the app's UI
+/// passes, which the other page tests, mostly painting, left partly idle (see `beside`).
 const BESIDE: [&str; 3] = [
     "soak",
     "lessons_open_at_their_step_and_pause",
     "page_survives_random_input",
 ];
+
+/// The soak's `nice -n` beside the page tests: its Chromium gets about a tenth of a core
+/// while the others keep both busy (CFS weights 110 against 1024), and the rest when they
+/// wait.
+const SOAK_NICENESS: u8 = 10;
 
 /// The native tests. With cargo-nextest (on this project's machines): every test of every
 /// binary in one pool, so a binary of one long test no longer leaves a core idle while the
