@@ -40,7 +40,11 @@ self.addEventListener('fetch', (event) => {
       .then((response) => {
         if (response.ok) {
           const copy = response.clone();
-          caches.open(CACHE).then((cache) => cache.put(request, copy));
+          // One entry per file, whatever its build query (`?v=`): a new build replaces the
+          // last one's bytes instead of adding 6 MB more (lookups ignore the query too).
+          const key = new URL(request.url);
+          key.search = '';
+          caches.open(CACHE).then((cache) => cache.put(key.href, copy));
         }
         return response;
       })

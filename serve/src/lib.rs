@@ -215,6 +215,8 @@ struct Reply {
     body: Body,
     /// A HEAD request: the headers of the GET, without its body.
     head_only: bool,
+    /// Its `Cache-Control` value (see [`cache_control`]).
+    cache: &'static str,
 }
 
 #[derive(Debug)]
@@ -232,6 +234,7 @@ impl Reply {
             length: text.len() as u64,
             body: Body::Text(text.to_string()),
             head_only: false,
+            cache: REVALIDATE,
         }
     }
 
@@ -239,11 +242,12 @@ impl Reply {
     fn send(self, out: &mut impl Write) -> io::Result<()> {
         let mut head = format!(
             "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\n\
-             Cache-Control: no-cache\r\nConnection: close\r\n",
+             Cache-Control: {}\r\nConnection: close\r\n",
             self.status,
             reason(self.status),
             self.content_type,
-            self.length
+            self.length,
+            self.cache
         );
         if self.status == 405 {
             head.push_str("Allow: GET, HEAD\r\n");
@@ -297,7 +301,30 @@ fn reply_to(root: &Path, request: &Request) -> Reply {
         length,
         body: Body::File(file),
         head_only,
+        cache: cache_control(&request.target),
     }
+}
+
+/// `Cache-Control` of a file that may change under its URL: the browser asks again each time.
+const REVALIDATE: &str = "no-cache";
+/// `Cache-Control` of a versioned URL, which names one build's bytes for good.
+const IMMUTABLE: &str = "public, max-age=31536000, immutable";
+
+/// The `Cache-Control` for a request target. The page asks for its wasm and its JS glue with
+/// the build's hash in the query (`?v=…`, written into `index.html` by `cargo xtask dist`), so
+/// those bytes never change under their URL: the browser keeps them (and V8 its compiled
+/// code) without asking again, and a new build is a new URL. Everything else (`index.html`
+/// itself, the fonts, the service worker) may change under its name and is revalidated.
+fn cache_control(target: &str) -> &'static str {
+    let query = target
+        .split('#')
+        .next()
+        .and_then(|t| t.split_once('?'))
+        .map_or("", |(_, q)| q);
+    let versioned = query
+        .split('&')
+        .any(|pair| pair.strip_prefix("v=").is_some_and(|v| !v.is_empty()));
+    if versioned { IMMUTABLE } else { REVALIDATE }
 }
 
 /// Maps a request URL to a file under `root`; `None` for anything escaping it or missing.

@@ -65,6 +65,37 @@ fn serves_a_wasm_file_with_its_type_closes_and_stops() {
 }
 
 #[test]
+fn a_versioned_url_is_kept_and_every_other_is_revalidated() {
+    let server = start(&site("cache"), 0).unwrap();
+    let cache = |target: &str| {
+        let reply = exchange(
+            server.addr,
+            format!("GET {target} HTTP/1.1\r\n\r\n").as_bytes(),
+        );
+        assert!(
+            reply.starts_with("HTTP/1.1 200 OK\r\n"),
+            "{target}: {reply}"
+        );
+        reply
+            .lines()
+            .find_map(|l| l.strip_prefix("Cache-Control: "))
+            .map(str::to_string)
+    };
+    let kept = Some(IMMUTABLE.to_string());
+    let asked = Some(REVALIDATE.to_string());
+    assert_eq!(cache("/a.wasm?v=3f9a0c"), kept);
+    assert_eq!(cache("/a.wasm?x=1&v=3f9a0c#frag"), kept);
+    assert_eq!(cache("/a.wasm"), asked);
+    assert_eq!(cache("/a.wasm?v="), asked, "an empty version names nothing");
+    assert_eq!(cache("/a.wasm?vv=1"), asked);
+    assert_eq!(cache("/a.wasm#v=1"), asked, "a fragment is not a query");
+    assert_eq!(cache("/?lang=ru"), asked);
+    // An error is never kept.
+    let missing = exchange(server.addr, b"GET /gone.wasm?v=1 HTTP/1.1\r\n\r\n");
+    assert!(missing.contains("Cache-Control: no-cache\r\n"), "{missing}");
+}
+
+#[test]
 fn head_missing_files_other_methods_and_bad_requests_get_their_status() {
     let server = start(&site("status"), 0).unwrap();
     let head = exchange(server.addr, b"HEAD /a.wasm HTTP/1.1\r\n\r\n");

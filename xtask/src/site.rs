@@ -61,7 +61,7 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
     } else {
         println!("xtask: --no-opt: skipping wasm-opt");
     }
-    copy_file(&cmd::root().join("index.html"), &dist.join("index.html"))?;
+    write_index(&pkg, &dist.join("index.html"))?;
     // The service worker, the app manifest and its icons (offline and installable).
     for name in SITE_FILES {
         copy_file(&cmd::root().join("site").join(name), &dist.join(name))?;
@@ -74,6 +74,39 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
     report_size(&bg, sizes)?;
     println!("xtask: site ready in {}", dist.display());
     Ok(dist)
+}
+
+/// The placeholder in `index.html` for the build's hash (see [`write_index`]).
+const BUILD_PLACEHOLDER: &str = "__ATTLAB_BUILD__";
+
+/// Writes `index.html` into `dist/` as `to`, with the hash of the wasm and its JS glue in
+/// `pkg` in place of [`BUILD_PLACEHOLDER`]: the page asks for both with `?v=<hash>`, so a
+/// host may keep them for good (`attlab-serve` does: V8 then reuses its compiled code on
+/// every later load) and a new build is a new URL.
+fn write_index(pkg: &Path, to: &Path) -> Result<()> {
+    let mut hasher = Sha256::new();
+    for name in [format!("{WEB_LIB}_bg.wasm"), format!("{WEB_LIB}.js")] {
+        hasher.update(read(&pkg.join(name))?);
+    }
+    let hash: String = hasher.finalize()[..8]
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    let from = cmd::root().join("index.html");
+    let html = fs::read_to_string(&from).map_err(|e| format!("reading {}: {e}", from.display()))?;
+    let html = versioned(&html, &hash).map_err(|e| format!("{}: {e}", from.display()))?;
+    fs::write(to, html).map_err(|e| format!("writing {}: {e}", to.display()).into())
+}
+
+/// `html` with the build `hash` in place of its one [`BUILD_PLACEHOLDER`]; an error if it has
+/// none (the page would ask for unversioned files) or several.
+fn versioned(html: &str, hash: &str) -> std::result::Result<String, String> {
+    match html.matches(BUILD_PLACEHOLDER).count() {
+        1 => Ok(html.replace(BUILD_PLACEHOLDER, hash)),
+        n => Err(format!(
+            "expected the build placeholder {BUILD_PLACEHOLDER} once, found it {n} times"
+        )),
+    }
 }
 
 /// rustc's wasm for the page, before wasm-bindgen (it still has its function names).
@@ -280,10 +313,24 @@ fn copy_dir(from: &Path, to: &Path) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::human;
+    use super::{BUILD_PLACEHOLDER, human, versioned};
 
     #[test]
     fn human_sizes() {
         assert_eq!(human(1024 * 1024), "1048576 B (1.00 MiB)");
+    }
+
+    #[test]
+    fn the_page_gets_its_build_hash_once() {
+        let page = format!("const build = '?v={BUILD_PLACEHOLDER}';");
+        assert_eq!(
+            versioned(&page, "0a1b2c").as_deref(),
+            Ok("const build = '?v=0a1b2c';")
+        );
+        assert!(versioned("no placeholder", "0a1b2c").is_err());
+        assert!(versioned(&page.repeat(2), "0a1b2c").is_err());
+        // The real page has it.
+        let html = include_str!("../../index.html");
+        assert!(versioned(html, "0a1b2c").is_ok_and(|v| v.contains("?v=0a1b2c")));
     }
 }
