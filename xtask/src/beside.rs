@@ -38,8 +38,6 @@ pub fn start(url: &str, soak_minutes: f64, tests: &[&str], niceness: u8) -> Resu
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
     let first = tests.first().copied().unwrap_or("page");
     let log = dir.join(format!("beside-{first}.log"));
-    let out = File::create(&log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
-    let err = out.try_clone()?;
     let mut command =
         if niceness > 0 && crate::cmd::probe(Command::new("nice").arg("true")).is_some() {
             let mut nice = Command::new("nice");
@@ -54,10 +52,18 @@ pub fn start(url: &str, soak_minutes: f64, tests: &[&str], niceness: u8) -> Resu
         .env("ATTLAB_PAGE_URL", url)
         .env("ATTLAB_SOAK_MINUTES", soak_minutes.to_string())
         .env("CHROMEDRIVER", crate::tools::CHROMEDRIVER)
-        .current_dir(&package)
-        .stdin(Stdio::null())
-        .stdout(out)
-        .stderr(err);
+        .current_dir(&package);
+    spawn(command, log)
+}
+
+/// Starts `command` in the background, its stdout and stderr written to `log`.
+pub fn spawn(mut command: Command, log: PathBuf) -> Result<Beside> {
+    if let Some(dir) = log.parent() {
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
+    }
+    let out = File::create(&log).map_err(|e| format!("cannot write {}: {e}", log.display()))?;
+    let err = out.try_clone()?;
+    command.stdin(Stdio::null()).stdout(out).stderr(err);
     let line = crate::cmd::describe(&command);
     println!("$ {line} > {} &", log.display());
     let child = command

@@ -242,6 +242,10 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     doc.env("RUSTDOCFLAGS", "-D warnings");
     suite.check("cargo doc", doc)?;
     native_tests(suite)?;
+    // The wasm tests build and run beside the site's build: each leaves a core partly idle
+    // on its own (the site's last crate and its fat LTO run on one; the wasm tests wait for
+    // their browser), and neither reuses the other's build (another profile). In a build
+    // directory of their own, as cargo locks one for a whole build.
     let mut browser = cargo(&format!(
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
@@ -249,13 +253,18 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     // Each lab's reproduction runs inside one test call; the default 20 s per call is too
     // short for the 600-s scenarios of paper 1 on a loaded 2-core machine.
     tools::headless_test_env(&mut browser, 600);
-    suite.tests("test (wasm, headless Chromium)", browser)?;
+    browser.env("CARGO_TARGET_DIR", cmd::target_dir().join("wasm-tests"));
+    let log = cmd::target_dir().join("wasm-tests.log");
+    let wasm = suite.step("start the wasm tests beside", || {
+        crate::beside::spawn(browser, log)
+    })?;
     // Without wasm-opt: `cargo xtask dist` runs it and ships whichever output is smaller
     // gzipped, and for this app that is wasm-bindgen's (-O2 makes the download 3 % bigger),
     // so the page tests test the file a host serves, and the run saves wasm-opt's ~65 s.
     let dist = suite.step("build site (dist/)", || {
         site::build(false, site::SizeReport::Gzip)
     })?;
+    suite.finish_beside("test (wasm, headless Chromium)", wasm)?;
     let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     // Every page test but those beside them, one at a time: most of them count frames, and
