@@ -305,26 +305,30 @@ fn reply_to(root: &Path, request: &Request) -> Reply {
     }
 }
 
-/// `Cache-Control` of a file that may change under its URL: the browser asks again each time.
+/// `Cache-Control` of a file that may change under its URL: the browser asks for it again
+/// each time (and, with no validator sent, gets it whole).
 const REVALIDATE: &str = "no-cache";
 /// `Cache-Control` of a versioned URL, which names one build's bytes for good.
 const IMMUTABLE: &str = "public, max-age=31536000, immutable";
 
 /// The `Cache-Control` for a request target. The page asks for its wasm and its JS glue with
-/// the build's hash in the query (`?v=…`, written into `index.html` by `cargo xtask dist`), so
-/// those bytes never change under their URL: the browser keeps them (and V8 its compiled
-/// code) without asking again, and a new build is a new URL. Everything else (`index.html`
-/// itself, the fonts, the service worker) may change under its name and is revalidated.
+/// the build's hash in the query (`pkg/…?v=…`, written into `index.html` by `cargo xtask
+/// dist`), so those bytes never change under their URL: the browser keeps them (and V8 its
+/// compiled code) without asking again, and a new build is a new URL. Only `pkg/` is
+/// versioned that way; everything else (`index.html` itself, the fonts, the service worker)
+/// may change under its name, whatever its query.
 fn cache_control(target: &str) -> &'static str {
-    let query = target
-        .split('#')
-        .next()
-        .and_then(|t| t.split_once('?'))
-        .map_or("", |(_, q)| q);
+    let Some((path, query)) = target.split('#').next().and_then(|t| t.split_once('?')) else {
+        return REVALIDATE;
+    };
     let versioned = query
         .split('&')
         .any(|pair| pair.strip_prefix("v=").is_some_and(|v| !v.is_empty()));
-    if versioned { IMMUTABLE } else { REVALIDATE }
+    if versioned && path.starts_with("/pkg/") {
+        IMMUTABLE
+    } else {
+        REVALIDATE
+    }
 }
 
 /// Maps a request URL to a file under `root`; `None` for anything escaping it or missing.

@@ -66,7 +66,10 @@ fn serves_a_wasm_file_with_its_type_closes_and_stops() {
 
 #[test]
 fn a_versioned_url_is_kept_and_every_other_is_revalidated() {
-    let server = start(&site("cache"), 0).unwrap();
+    let dir = site("cache");
+    std::fs::create_dir_all(dir.join("pkg")).unwrap();
+    std::fs::write(dir.join("pkg/a.wasm"), b"\0asm").unwrap();
+    let server = start(&dir, 0).unwrap();
     let cache = |target: &str| {
         let reply = exchange(
             server.addr,
@@ -83,15 +86,20 @@ fn a_versioned_url_is_kept_and_every_other_is_revalidated() {
     };
     let kept = Some(IMMUTABLE.to_string());
     let asked = Some(REVALIDATE.to_string());
-    assert_eq!(cache("/a.wasm?v=3f9a0c"), kept);
-    assert_eq!(cache("/a.wasm?x=1&v=3f9a0c#frag"), kept);
-    assert_eq!(cache("/a.wasm"), asked);
-    assert_eq!(cache("/a.wasm?v="), asked, "an empty version names nothing");
-    assert_eq!(cache("/a.wasm?vv=1"), asked);
-    assert_eq!(cache("/a.wasm#v=1"), asked, "a fragment is not a query");
+    assert_eq!(cache("/pkg/a.wasm?v=3f9a0c"), kept);
+    assert_eq!(cache("/pkg/a.wasm?x=1&v=3f9a0c#frag"), kept);
+    assert_eq!(cache("/pkg/a.wasm"), asked);
+    assert_eq!(
+        cache("/pkg/a.wasm?v="),
+        asked,
+        "an empty version names nothing"
+    );
+    assert_eq!(cache("/pkg/a.wasm?vv=1"), asked);
+    assert_eq!(cache("/pkg/a.wasm#v=1"), asked, "a fragment is not a query");
+    assert_eq!(cache("/a.wasm?v=3f9a0c"), asked, "only pkg/ is versioned");
     assert_eq!(cache("/?lang=ru"), asked);
     // An error is never kept.
-    let missing = exchange(server.addr, b"GET /gone.wasm?v=1 HTTP/1.1\r\n\r\n");
+    let missing = exchange(server.addr, b"GET /pkg/gone.wasm?v=1 HTTP/1.1\r\n\r\n");
     assert!(missing.contains("Cache-Control: no-cache\r\n"), "{missing}");
 }
 

@@ -1,18 +1,19 @@
-//! Page tests started beside the others instead of after them: the lessons and the page fuzz
-//! in one run (the test runner takes them in the order of their names), the soak in a run of
-//! its own at a lower CPU priority. The lessons wait on the clock more than on the cores: they
-//! run to their pauses at the lesson's speed, so a slower frame does not make them take much
-//! longer. The fuzz is the other kind: eframe runs a UI pass for every press and key it is
-//! sent, on the page's one thread, while the page tests beside it mostly wait for
-//! SwiftShader's frames, which left a core partly idle: with the fuzz among them the page
-//! tests took 433 s with both cores 84 % busy, with it beside them 388 s at 95 % (one
-//! machine, one run after the other). The soak keeps each lab for its seconds whatever the
-//! cores do, and runs each at the highest speed, so it takes every cycle it is given: run
-//! last after the fuzz it held the step for a minute with the page tests done; niced from the
-//! start it takes the cycles the others leave (a third Chromium at their priority would slow
-//! the frames they count). cargo holds its build directory for as long as its tests run, so
-//! these run the page tests' binary itself (built by then) with their output in a file,
-//! printed when they end.
+//! Runs started beside the others instead of after them, their output in a log printed when
+//! they end: the wasm tests beside the site's build (see `suite`), and page tests beside the
+//! other page tests: the lessons and the page fuzz in one run (the test runner takes them in
+//! the order of their names), the soak in a run of its own at a lower CPU priority. The
+//! lessons wait on the clock more than on the cores: they run to their pauses at the lesson's
+//! speed, so a slower frame does not make them take much longer. The fuzz is the other kind:
+//! eframe runs a UI pass for every press and key it is sent, on the page's one thread, while
+//! the page tests beside it mostly wait for SwiftShader's frames, which left a core partly
+//! idle: with the fuzz among them the page tests took 433 s with both cores 84 % busy, with
+//! it beside them 388 s at 95 % (one machine, one run after the other). The soak keeps each
+//! lab for its seconds whatever the cores do, and runs each at the highest speed, so it takes
+//! every cycle it is given: run last after the fuzz it held the step for a minute with the
+//! page tests done; niced from the start it takes the cycles the others leave (a third
+//! Chromium at their priority would slow the frames they count). cargo holds its build
+//! directory for as long as its tests run, so the page runs use the page tests' binary
+//! itself (built by then).
 
 use crate::cmd::Result;
 use std::fs::File;
@@ -35,17 +36,19 @@ pub fn start(url: &str, soak_minutes: f64, tests: &[&str], niceness: u8) -> Resu
     let exe = page_test_binary()?;
     let package = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests");
     let dir = package.join("../target/page-test");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot make {}: {e}", dir.display()))?;
     let first = tests.first().copied().unwrap_or("page");
     let log = dir.join(format!("beside-{first}.log"));
-    let mut command =
-        if niceness > 0 && crate::cmd::probe(Command::new("nice").arg("true")).is_some() {
-            let mut nice = Command::new("nice");
-            nice.args(["-n", &niceness.to_string()]).arg(&exe);
-            nice
-        } else {
-            Command::new(&exe)
-        };
+    let nice = niceness > 0 && crate::cmd::probe(Command::new("nice").arg("true")).is_some();
+    if niceness > 0 && !nice {
+        println!("xtask: no `nice` on this machine: {first} runs at the usual priority");
+    }
+    let mut command = if nice {
+        let mut nice = Command::new("nice");
+        nice.args(["-n", &niceness.to_string()]).arg(&exe);
+        nice
+    } else {
+        Command::new(&exe)
+    };
     command
         .args(["--ignored", "--nocapture", "--exact", "--test-threads=1"])
         .args(tests)
@@ -78,9 +81,9 @@ pub fn spawn(mut command: Command, log: PathBuf) -> Result<Beside> {
 }
 
 impl Beside {
-    /// Waits for the test to end; prints its log. Returns whether it passed, its output and
+    /// Waits for the run to end; prints its log. Returns whether it passed, its output and
     /// how long it ran: until its log was last written (its closing `test result` line), not
-    /// until this wait, which comes after the page tests.
+    /// until this wait, which comes after the steps run meanwhile.
     pub fn finish(mut self) -> Result<(bool, String, Duration)> {
         let status = self
             .child
@@ -99,7 +102,7 @@ impl Beside {
 }
 
 impl Drop for Beside {
-    /// A run that stopped early (a failed page test) takes the tests beside it with it.
+    /// A run still going when its step is abandoned (a failed page test) is stopped with it.
     fn drop(&mut self) {
         if matches!(self.child.try_wait(), Ok(None)) {
             let _ = self.child.kill();

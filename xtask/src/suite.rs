@@ -4,6 +4,7 @@
 use crate::cmd::{self, Result};
 use crate::{site, tools};
 use attlab_serve as serve;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -242,10 +243,16 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     doc.env("RUSTDOCFLAGS", "-D warnings");
     suite.check("cargo doc", doc)?;
     native_tests(suite)?;
-    // The wasm tests build and run beside the site's build: each leaves a core partly idle
-    // on its own (the site's last crate and its fat LTO run on one; the wasm tests wait for
-    // their browser), and neither reuses the other's build (another profile). In a build
-    // directory of their own, as cargo locks one for a whole build.
+    let dist = site_and_wasm_tests(suite)?;
+    page_tests(suite, &dist)
+}
+
+/// The wasm tests, built and run beside the site's build: each leaves a core partly idle on
+/// its own (the site's last crate and its fat LTO run on one; the wasm tests wait for their
+/// browser), and neither reuses the other's build (another profile, so only the build
+/// scripts and proc macros are built twice). In a build directory of their own, as cargo
+/// locks one for a whole build. Returns the site's folder.
+fn site_and_wasm_tests(suite: &mut Suite) -> Result<PathBuf> {
     let mut browser = cargo(&format!(
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
@@ -263,9 +270,18 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     // so the page tests test the file a host serves, and the run saves wasm-opt's ~65 s.
     let dist = suite.step("build site (dist/)", || {
         site::build(false, site::SizeReport::Gzip)
-    })?;
-    suite.finish_beside("test (wasm, headless Chromium)", wasm)?;
-    let server = suite.step("serve dist/", || Ok(serve::start(&dist, 0)?))?;
+    });
+    // Reported even when the site failed (rather than killed unseen).
+    let wasm = suite.finish_beside("test (wasm, headless Chromium)", wasm);
+    let dist = dist?;
+    wasm?;
+    Ok(dist)
+}
+
+/// The page tests against `dist`, served on loopback, with the soak, the lessons and the
+/// fuzz beside them (see `beside`).
+fn page_tests(suite: &mut Suite, dist: &Path) -> Result<()> {
+    let server = suite.step("serve dist/", || Ok(serve::start(dist, 0)?))?;
     println!("xtask: serving {} at {}", dist.display(), server.url());
     // Every page test but those beside them, one at a time: most of them count frames, and
     // a third Chromium at their priority on the 2 cores would slow the frames of the other
@@ -274,33 +290,36 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     // page test reuses that build (`-p attlab-tests` alone re-resolved them and rebuilt 71
     // crates, 83 s in CI).
     let mut page = cargo(&format!(
-        "test --workspace --test page -- --ignored --nocapture --test-threads=1 --skip {}",
+        "test --workspace --test page -- --ignored --nocapture --test-threads=1 --skip {SOAK} --skip {}",
         BESIDE.join(" --skip ")
     ));
     page.env("ATTLAB_PAGE_URL", server.url());
-    page.env("ATTLAB_DIST", &dist);
+    page.env("ATTLAB_DIST", dist);
     page.env("CHROMEDRIVER", tools::CHROMEDRIVER);
-    // The lessons and the fuzz beside them, and the soak niced beside them all (see `beside`).
-    let [soak_test, beside_tests @ ..] = BESIDE;
     let soak = suite.step("start the soak beside, niced", || {
-        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &[soak_test], SOAK_NICENESS)
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &[SOAK], SOAK_NICENESS)
     })?;
     let beside = suite.step("start the lessons and fuzz beside", || {
-        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &beside_tests, 0)
+        crate::beside::start(&server.url(), CI_SOAK_MINUTES, &BESIDE, 0)
     })?;
+    // A failed page test stops the runs beside it (dropped: killed); a failure among those
+    // lets the other finish and be reported.
     suite.tests("page (headless Chromium)", page)?;
-    suite.finish_beside("lessons, fuzz, beside", beside)?;
-    suite.finish_beside(&format!("soak ({CI_SOAK_MINUTES} min), niced beside"), soak)
+    let lessons_and_fuzz = suite.finish_beside("lessons, fuzz, beside", beside);
+    let soak = suite.finish_beside(&format!("soak ({CI_SOAK_MINUTES} min), niced beside"), soak);
+    lessons_and_fuzz.and(soak)
 }
 
-/// The page tests `cargo xtask test` runs beside the others (exact names): first the soak,
-/// in a run of its own, niced: it keeps each lab for its seconds at the highest speed and
-/// takes whatever cycles it is given; then the lessons and the fuzz (its default: one round
-/// of random input per lab), one after the other in the order of their names. The lessons
-/// wait on the clock more than on the cores; the fuzz keeps one core busy with the app's UI
-/// passes, which the other page tests, mostly painting, left partly idle (see `beside`).
-const BESIDE: [&str; 3] = [
-    "soak",
+/// The soak, run beside the other page tests in a run of its own, niced: it keeps each lab
+/// for its seconds at the highest speed and takes whatever cycles it is given.
+const SOAK: &str = "soak";
+
+/// The page tests `cargo xtask test` runs beside the others in one run (exact names, one
+/// after the other in the order of their names): the lessons and the fuzz (its default:
+/// one round of random input per lab). The lessons wait on the clock more than on the cores;
+/// the fuzz keeps one core busy with the app's UI passes, which the other page tests, mostly
+/// painting, left partly idle (see `beside`).
+const BESIDE: [&str; 2] = [
     "lessons_open_at_their_step_and_pause",
     "page_survives_random_input",
 ];

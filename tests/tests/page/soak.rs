@@ -107,6 +107,16 @@ impl Soak {
     /// Lab `id` for its share of the soak: samples every so often, the simulation must
     /// move on between them and the console stay clean.
     fn one_lab(&mut self, session: &Session<'_>, id: &str) {
+        // The switch first (the first sample would report a page that never made it): in
+        // `cargo xtask test` the soak runs niced, and its page may take a while to get a frame.
+        let switch = Instant::now();
+        while switch.elapsed() < FRAME_TIMEOUT {
+            let lab = session.execute("return (window.attlabStatus || {}).lab ?? null;");
+            if lab.is_ok_and(|v| v.as_str() == Some(id)) {
+                break;
+            }
+            sleep(Duration::from_millis(100));
+        }
         let lab_start = Instant::now();
         let mut steps_before: Option<f64> = None;
         while lab_start.elapsed() < self.per_lab {
