@@ -88,10 +88,7 @@ fn write_index(pkg: &Path, to: &Path) -> Result<()> {
     for name in [format!("{WEB_LIB}_bg.wasm"), format!("{WEB_LIB}.js")] {
         hasher.update(read(&pkg.join(name))?);
     }
-    let hash: String = hasher.finalize()[..8]
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    let hash = hex(&hasher.finalize()[..8]);
     let from = cmd::root().join("index.html");
     let html = fs::read_to_string(&from).map_err(|e| format!("reading {}: {e}", from.display()))?;
     let html = versioned(&html, &hash).map_err(|e| format!("{}: {e}", from.display()))?;
@@ -107,6 +104,11 @@ fn versioned(html: &str, hash: &str) -> std::result::Result<String, String> {
             "expected the build placeholder {BUILD_PLACEHOLDER} once, found it {n} times"
         )),
     }
+}
+
+/// `bytes` as lower-case hex digits (a digest in a file name or a URL).
+fn hex(bytes: &[u8]) -> String {
+    bytes.iter().map(|b| format!("{b:02x}")).collect()
 }
 
 /// rustc's wasm for the page, before wasm-bindgen (it still has its function names).
@@ -169,11 +171,7 @@ fn optimise_wasm(raw: &Path, bg: &Path) -> Result<()> {
         hasher.update(flag.as_bytes());
     }
     hasher.update(tools::BINARYEN_VERSION.as_bytes());
-    let key: String = hasher
-        .finalize()
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    let key = hex(&hasher.finalize());
     let cache_dir = cmd::target_dir().join("wasm-opt-cache");
     let cached = cache_dir.join(format!("{key}.wasm"));
     if cached.is_file() {
@@ -313,11 +311,16 @@ fn copy_dir(from: &Path, to: &Path) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::{BUILD_PLACEHOLDER, human, versioned};
+    use super::{BUILD_PLACEHOLDER, hex, human, versioned};
 
     #[test]
     fn human_sizes() {
         assert_eq!(human(1024 * 1024), "1048576 B (1.00 MiB)");
+    }
+
+    #[test]
+    fn digests_read_as_hex() {
+        assert_eq!(hex(&[0x00, 0x0a, 0xff]), "000aff");
     }
 
     #[test]
