@@ -18,8 +18,9 @@ if (!window.attlabWorkers) {
   const DEPTH = 16;
   const next = (w) => { const j = W.queue.shift(); if (j) { W.pending++; w.postMessage(j); } };
   const spawn = () => {
-    const w = new Worker('./sweep-worker.js', { type: 'module' });
-    w.onmessage = (e) => { W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; next(w); };
+    // Under the page's build (index.html sets it), so the worker loads the same glue and wasm.
+    const w = new Worker('./sweep-worker.js' + (window.attlabBuild || ''), { type: 'module' });
+    w.onmessage = (e) => { W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; W.build = e.data.build; next(w); };
     w.onerror = (e) => { e.preventDefault(); W.broken = true; W.failed = e.message || 'a worker could not start'; W.cancel(); };
     // The page's compiled module, so the worker need not compile the wasm again; a
     // browser that cannot send one leaves the worker to fetch it.

@@ -108,6 +108,10 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
     let shared = session
         .execute("return window.attlabWorkers ? window.attlabWorkers.shared === true : null;")
         .ok();
+    // ...and ran the page's own build: the query their glue and wasm were asked for under.
+    let builds = session
+        .execute("return [window.attlabBuild, window.attlabWorkers && window.attlabWorkers.build];")
+        .ok();
     let (s, s_waited, s_fps) = match run_sweep(session, base, lab, false, window_s) {
         Ok(r) => r,
         Err(e) => return vec![format!("workers: {e}")],
@@ -120,6 +124,9 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
         problems.push(format!(
             "workers: {lab}: the workers did not use the page's compiled module ({shared:?})"
         ));
+    }
+    if let Some(problem) = build_problem(builds.as_ref()) {
+        problems.push(format!("workers: {lab}: {problem}"));
     }
     if s.workers != 0 {
         problems.push(format!(
@@ -161,4 +168,34 @@ fn sweeps_run_in_web_workers_with_the_numbers_of_the_slices() {
         }));
         problems
     });
+}
+
+/// What is wrong with `[the page's build query, the one the workers loaded]`, if anything:
+/// both must be the same `?v=` and sixteen hex digits (the hash `cargo xtask dist` writes).
+fn build_problem(builds: Option<&Value>) -> Option<String> {
+    let pair = builds.and_then(Value::as_array);
+    let page = pair.and_then(|p| p.first()).and_then(Value::as_str);
+    let worker = pair.and_then(|p| p.get(1)).and_then(Value::as_str);
+    let versioned = |q: &str| {
+        q.strip_prefix("?v=")
+            .is_some_and(|h| h.len() == 16 && h.bytes().all(|b| b.is_ascii_hexdigit()))
+    };
+    match (page, worker) {
+        (Some(p), Some(w)) if p == w && versioned(p) => None,
+        _ => Some(format!(
+            "the workers did not load the page's build (page, workers: {builds:?})"
+        )),
+    }
+}
+
+#[test]
+fn a_worker_on_another_build_or_an_unversioned_one_is_a_problem() {
+    let pair = |p: &str, w: &str| serde_json::json!([p, w]);
+    let hash = "?v=0123456789abcdef";
+    assert_eq!(build_problem(Some(&pair(hash, hash))), None);
+    assert!(build_problem(Some(&pair(hash, "?v=0123456789abcdee"))).is_some());
+    assert!(build_problem(Some(&pair("?v=__ATTLAB_BUILD__", "?v=__ATTLAB_BUILD__"))).is_some());
+    assert!(build_problem(Some(&pair("", ""))).is_some());
+    assert!(build_problem(Some(&serde_json::json!([hash, null]))).is_some());
+    assert!(build_problem(None).is_some());
 }
