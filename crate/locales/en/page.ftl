@@ -418,3 +418,23 @@ boot-loading = Loading Attitude Lab…
 boot-failed = Attitude Lab could not start
 boot-failed-why = Either the page's files did not load, or this browser lacks WebAssembly or WebGL2. Try reloading, or use a recent Chrome, Firefox or Safari.
 boot-no-script = Attitude Lab needs JavaScript: please enable it and reload the page.
+
+## The words of units (i18n::unit): each word of a unit the code writes (`N·m`, `deg/s`) is
+## shown as its message here; the signs between (·, /, ², √) stay.
+unit-deg = °
+unit-s = s
+unit-ms = ms
+unit-min = min
+unit-h = h
+unit-Hz = Hz
+unit-rad = rad
+unit-kg = kg
+unit-m = m
+unit-mm = mm
+unit-km = km
+unit-N = N
+unit-nT = nT
+unit-ug = µg
+unit-bit = bit
+unit-J = J
+unit-mJ = mJ

@@ -429,3 +429,23 @@ boot-loading = Загрузка Attitude Lab…
 boot-failed = Attitude Lab не удалось запустить
 boot-failed-why = Либо файлы страницы не загрузились, либо в этом браузере нет WebAssembly или WebGL2. Перезагрузите страницу или откройте её в свежей версии Chrome, Firefox или Safari.
 boot-no-script = Для Attitude Lab нужен JavaScript: включите его и перезагрузите страницу.
+
+## Слова единиц (i18n::unit): каждое слово единицы, как её пишет код (`N·m`, `deg/s`),
+## показывается так, как здесь; знаки между ними (·, /, ², √) остаются.
+unit-deg = °
+unit-s = с
+unit-ms = мс
+unit-min = мин
+unit-h = ч
+unit-Hz = Гц
+unit-rad = рад
+unit-kg = кг
+unit-m = м
+unit-mm = мм
+unit-km = км
+unit-N = Н
+unit-nT = нТл
+unit-ug = мкg
+unit-bit = бит
+unit-J = Дж
+unit-mJ = мДж

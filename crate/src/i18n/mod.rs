@@ -9,6 +9,7 @@
 //! other has, and the page's own test fails when a message it asks for exists in neither.
 
 mod series;
+mod units;
 
 pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
@@ -18,6 +19,7 @@ pub use series::{
     series_label, series_legend, series_legend_parts,
 };
 use std::sync::OnceLock;
+pub use units::unit;
 
 /// A language of the page.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -124,7 +124,7 @@ pub fn series_legend_parts(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> Legen
     let what = if spec.unit.is_empty() {
         what
     } else {
-        format!("{what} [{}]", crate::model::display_unit(spec.unit))
+        format!("{what} [{}]", super::unit(lang, spec.unit))
     };
     LegendParts { owner, what }
 }

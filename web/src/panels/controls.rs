@@ -312,18 +312,19 @@ pub(super) fn param_widget(
             if spec.scale == Scale::Log && spec.min == 0.0 {
                 slider = slider.logarithmic(true).smallest_positive(1e-4);
             }
-            if !spec.unit.is_empty() {
-                slider = slider.suffix(format!(" {}", spec.unit));
+            let unit = i18n::unit(lang, spec.unit);
+            if !unit.is_empty() {
+                slider = slider.suffix(format!(" {unit}"));
             }
             if spec.kind == ParamKind::Integer {
                 slider = slider.integer();
             }
-            let (r, label) = super::fit::slider(ui, slider, (spec.key, label), spec.unit);
+            let (r, label) = super::fit::slider(ui, slider, (spec.key, label), &unit);
             if !hint.is_empty() {
                 label.on_hover_text(hint.clone());
             }
             // A screen reader reads the value with its unit ("0.02 °/s").
-            let text = format!("{} {}", crate::a11y::tidy(v), spec.unit);
+            let text = format!("{} {unit}", crate::a11y::tidy(v));
             ui.ctx()
                 .accesskit_node_builder(r.id, |node| node.set_value(text.trim_end()));
             if let Some(keyed) = slider_keys::handle(ui, &r, Rail::of(spec), value) {

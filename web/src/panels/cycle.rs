@@ -105,7 +105,13 @@ fn equations(ui: &mut Ui, app: &AppState, c: &KalmanCycle, terms: &[CycleTerm]) 
     let names: Vec<String> = c
         .states
         .iter()
-        .map(|s| format!("{} ({})", s.key, s.unit))
+        .map(|s| {
+            format!(
+                "{} ({})",
+                s.key,
+                attlab::i18n::unit(app.view().lang(), s.unit)
+            )
+        })
         .collect();
     ui.label(
         RichText::new(tr_with(

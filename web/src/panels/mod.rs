@@ -113,6 +113,7 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         time_axis: tr(app, "axis-time"),
         mixed_units: tr(app, "axis-mixed-units"),
         group_axis: Box::new(move |group| group.axis_message().map(|id| tr(app, id))),
+        unit: Box::new(move |unit| i18n::unit(app.view().lang(), unit)),
         bands: tr(app, "bands-legend"),
         no_data: tr(app, "legend-no-data"),
         no_positive: tr(app, "legend-no-positive"),

@@ -62,6 +62,8 @@ pub struct PlotWords<'a> {
     pub mixed_units: String,
     /// The noun before the unit on the y axis of a plot of one group's series ("error").
     pub group_axis: Box<dyn Fn(SeriesGroup) -> Option<String> + 'a>,
+    /// A unit as the code writes it (`deg/s`) in the reader's words (`°/с`).
+    pub unit: Box<dyn Fn(&str) -> String + 'a>,
     /// The legend's entry for the ±3σ bands.
     pub bands: String,
     /// After a legend entry whose series has no value anywhere in the run so far ("no values
@@ -250,7 +252,7 @@ fn y_title(
     } else {
         let unit = match first.unit {
             "" => "[–]".to_string(),
-            unit => format!("[{}]", attlab::model::display_unit(unit)),
+            unit => format!("[{}]", (words.unit)(unit)),
         };
         match noun {
             Some(noun) => [format!("{noun} {unit}"), unit],
@@ -393,6 +395,7 @@ mod tests {
             time_axis: String::new(),
             mixed_units: "mixed".into(),
             group_axis: Box::new(|g| g.axis_message().map(str::to_string)),
+            unit: Box::new(attlab::model::display_unit),
             bands: String::new(),
             no_data: String::new(),
             no_positive: String::new(),

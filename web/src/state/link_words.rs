@@ -43,7 +43,7 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
         item,
         ("label", label(lang, lab, spec).into()),
         ("range", range(lang, lab, spec).into()),
-        ("kept", shown(spec, kept).into()),
+        ("kept", shown(lang, spec, kept).into()),
     ];
     i18n::t_with(lang, id, &args)
 }
@@ -74,7 +74,7 @@ pub fn param_problem(lang: Lang, lab: &dyn Lab, specs: &[ParamSpec], e: &ParamEr
         }
         ParamError::NotANumber { text, .. } => ("param-not-a-number", text.clone()),
         ParamError::NoSuchOption { text, .. } => ("param-no-option", text.clone()),
-        ParamError::OutOfRange { value, .. } => ("param-out-of-range", shown(spec, *value)),
+        ParamError::OutOfRange { value, .. } => ("param-out-of-range", shown(lang, spec, *value)),
         ParamError::NotInteger { value, .. } => ("param-not-whole", value.to_string()),
         _ => ("param-not-finite", String::new()),
     };
@@ -96,9 +96,14 @@ fn range(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
             })
             .collect::<Vec<_>>()
             .join(", "),
-        _ => format!("{} … {} {}", spec.min, spec.max, spec.unit)
-            .trim_end()
-            .to_string(),
+        _ => format!(
+            "{} … {} {}",
+            spec.min,
+            spec.max,
+            i18n::unit(lang, spec.unit)
+        )
+        .trim_end()
+        .to_string(),
     }
 }
 
@@ -107,9 +112,11 @@ fn label(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
     i18n::lab_text(lang, &i18n::param_label_id(lab.id(), spec.key), spec.label)
 }
 
-/// A value as the slider shows it, with its unit.
-fn shown(spec: &ParamSpec, v: f64) -> String {
-    format!("{v} {}", spec.unit).trim_end().to_string()
+/// A value as the slider shows it, with its unit in `lang`.
+fn shown(lang: Lang, spec: &ParamSpec, v: f64) -> String {
+    format!("{v} {}", i18n::unit(lang, spec.unit))
+        .trim_end()
+        .to_string()
 }
 
 /// The lab's parameter whose key is nearest to `key` (an edit distance of at most a third of

@@ -58,9 +58,10 @@ fn every_slider_of_every_lab_is_mirrored_with_its_name_value_and_range() {
                 "{}",
                 spec.key
             );
-            // Its value in words, with the unit the slider shows.
+            // Its value in words, with the unit the slider shows (in the page's language).
             let text = node.text.as_deref().unwrap_or_default();
-            assert!(text.ends_with(spec.unit), "{}: `{text}`", spec.key);
+            let unit = attlab::i18n::unit(app.view().lang(), spec.unit);
+            assert!(text.ends_with(&unit), "{}: `{text}`", spec.key);
             let [_, _, w, h] = node.rect_css.expect("a slider has a place");
             assert!(w > 10.0 && h > 5.0, "{}: {w}×{h}", spec.key);
         }

@@ -34,7 +34,10 @@ impl Words<'_> {
         if spec.unit.is_empty() {
             label
         } else {
-            format!("{label} [{}]", spec.unit)
+            format!(
+                "{label} [{}]",
+                i18n::unit(self.app.view().lang(), spec.unit)
+            )
         }
     }
 
