@@ -4,15 +4,21 @@
 // (and refreshes the cache); without a network the last build seen is served. Only
 // same-origin GET requests are handled. The core files are cached at install, so the first
 // visit alone is enough.
-const CACHE = 'attitude-lab-v4';
+//
+// The wasm and its glue are kept once per build: under their build's URL (`pkg/…?v=<hash>`)
+// they never change, so the cache is not written again with 6 MB on every load.
+const CACHE = 'attitude-lab-v5';
+// This build's query, as index.html asks for the wasm and its glue (`cargo xtask dist`
+// writes the hash of both here, as there).
+const BUILD = '?v=__ATTLAB_BUILD__';
 const CORE = [
   './',
   './index.html',
   './manifest.json',
   './icon-192.png',
   './icon-512.png',
-  './pkg/attlab_web.js',
-  './pkg/attlab_web_bg.wasm',
+  './pkg/attlab_web.js' + BUILD,
+  './pkg/attlab_web_bg.wasm' + BUILD,
   './sweep-worker.js',
   './assets/fonts/AttLabSans.ttf',
   './assets/fonts/AttLabMono.ttf',
@@ -20,28 +26,65 @@ const CORE = [
   './assets/locales/ru.ftl',
 ];
 
+/// A file of one build: under pkg/, with a `v` query.
+const isBuildFile = (url) => url.pathname.includes('/pkg/') && url.searchParams.get('v');
+
 self.addEventListener('install', (event) => {
   event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(CORE)).then(() => self.skipWaiting()));
 });
 
 self.addEventListener('activate', (event) => {
+  // Older caches go, and so do other builds' wasm and glue in this one: each is 6 MB.
+  const stale = (request) => {
+    const url = new URL(request.url);
+    return url.pathname.includes('/pkg/') && url.search !== BUILD;
+  };
   event.waitUntil(
     caches.keys()
       .then((keys) => Promise.all(keys.filter((k) => k !== CACHE).map((k) => caches.delete(k))))
+      .then(() => caches.open(CACHE))
+      .then((cache) => cache.keys().then((requests) =>
+        Promise.all(requests.filter(stale).map((r) => cache.delete(r))),
+      ))
       .then(() => self.clients.claim()),
   );
 });
 
 self.addEventListener('fetch', (event) => {
   const request = event.request;
-  if (request.method !== 'GET' || new URL(request.url).origin !== self.location.origin) return;
+  const url = new URL(request.url);
+  if (request.method !== 'GET' || url.origin !== self.location.origin) return;
+  if (isBuildFile(url)) {
+    // Still from the network (the browser's HTTP cache answers: the file is immutable, and
+    // there V8 keeps the wasm's compiled code), but kept only once: each is 6 MB. Offline,
+    // only this very build's file: another build's glue or wasm beside this page's would
+    // not run, so without it the page says its files did not load.
+    event.respondWith(
+      caches.open(CACHE).then(async (cache) => {
+        const kept = await cache.match(request);
+        try {
+          const response = await fetch(request);
+          if (response.ok && !kept) {
+            cache.put(request, response.clone());
+          }
+          return response;
+        } catch (error) {
+          if (kept) {
+            return kept;
+          }
+          throw error;
+        }
+      }),
+    );
+    return;
+  }
   event.respondWith(
     fetch(request)
       .then((response) => {
         if (response.ok) {
           const copy = response.clone();
-          // One entry per file, whatever its build query (`?v=`): a new build replaces the
-          // last one's bytes instead of adding 6 MB more (lookups ignore the query too).
+          // One entry per file, whatever its query (the sweep worker's `?v=`); lookups
+          // ignore the query too.
           const key = new URL(request.url);
           key.search = '';
           caches.open(CACHE).then((cache) => cache.put(key.href, copy));

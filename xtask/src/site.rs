@@ -19,9 +19,9 @@ const WEB_PROFILE: &str = "web";
 /// The optimisation level passed to `wasm-opt`.
 const OPT_LEVEL: &str = "-O2";
 
-/// Files of `site/` copied to the root of `dist/`.
+/// Files of `site/` copied to the root of `dist/` (the service worker is written with the
+/// build's hash: [`write_versioned`]).
 const SITE_FILES: &[&str] = &[
-    "sw.js",
     "sweep-worker.js",
     "manifest.json",
     "icon-192.png",
@@ -61,7 +61,7 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
     } else {
         println!("xtask: --no-opt: skipping wasm-opt");
     }
-    write_index(&pkg, &dist.join("index.html"))?;
+    write_versioned(&pkg, &dist)?;
     // The service worker, the app manifest and its icons (offline and installable).
     for name in SITE_FILES {
         copy_file(&cmd::root().join("site").join(name), &dist.join(name))?;
@@ -76,23 +76,34 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
     Ok(dist)
 }
 
-/// The placeholder in `index.html` for the build's hash (see [`write_index`]).
+/// The placeholder in `index.html` and `site/sw.js` for the build's hash (see
+/// [`write_versioned`]).
 const BUILD_PLACEHOLDER: &str = "__ATTLAB_BUILD__";
 
-/// Writes `index.html` into `dist/` as `to`, with the hash of the wasm and its JS glue in
-/// `pkg` in place of [`BUILD_PLACEHOLDER`]: the page asks for both with `?v=<hash>`, so a
-/// host may keep them for good (`attlab-serve` does: V8 then reuses its compiled code on
-/// every later load) and a new build is a new URL.
-fn write_index(pkg: &Path, to: &Path) -> Result<()> {
+/// The files written with the build's hash: (source under the repository's root, name in
+/// `dist/`).
+const VERSIONED_FILES: [(&str, &str); 2] = [("index.html", "index.html"), ("site/sw.js", "sw.js")];
+
+/// Writes `index.html` and the service worker into `dist`, with the hash of the wasm and its
+/// JS glue in `pkg` in place of [`BUILD_PLACEHOLDER`]: the page asks for both with
+/// `?v=<hash>`, so a host may keep them for good (`attlab-serve` does: V8 then reuses its
+/// compiled code on every later load) and a new build is a new URL; the service worker keeps
+/// that build's files and serves them without asking the network.
+fn write_versioned(pkg: &Path, dist: &Path) -> Result<()> {
     let mut hasher = Sha256::new();
     for name in [format!("{WEB_LIB}_bg.wasm"), format!("{WEB_LIB}.js")] {
         hasher.update(read(&pkg.join(name))?);
     }
     let hash = hex(&hasher.finalize()[..8]);
-    let from = cmd::root().join("index.html");
-    let html = fs::read_to_string(&from).map_err(|e| format!("reading {}: {e}", from.display()))?;
-    let html = versioned(&html, &hash).map_err(|e| format!("{}: {e}", from.display()))?;
-    fs::write(to, html).map_err(|e| format!("writing {}: {e}", to.display()).into())
+    for (source, name) in VERSIONED_FILES {
+        let from = cmd::root().join(source);
+        let text =
+            fs::read_to_string(&from).map_err(|e| format!("reading {}: {e}", from.display()))?;
+        let text = versioned(&text, &hash).map_err(|e| format!("{}: {e}", from.display()))?;
+        let to = dist.join(name);
+        fs::write(&to, text).map_err(|e| format!("writing {}: {e}", to.display()))?;
+    }
+    Ok(())
 }
 
 /// `html` with the build `hash` in place of its one [`BUILD_PLACEHOLDER`]; an error if it has
@@ -332,8 +343,12 @@ mod tests {
         );
         assert!(versioned("no placeholder", "0a1b2c").is_err());
         assert!(versioned(&page.repeat(2), "0a1b2c").is_err());
-        // The real page has it.
-        let html = include_str!("../../index.html");
-        assert!(versioned(html, "0a1b2c").is_ok_and(|v| v.contains("?v=0a1b2c")));
+        // The real page and its service worker have it.
+        for text in [
+            include_str!("../../index.html"),
+            include_str!("../../site/sw.js"),
+        ] {
+            assert!(versioned(text, "0a1b2c").is_ok_and(|v| v.contains("'?v=0a1b2c'")));
+        }
     }
 }

@@ -203,6 +203,14 @@ fn page_works_offline_after_one_visit() {
         "page test (offline): service worker ready after {:.1} s",
         start.elapsed().as_secs_f64()
     );
+    // A reload while online, now through the worker: it serves this build's wasm and glue
+    // from its cache and writes nothing more (checked at the end).
+    session.open(&url).expect("reload online");
+    problems.extend(
+        status_problems(&wait_for_frames(&session))
+            .into_iter()
+            .map(|p| format!("reload: {p}")),
+    );
     let _ = session.console();
     // The wasm and its glue are kept in the HTTP cache (versioned URLs, `immutable`): empty
     // it, so the reload below gets every file from the service worker's cache, as it would
@@ -234,12 +242,46 @@ fn page_works_offline_after_one_visit() {
         "offline",
         "screenshot-offline.png",
     ));
+    problems.extend(cached_build_problems(&session));
     drop(session);
     assert!(
         problems.is_empty(),
         "offline page test failed:\n  - {}",
         problems.join("\n  - ")
     );
+}
+
+/// The service worker keeps this build's wasm and glue, under their versioned URLs, and no
+/// other build's: each is 6 MB, and another build's glue would not run with this wasm.
+fn cached_build_problems(session: &Session<'_>) -> Vec<String> {
+    let script = "const done = arguments[arguments.length - 1];\
+        caches.keys().then((names) => Promise.all(names.map((n) => caches.open(n).then((c) => c.keys()))))\
+          .then((lists) => done({ build: window.attlabBuild, pkg: lists.flat().map((r) => new URL(r.url))\
+            .filter((u) => u.pathname.includes('/pkg/')).map((u) => u.pathname.split('/').pop() + u.search).sort() }))\
+          .catch((e) => done({ error: String(e) }));";
+    let found = session.call(
+        "POST",
+        "/execute/async",
+        Some(&json!({ "script": script, "args": [] })),
+    );
+    let Ok(found) = found else {
+        return vec![format!("offline: cannot read the caches: {found:?}")];
+    };
+    let build = found["build"].as_str().unwrap_or("(none)");
+    let want = json!([
+        format!("attlab_web.js{build}"),
+        format!("attlab_web_bg.wasm{build}")
+    ]);
+    if !build.starts_with("?v=") || found["pkg"] != want {
+        return vec![format!(
+            "offline: the service worker's pkg/ files are {found}, want {want}"
+        )];
+    }
+    println!(
+        "page test (offline): the service worker keeps {}",
+        found["pkg"]
+    );
+    Vec::new()
 }
 
 /// A step of every lab's lesson from the teacher's link on a projector (see `lessons.rs`).
