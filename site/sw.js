@@ -50,32 +50,46 @@ self.addEventListener('activate', (event) => {
   );
 });
 
+// A wasm or glue of one build. Still from the network (the browser's HTTP cache answers: the
+// file is immutable, and there V8 keeps the wasm's compiled code), but put into this
+// worker's cache only once, and only this build's: each is 6 MB. When the network fails or
+// has no such file any more (a newer build deployed), the kept copy; never another build's
+// file, whose glue would not run with this page's wasm.
+async function buildFile(event, request, url) {
+  const kept = caches.open(CACHE)
+    .then((cache) => cache.match(request))
+    .catch(() => undefined);
+  let response;
+  try {
+    response = await fetch(request);
+  } catch (error) {
+    const copy = await kept;
+    if (copy) {
+      return copy;
+    }
+    throw error;
+  }
+  const copy = await kept;
+  if (!response.ok) {
+    return copy || response;
+  }
+  if (!copy && url.search === BUILD) {
+    const saved = response.clone();
+    event.waitUntil(
+      caches.open(CACHE)
+        .then((cache) => cache.put(request, saved))
+        .catch((e) => console.warn('Attitude Lab: the offline copy of a file was not kept:', e)),
+    );
+  }
+  return response;
+}
+
 self.addEventListener('fetch', (event) => {
   const request = event.request;
   const url = new URL(request.url);
   if (request.method !== 'GET' || url.origin !== self.location.origin) return;
   if (isBuildFile(url)) {
-    // Still from the network (the browser's HTTP cache answers: the file is immutable, and
-    // there V8 keeps the wasm's compiled code), but kept only once: each is 6 MB. Offline,
-    // only this very build's file: another build's glue or wasm beside this page's would
-    // not run, so without it the page says its files did not load.
-    event.respondWith(
-      caches.open(CACHE).then(async (cache) => {
-        const kept = await cache.match(request);
-        try {
-          const response = await fetch(request);
-          if (response.ok && !kept) {
-            cache.put(request, response.clone());
-          }
-          return response;
-        } catch (error) {
-          if (kept) {
-            return kept;
-          }
-          throw error;
-        }
-      }),
-    );
+    event.respondWith(buildFile(event, request, url));
     return;
   }
   event.respondWith(

@@ -9,21 +9,32 @@
 // glue from its cache (versioned files under pkg/ are kept; see attlab-serve).
 const build = self.location.search;
 const glue = import('./pkg/attlab_web.js' + build);
-// A glue that fails to load is reported with the first point (below), not as an
-// unhandled rejection.
-glue.catch(() => {});
+// A worker that cannot load the page's code says so once: the page stops starting workers
+// and runs its sweeps in slices (web/src/sweep_workers.rs).
+glue.catch((e) => self.postMessage({ fatal: 'a worker could not load the page\'s code: ' + e }));
 
 let ready = null;
+// Failures of `ready` are reported with the point that waits on it (below).
+const start = (init) => {
+  ready = init;
+  ready.catch(() => {});
+};
+
+/// The files under pkg/ this worker has fetched (its glue, and its wasm if it compiled its
+/// own): the page test checks they are the page's build.
+const fetched = () => performance.getEntriesByType('resource')
+  .map((e) => e.name)
+  .filter((name) => name.includes('/pkg/'));
 
 self.onmessage = async (event) => {
   if ('module' in event.data) {
-    ready = glue.then(({ default: init }) => init({ module_or_path: event.data.module }));
+    start(glue.then(({ default: init }) => init({ module_or_path: event.data.module })));
     return;
   }
   const shared = ready !== null;
-  ready ??= glue.then(({ default: init }) =>
-    init({ module_or_path: './pkg/attlab_web_bg.wasm' + build }),
-  );
+  if (!shared) {
+    start(glue.then(({ default: init }) => init({ module_or_path: './pkg/attlab_web_bg.wasm' + build })));
+  }
   const { id, job } = event.data;
   let out;
   try {
@@ -33,5 +44,5 @@ self.onmessage = async (event) => {
   } catch (e) {
     out = JSON.stringify({ err: 'the worker failed: ' + e });
   }
-  self.postMessage({ id, out, shared, build });
+  self.postMessage({ id, out, shared, fetched: fetched() });
 };

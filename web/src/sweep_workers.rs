@@ -20,7 +20,10 @@ if (!window.attlabWorkers) {
   const spawn = () => {
     // Under the page's build (index.html sets it), so the worker loads the same glue and wasm.
     const w = new Worker('./sweep-worker.js' + (window.attlabBuild || ''), { type: 'module' });
-    w.onmessage = (e) => { W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; W.build = e.data.build; next(w); };
+    w.onmessage = (e) => {
+      if ('fatal' in e.data) { W.broken = true; W.failed = e.data.fatal; W.cancel(); return; }
+      W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; W.fetched = e.data.fetched; next(w);
+    };
     w.onerror = (e) => { e.preventDefault(); W.broken = true; W.failed = e.message || 'a worker could not start'; W.cancel(); };
     // The page's compiled module, so the worker need not compile the wasm again; a
     // browser that cannot send one leaves the worker to fetch it.
@@ -41,7 +44,8 @@ if (!window.attlabWorkers) {
     // Idle workers are reused; workers still busy with a stopped sweep are dropped.
     if (W.pending > 0) { W.cancel(); }
     W.queue = []; W.done = []; W.failed = null;
-    if (typeof Worker === 'undefined') { return 0; }
+    // Workers that could not load the page's code once will not now either: slices.
+    if (W.broken || typeof Worker === 'undefined') { return 0; }
     W.queue = jobs.map((job, id) => ({ id, job }));
     const n = Math.max(1, Math.min(cores, jobs.length));
     try { while (W.pool.length < n) { spawn(); } } catch (e) { W.failed = String(e); W.cancel(); return 0; }

@@ -189,22 +189,13 @@ fn page_works_offline_after_one_visit() {
         .expect("navigate");
     let status = wait_for_frames(&session);
     let mut problems = status_problems(&status);
-    // Wait until the service worker is active (its install cached the site).
-    let start = Instant::now();
-    let mut ready = false;
-    while start.elapsed() < FRAME_TIMEOUT && !ready {
-        ready = session
-            .execute("return window.attlabOfflineReady === true;")
-            .is_ok_and(|v| v == Value::Bool(true));
-        sleep(Duration::from_millis(100));
+    wait_for_service_worker(&session);
+    // A reload while online, now through the worker: it has this build's wasm and glue and
+    // writes neither again. The kept wasm is marked first; the mark must survive (checked
+    // at the end with the cache's contents).
+    if let Err(e) = async_script(&session, MARK_KEPT_WASM) {
+        problems.push(format!("cannot mark the kept wasm: {e}"));
     }
-    assert!(ready, "the service worker never became ready");
-    println!(
-        "page test (offline): service worker ready after {:.1} s",
-        start.elapsed().as_secs_f64()
-    );
-    // A reload while online, now through the worker: it serves this build's wasm and glue
-    // from its cache and writes nothing more (checked at the end).
     session.open(&url).expect("reload online");
     problems.extend(
         status_problems(&wait_for_frames(&session))
@@ -251,37 +242,78 @@ fn page_works_offline_after_one_visit() {
     );
 }
 
-/// The service worker keeps this build's wasm and glue, under their versioned URLs, and no
-/// other build's: each is 6 MB, and another build's glue would not run with this wasm.
-fn cached_build_problems(session: &Session<'_>) -> Vec<String> {
-    let script = "const done = arguments[arguments.length - 1];\
-        caches.keys().then((names) => Promise.all(names.map((n) => caches.open(n).then((c) => c.keys()))))\
-          .then((lists) => done({ build: window.attlabBuild, pkg: lists.flat().map((r) => new URL(r.url))\
-            .filter((u) => u.pathname.includes('/pkg/')).map((u) => u.pathname.split('/').pop() + u.search).sort() }))\
-          .catch((e) => done({ error: String(e) }));";
-    let found = session.call(
+/// Waits until the service worker is active (its install cached the site).
+fn wait_for_service_worker(session: &Session<'_>) {
+    let start = Instant::now();
+    let mut ready = false;
+    while start.elapsed() < FRAME_TIMEOUT && !ready {
+        ready = session
+            .execute("return window.attlabOfflineReady === true;")
+            .is_ok_and(|v| v == Value::Bool(true));
+        sleep(Duration::from_millis(100));
+    }
+    assert!(ready, "the service worker never became ready");
+    println!(
+        "page test (offline): service worker ready after {:.1} s",
+        start.elapsed().as_secs_f64()
+    );
+}
+
+/// Runs an asynchronous script (it calls its last argument with the result).
+fn async_script(session: &Session<'_>, script: &str) -> Result<Value, String> {
+    session.call(
         "POST",
         "/execute/async",
         Some(&json!({ "script": script, "args": [] })),
-    );
-    let Ok(found) = found else {
-        return vec![format!("offline: cannot read the caches: {found:?}")];
+    )
+}
+
+/// Puts the service worker's kept wasm back with a header `x-attlab-mark`: a worker that
+/// wrote the file again on a later load would lose it.
+const MARK_KEPT_WASM: &str = "const done = arguments[arguments.length - 1];\
+    (async () => { for (const n of await caches.keys()) { const c = await caches.open(n);\
+      for (const r of await c.keys()) { if (r.url.includes('/pkg/attlab_web_bg.wasm')) {\
+        const kept = await c.match(r); const bytes = await kept.arrayBuffer();\
+        await c.put(r, new Response(bytes, { headers: { 'content-type': 'application/wasm', 'x-attlab-mark': 'kept' } }));\
+        return done(r.url); } } } done(null); })().catch((e) => done('error: ' + e));";
+
+/// The service worker keeps this build's wasm and glue, under their versioned URLs, and no
+/// other build's: each is 6 MB, and another build's glue would not run with this wasm. It
+/// wrote the wasm only once: the mark [`MARK_KEPT_WASM`] put on it is still there.
+fn cached_build_problems(session: &Session<'_>) -> Vec<String> {
+    let script = "const done = arguments[arguments.length - 1];\
+        (async () => { const pkg = []; let mark = null;\
+          for (const n of await caches.keys()) { const c = await caches.open(n);\
+            for (const r of await c.keys()) { const u = new URL(r.url); if (!u.pathname.includes('/pkg/')) continue;\
+              pkg.push(u.pathname.split('/').pop() + u.search);\
+              if (u.pathname.endsWith('.wasm')) { mark = (await c.match(r)).headers.get('x-attlab-mark'); } } }\
+          done({ build: window.attlabBuild, pkg: pkg.sort(), mark }); })().catch((e) => done({ error: String(e) }));";
+    let found = match async_script(session, script) {
+        Ok(found) => found,
+        Err(e) => return vec![format!("offline: cannot read the caches: {e}")],
     };
     let build = found["build"].as_str().unwrap_or("(none)");
     let want = json!([
         format!("attlab_web.js{build}"),
         format!("attlab_web_bg.wasm{build}")
     ]);
+    let mut problems = Vec::new();
     if !build.starts_with("?v=") || found["pkg"] != want {
-        return vec![format!(
+        problems.push(format!(
             "offline: the service worker's pkg/ files are {found}, want {want}"
-        )];
+        ));
+    }
+    if found["mark"] != json!("kept") {
+        problems.push(format!(
+            "offline: the service worker wrote the wasm again on a later load (its mark: {})",
+            found["mark"]
+        ));
     }
     println!(
         "page test (offline): the service worker keeps {}",
         found["pkg"]
     );
-    Vec::new()
+    problems
 }
 
 /// A step of every lab's lesson from the teacher's link on a projector (see `lessons.rs`).

@@ -108,9 +108,12 @@ fn compare(lab: &str, window_s: f64, session: &Session<'_>, base: &str) -> Vec<S
     let shared = session
         .execute("return window.attlabWorkers ? window.attlabWorkers.shared === true : null;")
         .ok();
-    // ...and ran the page's own build: the query their glue and wasm were asked for under.
+    // ...and ran the page's own build: every file under pkg/ they fetched (their glue) was
+    // asked for under the page's build query.
     let builds = session
-        .execute("return [window.attlabBuild, window.attlabWorkers && window.attlabWorkers.build];")
+        .execute(
+            "return [window.attlabBuild, window.attlabWorkers && window.attlabWorkers.fetched];",
+        )
         .ok();
     let (s, s_waited, s_fps) = match run_sweep(session, base, lab, false, window_s) {
         Ok(r) => r,
@@ -170,32 +173,56 @@ fn sweeps_run_in_web_workers_with_the_numbers_of_the_slices() {
     });
 }
 
-/// What is wrong with `[the page's build query, the one the workers loaded]`, if anything:
-/// both must be the same `?v=` and sixteen hex digits (the hash `cargo xtask dist` writes).
+/// What is wrong with `[the page's build query, the URLs under pkg/ a worker fetched]`, if
+/// anything: the query must be `?v=` and sixteen hex digits (the hash `cargo xtask dist`
+/// writes), and every URL (at least the glue) must carry it.
 fn build_problem(builds: Option<&Value>) -> Option<String> {
     let pair = builds.and_then(Value::as_array);
     let page = pair.and_then(|p| p.first()).and_then(Value::as_str);
-    let worker = pair.and_then(|p| p.get(1)).and_then(Value::as_str);
+    let fetched = pair.and_then(|p| p.get(1)).and_then(Value::as_array);
     let versioned = |q: &str| {
         q.strip_prefix("?v=")
             .is_some_and(|h| h.len() == 16 && h.bytes().all(|b| b.is_ascii_hexdigit()))
     };
-    match (page, worker) {
-        (Some(p), Some(w)) if p == w && versioned(p) => None,
-        _ => Some(format!(
-            "the workers did not load the page's build (page, workers: {builds:?})"
-        )),
-    }
+    let ok = match (page, fetched) {
+        (Some(page), Some(urls)) => {
+            versioned(page)
+                && urls
+                    .iter()
+                    .any(|u| u.as_str().is_some_and(|u| u.contains("/pkg/attlab_web.js")))
+                && urls
+                    .iter()
+                    .all(|u| u.as_str().is_some_and(|u| u.ends_with(page)))
+        }
+        _ => false,
+    };
+    (!ok).then(|| format!("the workers did not load the page's build (page, fetched: {builds:?})"))
 }
 
 #[test]
 fn a_worker_on_another_build_or_an_unversioned_one_is_a_problem() {
-    let pair = |p: &str, w: &str| serde_json::json!([p, w]);
     let hash = "?v=0123456789abcdef";
-    assert_eq!(build_problem(Some(&pair(hash, hash))), None);
-    assert!(build_problem(Some(&pair(hash, "?v=0123456789abcdee"))).is_some());
-    assert!(build_problem(Some(&pair("?v=__ATTLAB_BUILD__", "?v=__ATTLAB_BUILD__"))).is_some());
-    assert!(build_problem(Some(&pair("", ""))).is_some());
+    let glue = |q: &str| format!("http://h/pkg/attlab_web.js{q}");
+    let case = |page: &str, urls: &[String]| build_problem(Some(&serde_json::json!([page, urls])));
+    assert_eq!(case(hash, &[glue(hash)]), None);
+    assert_eq!(
+        case(
+            hash,
+            &[glue(hash), format!("http://h/pkg/attlab_web_bg.wasm{hash}")]
+        ),
+        None
+    );
+    assert!(case(hash, &[glue("")]).is_some());
+    assert!(case(hash, &[glue("?v=0123456789abcdee")]).is_some());
+    assert!(
+        case(
+            hash,
+            &[glue(hash), "http://h/pkg/attlab_web_bg.wasm".into()]
+        )
+        .is_some()
+    );
+    assert!(case(hash, &[]).is_some());
+    assert!(case("?v=__ATTLAB_BUILD__", &[glue("?v=__ATTLAB_BUILD__")]).is_some());
     assert!(build_problem(Some(&serde_json::json!([hash, null]))).is_some());
     assert!(build_problem(None).is_some());
 }
