@@ -30,7 +30,14 @@ const CORE = [
 const isBuildFile = (url) => url.pathname.includes('/pkg/') && url.searchParams.get('v');
 
 self.addEventListener('install', (event) => {
-  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(CORE)).then(() => self.skipWaiting()));
+  // This build's wasm and glue are fetched only when not kept already: the last worker
+  // kept them when the page first loaded this build (below), and each is 6 MB.
+  const add = (cache, path) => (isBuildFile(new URL(path, self.location.href))
+    ? cache.match(path).then((hit) => hit || cache.add(path))
+    : cache.add(path));
+  event.waitUntil(caches.open(CACHE)
+    .then((cache) => Promise.all(CORE.map((path) => add(cache, path))))
+    .then(() => self.skipWaiting()));
 });
 
 self.addEventListener('activate', (event) => {
@@ -52,10 +59,12 @@ self.addEventListener('activate', (event) => {
 
 // A wasm or glue of one build. Still from the network (the browser's HTTP cache answers: the
 // file is immutable, and there V8 keeps the wasm's compiled code), but put into this
-// worker's cache only once, and only this build's: each is 6 MB. When the network fails or
-// has no such file any more (a newer build deployed), the kept copy; never another build's
-// file, whose glue would not run with this page's wasm.
-async function buildFile(event, request, url) {
+// worker's cache only once: each is 6 MB. A newer build's is kept too: the page loads it
+// before that build's worker takes over, and the index.html kept beside it asks for it.
+// The next activation deletes every other build's. When the network fails or has no such
+// file any more (a newer build deployed), the kept copy; never another build's file,
+// whose glue would not run with this page's wasm.
+async function buildFile(event, request) {
   const kept = caches.open(CACHE)
     .then((cache) => cache.match(request))
     .catch(() => undefined);
@@ -73,7 +82,7 @@ async function buildFile(event, request, url) {
   if (!response.ok) {
     return copy || response;
   }
-  if (!copy && url.search === BUILD) {
+  if (!copy) {
     const saved = response.clone();
     event.waitUntil(
       caches.open(CACHE)
@@ -89,7 +98,7 @@ self.addEventListener('fetch', (event) => {
   const url = new URL(request.url);
   if (request.method !== 'GET' || url.origin !== self.location.origin) return;
   if (isBuildFile(url)) {
-    event.respondWith(buildFile(event, request, url));
+    event.respondWith(buildFile(event, request));
     return;
   }
   event.respondWith(
