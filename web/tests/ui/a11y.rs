@@ -135,3 +135,37 @@ fn the_live_description_names_the_lab_the_time_and_the_ghosts_error_against_its_
     let ru = attlab_web::panels::describe_run(&app.state);
     assert!(ru.contains("пауза") && ru.contains("3σ"), "{ru}");
 }
+
+/// In Russian a slider's value is read with its unit in Russian: the page shows the code's
+/// SI symbols (km, kg·m², N·m) in the reader's words.
+#[test]
+fn a_russian_slider_reads_its_unit_in_russian() {
+    use attlab::i18n::{self, Lang};
+    for (lab_id, key, unit) in [
+        ("p2", "altitude_km", " км"),
+        ("p1", "inertia_kg_m2", " кг·м²"),
+        ("p1", "string_length_m", " м"),
+        ("free-rotation", "spin_deg_s", " °/с"),
+    ] {
+        let (mut h, _, last) = mirrored(lab_id);
+        h.state_mut().apply(ViewCommand::SetLang(Lang::Ru).into());
+        h.run();
+        let lab = labs::find(lab_id).expect("registered");
+        let spec = lab
+            .params()
+            .iter()
+            .find(|s| s.key == key)
+            .expect("a slider");
+        let name = i18n::lab_text(Lang::Ru, &i18n::param_label_id(lab_id, key), spec.label);
+        let nodes = plan(&last);
+        let node = nodes
+            .iter()
+            .find(|n| n.role == "slider" && n.name == name)
+            .unwrap_or_else(|| panic!("{lab_id}: no slider named `{name}`"));
+        let text = node.text.as_deref().unwrap_or_default();
+        assert!(
+            text.ends_with(unit),
+            "{lab_id} {key}: `{text}`, want it to end with `{unit}`"
+        );
+    }
+}
