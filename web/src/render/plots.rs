@@ -118,6 +118,9 @@ pub fn show(
     {
         plot = plot.reset();
     }
+    if let Some((lo, hi)) = flat_range(&points, log) {
+        plot = plot.include_y(lo).include_y(hi);
+    }
     let bands = if state.show_outages {
         outages::bands(rec, outages)
     } else {
@@ -201,6 +204,31 @@ pub fn points(
         .map(|((i, _), _)| *i)
         .collect();
     (points, no_data)
+}
+
+/// A y range to show when every value drawn is the same to rounding (a lesson step paused
+/// at t = 0; log10 of two equal errors): egui_plot fits the data's own range, 10⁻¹⁶ wide,
+/// and its marks read "0.301029995663981". The value ± a tenth of it, at least ± 1, as
+/// egui_plot does for an exactly flat line. `None` when the values spread (or there are
+/// none).
+fn flat_range(points: &[Vec<[f64; 2]>], log: bool) -> Option<(f64, f64)> {
+    let shown = |y: f64| -> f64 { if log { y.log10() } else { y } };
+    let (lo, hi) = points
+        .iter()
+        .flatten()
+        .map(|p| shown(p[1]))
+        .filter(|y| y.is_finite())
+        .fold(
+            (f64::INFINITY, f64::NEG_INFINITY),
+            |(lo, hi): (f64, f64), y| (lo.min(y), hi.max(y)),
+        );
+    let scale = lo.abs().max(hi.abs()).max(1.0);
+    if lo > hi || hi - lo > 1e-9 * scale {
+        return None;
+    }
+    let centre = 0.5 * (lo + hi);
+    let pad = (0.1 * centre.abs()).max(1.0);
+    Some((centre - pad, centre + pad))
 }
 
 /// The "⟲" in the plot's top-right corner: the next frame shows the whole run again.
@@ -388,6 +416,25 @@ pub fn pieces(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_flat_run_gets_a_readable_range_and_a_spread_one_none() {
+        let two = |a: f64, b: f64| vec![vec![[0.0, a]], vec![[0.0, b]]];
+        // log10 of two equal errors of 2°, the second one ulp off.
+        let (lo, hi) = flat_range(&two(2.0, 2.0 + 4e-16), true).expect("flat");
+        assert!(
+            (lo + 0.69897).abs() < 1e-4 && (hi - 1.30103).abs() < 1e-4,
+            "{lo} {hi}"
+        );
+        assert_eq!(flat_range(&two(360.0, 360.0), false), Some((324.0, 396.0)));
+        assert_eq!(flat_range(&two(0.0, 0.0), false), Some((-1.0, 1.0)));
+        assert_eq!(flat_range(&two(0.0, 1e-6), false), None);
+        assert_eq!(flat_range(&two(2.0, 2.1), true), None);
+        assert_eq!(flat_range(&[], false), None);
+        assert_eq!(flat_range(&two(f64::NAN, f64::NAN), false), None);
+        // A log plot draws no value ≤ 0 and ignores it here too.
+        assert_eq!(flat_range(&two(0.0, 0.0), true), None);
+    }
 
     fn words() -> PlotWords<'static> {
         PlotWords {
