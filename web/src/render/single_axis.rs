@@ -63,11 +63,17 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
     let painter = ui.painter_at(rect);
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
-    painter.text(
-        rect.left_top() + Vec2::new(8.0, 6.0),
-        egui::Align2::LEFT_TOP,
-        title,
+    // One line, cut with "…" where the view is narrower (Russian on a projector's
+    // presenter layout ran past the view's edge and was clipped mid-word).
+    let mut title_job = egui::text::LayoutJob::simple_singleline(
+        title.to_owned(),
         egui::FontId::proportional(13.0),
+        colours.ink,
+    );
+    title_job.wrap = egui::text::TextWrapping::truncate_at_width(rect.width() - 16.0);
+    painter.galley(
+        rect.left_top() + Vec2::new(8.0, 6.0),
+        painter.layout_job(title_job),
         colours.ink,
     );
     let (center, radius, readouts, row) = dial_layout(rect, sources.len());
@@ -201,7 +207,9 @@ pub fn phase_portrait(
     (title, angle_axis, rate_axis): (&str, &str, &str),
 ) {
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
-        ui.label(egui::RichText::new(title).small());
+        // One line, as the plot's height below assumes; cut with "…" where it does not fit
+        // (the Russian title wrapped onto the plot), whole on hover.
+        ui.add(egui::Label::new(egui::RichText::new(title).small()).truncate());
         let mut portrait = Plot::new("phase_portrait").height((rect.height() - 24.0).max(60.0));
         let (most, tall) = super::riemann_sphere::ROOM_FOR_LEGEND;
         if sources.len() <= most && rect.height() >= tall {
