@@ -95,7 +95,14 @@ pub fn label(ui: &Ui, transform: &PlotTransform, bands: &[Band], words: &[String
         let x0 = transform.position_from_point_x(b.t0_s).max(frame.left());
         let x1 = transform.position_from_point_x(b.t1_s).min(frame.right());
         let width = x1 - x0 - 2.0 * PADDING;
-        if width < MIN_LABEL_WIDTH {
+        // A label cut inside its first word ("sta…" on a phone's first tenth of a second)
+        // says nothing the legend does not: none then.
+        let first_word = text.split_whitespace().next().unwrap_or(text);
+        let least = painter
+            .layout_no_wrap(format!("{first_word}…"), font.clone(), text_color)
+            .size()
+            .x;
+        if width < least.max(MIN_LABEL_WIDTH) {
             continue;
         }
         let mut job = LayoutJob::simple_singleline(text.clone(), font.clone(), text_color);
