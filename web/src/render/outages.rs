@@ -16,6 +16,9 @@ const PADDING: f32 = 4.0;
 /// A label narrower than this is left out (the legend names every outage).
 const MIN_LABEL_WIDTH: f32 = 24.0;
 
+/// A label is drawn only if at least this many of its characters fit.
+const LEAST_CHARS: usize = 8;
+
 /// The points of a series read to find its intervals: four times a plotted line's, so an
 /// edge lands within a quarter of the lines' point spacing.
 const POINTS: usize = 6_000;
@@ -95,11 +98,12 @@ pub fn label(ui: &Ui, transform: &PlotTransform, bands: &[Band], words: &[String
         let x0 = transform.position_from_point_x(b.t0_s).max(frame.left());
         let x1 = transform.position_from_point_x(b.t1_s).min(frame.right());
         let width = x1 - x0 - 2.0 * PADDING;
-        // A label cut inside its first word ("sta…" on a phone's first tenth of a second)
-        // says nothing the legend does not: none then.
-        let first_word = text.split_whitespace().next().unwrap_or(text);
+        // A label cut to a few letters ("sta…", "no…" on a phone's first tenth of a
+        // second) says nothing the legend does not: none unless its first eight characters
+        // fit (or the whole of a shorter one).
+        let head: String = text.chars().take(LEAST_CHARS).collect();
         let least = painter
-            .layout_no_wrap(format!("{first_word}…"), font.clone(), text_color)
+            .layout_no_wrap(format!("{head}…"), font.clone(), text_color)
             .size()
             .x;
         if width < least.max(MIN_LABEL_WIDTH) {
