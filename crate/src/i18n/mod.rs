@@ -19,7 +19,7 @@ pub use series::{
     series_label, series_legend, series_legend_parts,
 };
 use std::sync::OnceLock;
-pub use units::unit;
+pub use units::{unit, units_after_numbers};
 
 /// A language of the page.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

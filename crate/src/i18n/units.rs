@@ -31,6 +31,43 @@ pub fn unit(lang: Lang, unit: &str) -> String {
     out
 }
 
+/// `text` with every unit written as the code writes it that follows a number ("Δt = 1.17
+/// s") in `lang`'s words ("Δt = 1.17 с"); the rest, spacing and punctuation included, as it
+/// is. For a line that mixes the paper's notation with a unit.
+pub fn units_after_numbers(lang: Lang, text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 8);
+    let mut rest = text;
+    let mut after_number = false;
+    while !rest.is_empty() {
+        let space = rest.len() - rest.trim_start().len();
+        out.push_str(&rest[..space]);
+        rest = &rest[space..];
+        let end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+        let (word, tail) = rest.split_at(end);
+        rest = tail;
+        let core = word.trim_end_matches([',', '.', ';', ':', ')']);
+        if after_number && english_unit(core) {
+            out.push_str(&unit(lang, core));
+            out.push_str(&word[core.len()..]);
+        } else {
+            out.push_str(word);
+        }
+        after_number = word.ends_with(char::is_numeric);
+    }
+    out
+}
+
+/// `word` is a unit as the code writes it and Russian writes it otherwise: every word of it
+/// is a unit's word (`unit-<word>` in English), and the Russian differs ("g" is not).
+fn english_unit(word: &str) -> bool {
+    let words: Vec<&str> = word.split(|c: char| !c.is_alphabetic()).collect();
+    words.iter().any(|w| !w.is_empty())
+        && words
+            .iter()
+            .all(|w| w.is_empty() || word_id(w).is_some_and(|id| has(Lang::En, &id)))
+        && unit(Lang::Ru, word) != unit(Lang::En, word)
+}
+
 /// The catalogue's id of a unit's `word`, if the word can be one (ASCII letters, and `µ`).
 fn word_id(word: &str) -> Option<String> {
     let id: String = word
@@ -96,38 +133,36 @@ mod tests {
         );
     }
 
-    /// `word` is a unit as the code writes it and Russian writes it otherwise: every word
-    /// of it is a unit's word (`unit-<word>` in English), and the Russian differs.
-    fn english_unit(word: &str) -> bool {
-        let words: Vec<&str> = word.split(|c: char| !c.is_alphabetic()).collect();
-        words.iter().any(|w| !w.is_empty())
-            && words
-                .iter()
-                .all(|w| w.is_empty() || word_id(w).is_some_and(|id| has(Lang::En, &id)))
-            && unit(Lang::Ru, word) != unit(Lang::En, word)
-    }
-
     /// No Russian message writes a number with an English unit ("100 Hz", "0.35 mm",
     /// "8·10⁻⁷ N·m": a superscript digit is numeric too).
     #[test]
     fn the_russian_catalogue_writes_its_units_in_russian() {
-        let mut found = Vec::new();
-        for source in Lang::Ru.sources().iter().chain(Lang::Ru.lab_sources()) {
-            for line in source.lines().filter(|l| !l.starts_with('#')) {
-                let words: Vec<&str> = line.split_whitespace().collect();
-                for pair in words.windows(2) {
-                    let after = pair[1].trim_end_matches([',', '.', ';', ':', ')']);
-                    if pair[0].ends_with(char::is_numeric) && english_unit(after) {
-                        found.push(format!("`{} {}` in: {line}", pair[0], pair[1]));
-                    }
-                }
-            }
-        }
+        let found: Vec<&str> = Lang::Ru
+            .sources()
+            .iter()
+            .chain(Lang::Ru.lab_sources())
+            .flat_map(|source| source.lines())
+            .filter(|l| !l.starts_with('#') && units_after_numbers(Lang::Ru, l) != *l)
+            .collect();
         assert!(found.is_empty(), "English units:\n{}", found.join("\n"));
         // The check itself sees one.
         assert!(english_unit("Hz") && english_unit("°/s") && !english_unit("g"));
-        assert!("8·10⁻⁷".ends_with(char::is_numeric) && !"T".ends_with(char::is_numeric));
         assert!(!english_unit("Гц") && !english_unit("отсчётов"));
+    }
+
+    #[test]
+    fn a_unit_after_a_number_is_said_in_the_readers_language() {
+        let detail = "Δt = 1.17 s, ε = 0.1";
+        assert_eq!(
+            units_after_numbers(Lang::Ru, detail),
+            "Δt = 1.17 с, ε = 0.1"
+        );
+        assert_eq!(units_after_numbers(Lang::En, detail), detail);
+        assert_eq!(
+            units_after_numbers(Lang::Ru, "8·10⁻⁷ N·m  (s is a word; 3 g)"),
+            "8·10⁻⁷ Н·м  (s is a word; 3 g)"
+        );
+        assert_eq!(units_after_numbers(Lang::Ru, ""), "");
     }
 
     #[test]

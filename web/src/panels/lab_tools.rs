@@ -184,13 +184,15 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
     });
 }
 
-/// A diagram's title in the reader's language, with its detail in the paper's notation.
+/// A diagram's title in the reader's language, with its detail in the paper's notation (its
+/// units in the reader's words).
 pub fn diagram_heading(app: &AppState, index: usize, d: &attlab::model::Diagram) -> String {
     let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), index), d.title);
     if d.detail.is_empty() {
         title
     } else {
-        format!("{title} ({})", d.detail)
+        let detail = i18n::units_after_numbers(app.view().lang(), &d.detail);
+        format!("{title} ({detail})")
     }
 }
 
