@@ -57,25 +57,30 @@ impl PhaseTrails {
     }
 }
 
+/// A view's title in its top-left corner on one line, cut with "…" where the view is
+/// narrower (Russian on a projector's presenter layout ran past the view's edge and was
+/// clipped mid-word).
+fn view_title(painter: &egui::Painter, rect: Rect, title: &str, ink: egui::Color32) {
+    let mut job = egui::text::LayoutJob::simple_singleline(
+        title.to_owned(),
+        egui::FontId::proportional(13.0),
+        ink,
+    );
+    job.wrap = egui::text::TextWrapping::truncate_at_width(rect.width() - 16.0);
+    painter.galley(
+        rect.left_top() + Vec2::new(8.0, 6.0),
+        painter.layout_job(job),
+        ink,
+    );
+}
+
 /// The angle on a dial: a needle per source, truth drawn widest; 0° up, positive clockwise
 /// as on an instrument.
 pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
     let painter = ui.painter_at(rect);
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
-    // One line, cut with "…" where the view is narrower (Russian on a projector's
-    // presenter layout ran past the view's edge and was clipped mid-word).
-    let mut title_job = egui::text::LayoutJob::simple_singleline(
-        title.to_owned(),
-        egui::FontId::proportional(13.0),
-        colours.ink,
-    );
-    title_job.wrap = egui::text::TextWrapping::truncate_at_width(rect.width() - 16.0);
-    painter.galley(
-        rect.left_top() + Vec2::new(8.0, 6.0),
-        painter.layout_job(title_job),
-        colours.ink,
-    );
+    view_title(&painter, rect, title, colours.ink);
     let (center, radius, readouts, row) = dial_layout(rect, sources.len());
     painter.circle_stroke(center, radius, Stroke::new(1.5, colours.ink_dim));
     for k in 0..36 {
