@@ -44,7 +44,7 @@ self.addEventListener('activate', (event) => {
   // Older caches go, and so do other builds' wasm and glue in this one: each is 6 MB.
   const stale = (request) => {
     const url = new URL(request.url);
-    return url.pathname.includes('/pkg/') && url.search !== BUILD;
+    return isBuildFile(url) && url.search !== BUILD;
   };
   event.waitUntil(
     caches.keys()

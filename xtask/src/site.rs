@@ -62,7 +62,7 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
         println!("xtask: --no-opt: skipping wasm-opt");
     }
     write_versioned(&pkg, &dist)?;
-    // The service worker, the app manifest and its icons (offline and installable).
+    // The sweep worker, the app manifest and its icons (offline and installable).
     for name in SITE_FILES {
         copy_file(&cmd::root().join("site").join(name), &dist.join(name))?;
     }
@@ -88,7 +88,7 @@ const VERSIONED_FILES: [(&str, &str); 2] = [("index.html", "index.html"), ("site
 /// JS glue in `pkg` in place of [`BUILD_PLACEHOLDER`]: the page asks for both with
 /// `?v=<hash>`, so a host may keep them for good (`attlab-serve` does: V8 then reuses its
 /// compiled code on every later load) and a new build is a new URL; the service worker keeps
-/// that build's files and serves them without asking the network.
+/// one copy of each build's files, for offline use.
 fn write_versioned(pkg: &Path, dist: &Path) -> Result<()> {
     let mut hasher = Sha256::new();
     for name in [format!("{WEB_LIB}_bg.wasm"), format!("{WEB_LIB}.js")] {

@@ -6,7 +6,6 @@
 use super::palette::Palette;
 use attlab::model::Outage;
 use attlab::record::Recorder;
-use egui::text::{LayoutJob, TextWrapping};
 use egui::{Color32, Ui};
 use egui_plot::{PlotTransform, PlotUi, Span};
 
@@ -109,9 +108,7 @@ pub fn label(ui: &Ui, transform: &PlotTransform, bands: &[Band], words: &[String
         if width < least.max(MIN_LABEL_WIDTH) {
             continue;
         }
-        let mut job = LayoutJob::simple_singleline(text.clone(), font.clone(), text_color);
-        job.wrap = TextWrapping::truncate_at_width(width);
-        let galley = painter.layout_job(job);
+        let galley = super::one_line(&painter, text, font.clone(), text_color, width);
         let at = egui::pos2(
             0.5 * (x0 + x1) - 0.5 * galley.size().x,
             frame.top() + PADDING,

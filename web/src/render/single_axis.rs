@@ -61,17 +61,9 @@ impl PhaseTrails {
 /// narrower (Russian on a projector's presenter layout ran past the view's edge and was
 /// clipped mid-word).
 fn view_title(painter: &egui::Painter, rect: Rect, title: &str, ink: egui::Color32) {
-    let mut job = egui::text::LayoutJob::simple_singleline(
-        title.to_owned(),
-        egui::FontId::proportional(13.0),
-        ink,
-    );
-    job.wrap = egui::text::TextWrapping::truncate_at_width(rect.width() - 16.0);
-    painter.galley(
-        rect.left_top() + Vec2::new(8.0, 6.0),
-        painter.layout_job(job),
-        ink,
-    );
+    let font = egui::FontId::proportional(13.0);
+    let galley = super::one_line(painter, title, font, ink, rect.width() - 16.0);
+    painter.galley(rect.left_top() + Vec2::new(8.0, 6.0), galley, ink);
 }
 
 /// The angle on a dial: a needle per source, truth drawn widest; 0° up, positive clockwise
