@@ -250,9 +250,10 @@ fn draw_view(
 }
 
 /// Truth and every single-axis estimator: angle and rate about the axis, in source colours,
-/// and whether each is shown.
+/// and whether each is shown. A replayed or live log has no truth: the dial and the phase
+/// portrait leave it out (the dial had read "— truth").
 fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
-    let mut shown = vec![true];
+    let mut shown = vec![app.sim().has_truth()];
     let truth = app.sim().truth();
     let mut out = vec![single_axis::AxisSource {
         name: tr(app, "truth"),
@@ -260,6 +261,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
         pattern: palette::pattern(0),
         angle_rad: truth.angle_rad.unwrap_or(f64::NAN),
         rate_rad_s: truth.rate_body_rad_s.z,
+        is_truth: true,
     }];
     for (i, est) in app.sim().estimates().iter().enumerate() {
         if let Some(angle) = est.angle_rad {
@@ -270,6 +272,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
                 pattern: palette::pattern(i + 1),
                 angle_rad: angle,
                 rate_rad_s: est.rate_body_rad_s.map_or(f64::NAN, |w| w.z),
+                is_truth: false,
             });
         }
     }

@@ -19,6 +19,8 @@ pub struct AxisSource {
     pub angle_rad: f64,
     /// Rate about the axis (rad/s).
     pub rate_rad_s: f64,
+    /// The simulated truth: its needle is drawn widest.
+    pub is_truth: bool,
 }
 
 /// Points kept per trail.
@@ -111,11 +113,11 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
             colours.ink_dim,
         );
     }
-    for (k, s) in sources.iter().enumerate().rev() {
+    for s in sources.iter().rev() {
         if !s.angle_rad.is_finite() {
             continue;
         }
-        let width = if k == 0 { 4.0 } else { 2.0 };
+        let width = if s.is_truth { 4.0 } else { 2.0 };
         needle(
             &painter,
             center,
@@ -255,6 +257,7 @@ mod tests {
             pattern: egui_plot::LineStyle::Solid,
             angle_rad: angle,
             rate_rad_s: 0.5,
+            is_truth: true,
         }
     }
 

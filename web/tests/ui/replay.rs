@@ -241,10 +241,8 @@ fn a_refused_log_is_said_in_the_readers_language() {
     }
 }
 
-/// A replay has no truth: the legend says the truth's angle and every filter's error have
-/// no values recorded, and says it of nothing the log or the filters give.
-#[test]
-fn a_replays_legend_says_which_series_have_no_values() {
+/// Paper 4's example log replayed for 300 steps, and drawn.
+fn p4_replayed_300_steps() -> egui_kittest::Harness<'static, attlab_web::AttLabApp> {
     let mut h = replay_example(
         "p4",
         "Real data: an Arduino MPU-6050 log",
@@ -255,6 +253,14 @@ fn a_replays_legend_says_which_series_have_no_values() {
         h.state_mut().apply(RunCommand::StepOnce.into());
     }
     h.run_steps(2);
+    h
+}
+
+/// A replay has no truth: the legend says the truth's angle and every filter's error have
+/// no values recorded, and says it of nothing the log or the filters give.
+#[test]
+fn a_replays_legend_says_which_series_have_no_values() {
+    let mut h = p4_replayed_300_steps();
     const NONE: &str = " — no values recorded";
     let texts = super::legend::legend_texts(&h.state().state);
     let empty: Vec<&String> = texts.iter().filter(|t| t.contains(NONE)).collect();
@@ -312,4 +318,34 @@ fn a_replays_truth_without_values_stays_in_its_group() {
     );
     let marked = texts.iter().filter(|t| t.contains("no values")).count();
     assert_eq!(marked, 1, "{texts:#?}");
+}
+
+/// The dial's readouts that name the truth (the number or "—", two spaces, the name).
+fn truth_readouts(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
+    let truth = attlab::i18n::t(h.state().state.view().lang(), "truth");
+    let ending = format!("  {truth}");
+    (h.output().shapes.iter())
+        .filter_map(|c| match &c.shape {
+            egui::epaint::Shape::Text(t) => Some(t.galley.text().to_string()),
+            _ => None,
+        })
+        .filter(|text| text.ends_with(&ending))
+        .collect()
+}
+
+/// A replay has no truth: paper 4's dial leaves it out (it had read "— truth" above the
+/// filters' angles), while the lab running its simulation shows the truth's angle there.
+#[test]
+fn a_replays_dial_names_no_truth() {
+    let mut live = harness("p4");
+    live.run_steps(2);
+    let shown = truth_readouts(&live);
+    assert_eq!(
+        shown.len(),
+        1,
+        "the simulation's truth on the dial: {shown:?}"
+    );
+    assert!(shown[0].contains('°'), "with its angle: {shown:?}");
+    let h = p4_replayed_300_steps();
+    assert_eq!(truth_readouts(&h), Vec::<String>::new());
 }
