@@ -105,33 +105,9 @@ fn page_renders_without_errors() {
         "first load",
         "screenshot.png",
     ));
-    // Every lab by its URL: the first frames, the console and a screenshot of each.
     let base = url.split('#').next().unwrap_or(&url).to_string();
-    for lab in attlab::labs::all() {
-        let id = lab.id();
-        if let Err(e) = session.open(&format!("{base}#lab={id}")) {
-            problems.push(format!("{id}: navigate failed: {e}"));
-            continue;
-        }
-        let status = wait_for_frames(&session);
-        println!("page test: #lab={id}: attlabStatus = {status}");
-        problems.extend(
-            status_problems(&status)
-                .into_iter()
-                .map(|p| format!("#lab={id}: {p}")),
-        );
-        if status["lab"].as_str() != Some(id) {
-            problems.push(format!("#lab={id} opened lab {:?}", status["lab"]));
-        }
-        problems.extend(console_and_screenshot(
-            &session,
-            &format!("#lab={id}"),
-            &format!("screenshot-{id}.png"),
-        ));
-        problems.extend(a11y::tree_problems(&session, *lab));
-    }
     println!(
-        "page test: phase `first load and every lab` took {:.1} s",
+        "page test: phase `first load` took {:.1} s",
         start.elapsed().as_secs_f64()
     );
     problems.extend(timed("keyboard walk", || {

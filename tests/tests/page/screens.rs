@@ -18,6 +18,9 @@ pub(crate) struct Screen {
     pub mobile: bool,
     /// The share of the window's height the plot must get at least.
     pub min_plot_share: f64,
+    /// Check the accessibility tree too: every slider named as in English, with its value
+    /// (the English screen that shows every slider outside presenter mode).
+    pub tree: bool,
 }
 
 /// The screens, as the issue that asked for them names them, and the laptop in Russian.
@@ -28,6 +31,7 @@ pub(crate) const SCREENS: [Screen; 4] = [
         link: "&presenter=1",
         mobile: false,
         min_plot_share: 0.40,
+        tree: false,
     },
     Screen {
         name: "laptop",
@@ -35,6 +39,7 @@ pub(crate) const SCREENS: [Screen; 4] = [
         link: "",
         mobile: false,
         min_plot_share: 0.40,
+        tree: true,
     },
     // A phone stacks the view above the plot and the plot's legend below it: the plot
     // shares the height with both.
@@ -44,6 +49,7 @@ pub(crate) const SCREENS: [Screen; 4] = [
         link: "&lang=ru",
         mobile: false,
         min_plot_share: 0.40,
+        tree: false,
     },
     Screen {
         name: "phone",
@@ -51,6 +57,7 @@ pub(crate) const SCREENS: [Screen; 4] = [
         link: "",
         mobile: true,
         min_plot_share: 0.25,
+        tree: false,
     },
 ];
 
@@ -93,8 +100,8 @@ pub(crate) fn layout_problems(status: &Value, (w, h): (u32, u32), min_share: f64
     problems
 }
 
-/// Every lab on every screen: frames, console, the plot's share and a screenshot
-/// (`screens/<screen>-<lab>.png`).
+/// Every lab on every screen: frames, the lab its link opened, console, the plot's share and
+/// a screenshot (`screens/<screen>-<lab>.png`); on the laptop's, the accessibility tree.
 pub(crate) fn screen_problems(session: &Session<'_>, base: &str) -> Vec<String> {
     let mut problems = Vec::new();
     for screen in &SCREENS {
@@ -111,8 +118,17 @@ pub(crate) fn screen_problems(session: &Session<'_>, base: &str) -> Vec<String> 
                 continue;
             }
             let status = wait_for_frames(session);
+            let opened = (status["lab"].as_str() != Some(id))
+                .then(|| format!("the link opened lab {:?}", status["lab"]));
+            let tree = if screen.tree {
+                super::a11y::tree_problems(session, *lab)
+            } else {
+                Vec::new()
+            };
             let found = status_problems(&status)
                 .into_iter()
+                .chain(opened)
+                .chain(tree)
                 .chain(layout_problems(&status, screen.size, screen.min_plot_share))
                 .chain(boot_problems(session, screen))
                 .chain(console_and_screenshot(
