@@ -20,6 +20,7 @@ use attlab_serve as serve;
 mod site;
 mod size;
 mod suite;
+mod targets;
 mod tools;
 mod wasm;
 

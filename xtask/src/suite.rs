@@ -257,19 +257,19 @@ fn site_and_wasm_tests(suite: &mut Suite) -> Result<PathBuf> {
         "test --target {} -p attlab-tests",
         tools::WASM_TARGET
     ));
-    // Only the test targets that run in the browser: the others are native-only (empty on
-    // wasm32; the wasm clippy checks that they compile), and linking each of them and
-    // starting the runner for it cost 22 s of CPU (110 s against 88 s, built from scratch)
-    // beside the site's build, for no test.
-    for target in wasm_test_targets(&cmd::root().join("tests/tests"))? {
-        browser.args(["--test", &target]);
-    }
     // Each lab's reproduction runs inside one test call; the default 20 s per call is too
     // short for the 600-s scenarios of paper 1 on a loaded 2-core machine.
     tools::headless_test_env(&mut browser, 600);
     browser.env("CARGO_TARGET_DIR", cmd::target_dir().join("wasm-tests"));
     let log = cmd::target_dir().join("wasm-tests.log");
     let wasm = suite.step("start the wasm tests beside", || {
+        // Only the test targets with wasm tests: the others are native-only (empty on
+        // wasm32; the wasm clippy checks that they compile), and linking each of them and
+        // starting the runner for it cost 22 s of CPU (110 s against 88 s, built from
+        // scratch) beside the site's build, for no test.
+        for target in crate::targets::wasm_test_targets(&cmd::root().join("tests/tests"))? {
+            browser.args(["--test", &target]);
+        }
         crate::beside::spawn(browser, log)
     })?;
     // Without wasm-opt: `cargo xtask dist` runs it and ships whichever output is smaller
@@ -283,37 +283,6 @@ fn site_and_wasm_tests(suite: &mut Suite) -> Result<PathBuf> {
     let dist = dist?;
     wasm?;
     Ok(dist)
-}
-
-/// The integration test targets in `dir` (a `name.rs`, or a folder `name/` with `main.rs`)
-/// that configure wasm-bindgen-test, sorted; an error when there is none, so the step
-/// cannot pass on no test.
-fn wasm_test_targets(dir: &Path) -> Result<Vec<String>> {
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| format!("cannot list {}: {e}", dir.display()))?;
-    let mut targets = Vec::new();
-    for entry in entries {
-        let path = entry?.path();
-        let (name, source) = if path.is_dir() {
-            (path.file_name(), path.join("main.rs"))
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            (path.file_stem(), path.clone())
-        } else {
-            continue;
-        };
-        let text = std::fs::read_to_string(&source)
-            .map_err(|e| format!("cannot read {}: {e}", source.display()))?;
-        if let Some(name) = name.and_then(|n| n.to_str())
-            && text.contains("wasm_bindgen_test_configure!")
-        {
-            targets.push(name.to_string());
-        }
-    }
-    targets.sort();
-    if targets.is_empty() {
-        return Err(format!("no test in {} runs in the browser", dir.display()).into());
-    }
-    Ok(targets)
 }
 
 /// The page tests against `dist`, served on loopback, with the soak, the lessons and the
@@ -431,36 +400,6 @@ mod tests {
             })
         );
         assert_eq!(parse_counts("no tests here"), None);
-    }
-
-    #[test]
-    fn the_browser_tests_are_the_targets_that_configure_wasm_bindgen_test() {
-        let dir = std::env::temp_dir().join(format!("xtask-wasm-targets-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(dir.join("page")).expect("temp dir");
-        let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).expect("write");
-        write(
-            "browser.rs",
-            "wasm_bindgen_test_configure!(run_in_browser);",
-        );
-        write("p1.rs", "#[test] fn native() {}");
-        write(
-            "page/main.rs",
-            "mod x; wasm_bindgen_test_configure!(run_in_browser);",
-        );
-        write("notes.txt", "wasm_bindgen_test_configure!");
-        let found = wasm_test_targets(&dir).expect("targets");
-        assert_eq!(found, ["browser", "page"]);
-        std::fs::remove_file(dir.join("browser.rs")).expect("remove");
-        std::fs::remove_dir_all(dir.join("page")).expect("remove");
-        assert!(
-            wasm_test_targets(&dir).is_err(),
-            "no browser test must be an error"
-        );
-        let _ = std::fs::remove_dir_all(&dir);
-        // The repository's own: the browser suite.
-        let real = wasm_test_targets(&cmd::root().join("tests/tests")).expect("real targets");
-        assert_eq!(real, ["browser"]);
     }
 
     #[test]

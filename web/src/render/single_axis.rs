@@ -1,6 +1,7 @@
 //! Views for labs that turn about one axis (papers 1 and 4), where the Riemann sphere and the
 //! w plane explain nothing: the angle on a dial (truth and every estimator as needles) and
-//! the phase portrait angle–rate, a trail per source.
+//! the phase portrait angle–rate, a trail per source. A replayed or live log has no truth:
+//! the caller leaves it out of both.
 
 use egui::{Color32, Painter, Pos2, Rect, Stroke, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot, Points};

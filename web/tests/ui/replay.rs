@@ -320,26 +320,34 @@ fn a_replays_truth_without_values_stays_in_its_group() {
     assert_eq!(marked, 1, "{texts:#?}");
 }
 
-/// The dial's readouts that name the truth (the number or "—", two spaces, the name).
-fn truth_readouts(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
-    let truth = attlab::i18n::t(h.state().state.view().lang(), "truth");
-    let ending = format!("  {truth}");
+/// Every text the last frame painted.
+fn texts(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
     (h.output().shapes.iter())
         .filter_map(|c| match &c.shape {
             egui::epaint::Shape::Text(t) => Some(t.galley.text().to_string()),
             _ => None,
         })
+        .collect()
+}
+
+/// The dial's readouts that name the truth (the number or "—", two spaces, the name).
+fn truth_readouts(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
+    let truth = attlab::i18n::t(h.state().state.view().lang(), "truth");
+    let ending = format!("  {truth}");
+    texts(h)
+        .into_iter()
         .filter(|text| text.ends_with(&ending))
         .collect()
 }
 
 /// A replay has no truth: paper 4's dial leaves it out (it had read "— truth" above the
-/// filters' angles), while the lab running its simulation shows the truth's angle there.
+/// filters' angles) and still reads the filters' angles, while the lab running its
+/// simulation shows the truth's angle there.
 #[test]
 fn a_replays_dial_names_no_truth() {
-    let mut live = harness("p4");
-    live.run_steps(2);
-    let shown = truth_readouts(&live);
+    let mut simulated = harness("p4");
+    simulated.run_steps(2);
+    let shown = truth_readouts(&simulated);
     assert_eq!(
         shown.len(),
         1,
@@ -348,4 +356,10 @@ fn a_replays_dial_names_no_truth() {
     assert!(shown[0].contains('°'), "with its angle: {shown:?}");
     let h = p4_replayed_300_steps();
     assert_eq!(truth_readouts(&h), Vec::<String>::new());
+    let angles = texts(&h).into_iter().filter(|t| t.contains("°  ")).count();
+    assert!(
+        angles >= 2,
+        "the filters' angles on the dial: {:?}",
+        texts(&h)
+    );
 }
