@@ -212,6 +212,10 @@ fn draw_track(pr: &Projector, painter: &Painter, track: &SphereTrack) {
     }
 }
 
+/// The least height the sphere keeps between its view's title and caption (points): a
+/// radius of 32 with room for its axis labels.
+const MIN_SPHERE_BAND_PT: f32 = 80.0;
+
 /// Draws the sphere in `rect`; drag turns it.
 pub fn show_sphere(
     ui: &mut Ui,
@@ -241,11 +245,14 @@ pub fn show_sphere(
         colours.ink,
         wrap,
     );
-    let caption = painter.layout(
-        caption.to_string(),
-        FontId::proportional(12.0),
-        colours.highlight,
-        wrap,
+    // The sphere keeps a band of its own: a caption taller than the rest (a chart per
+    // filter) is cut to the rows that fit.
+    let room = rect.height() - 12.0 - title.size().y - MIN_SPHERE_BAND_PT;
+    let caption = super::rows_within(
+        &painter,
+        caption,
+        (FontId::proportional(12.0), colours.highlight),
+        (wrap, room),
     );
     let top = rect.top() + 6.0 + title.size().y;
     let bottom = rect.bottom() - 6.0 - caption.size().y;
