@@ -239,9 +239,19 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     );
     suite.check("clippy (wasm)", cargo(&wasm_clippy))?;
     // A stale intra-doc link or a broken doc comment fails the run.
-    let mut doc = cargo("doc --workspace --no-deps");
-    doc.env("RUSTDOCFLAGS", "-D warnings");
-    suite.check("cargo doc", doc)?;
+    suite.step("cargo doc", || {
+        let metadata = cmd::cargo()
+            .args(["metadata", "--no-deps", "--format-version", "1"])
+            .output()?;
+        if !metadata.status.success() {
+            let why = String::from_utf8_lossy(&metadata.stderr);
+            return Err(format!("cargo metadata failed: {why}").into());
+        }
+        let targets = crate::targets::doc_target_args(&String::from_utf8_lossy(&metadata.stdout))?;
+        let mut doc = cargo("doc --workspace --no-deps");
+        doc.args(targets).env("RUSTDOCFLAGS", "-D warnings");
+        cmd::run(&mut doc)
+    })?;
     native_tests(suite)?;
     let dist = site_and_wasm_tests(suite)?;
     page_tests(suite, &dist)
