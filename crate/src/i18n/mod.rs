@@ -16,7 +16,7 @@ use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
 pub use series::{
     LegendParts, compose, estimator_id, estimator_name, lab_series_words, quantity_id,
-    series_label, series_legend, series_legend_parts,
+    series_label, series_legend, series_legend_parts, series_legend_without_unit,
 };
 use std::sync::OnceLock;
 pub use units::{unit, units_after_numbers};

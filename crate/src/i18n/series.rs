@@ -116,16 +116,23 @@ impl LegendParts {
 /// [`series_legend`] in its two parts. A label that does not compose from its key in `lang`
 /// is one part, the whole English label with the unit.
 pub fn series_legend_parts(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> LegendParts {
-    let composed = parts(lang, lab_id, spec).filter(|(owner, what)| {
-        // English is the core's own label, whatever the key says.
-        lang != Lang::En || joined(owner.as_deref(), what) == spec.label
-    });
-    let (owner, what) = composed.unwrap_or((None, spec.label.clone()));
+    let LegendParts { owner, what } = series_legend_without_unit(lang, lab_id, spec);
     let what = if spec.unit.is_empty() {
         what
     } else {
         format!("{what} [{}]", super::unit(lang, spec.unit))
     };
+    LegendParts { owner, what }
+}
+
+/// [`series_legend_parts`] without the unit, for a value printed with its unit after it
+/// (a lesson's tile: "3.69 °" under "(u, v, z) RK4 integration: attitude error").
+pub fn series_legend_without_unit(lang: Lang, lab_id: &str, spec: &SeriesSpec) -> LegendParts {
+    let composed = parts(lang, lab_id, spec).filter(|(owner, what)| {
+        // English is the core's own label, whatever the key says.
+        lang != Lang::En || joined(owner.as_deref(), what) == spec.label
+    });
+    let (owner, what) = composed.unwrap_or((None, spec.label.clone()));
     LegendParts { owner, what }
 }
 

@@ -244,3 +244,50 @@ fn a_lessons_legend_fits_a_projector() {
         assert!(missing.is_empty(), "{fragment}: {missing:?} of {lines:?}");
     }
 }
+
+/// A lesson's tiles on a projector: each names what it measures whole (a long estimator's
+/// name is cut first, or goes on a line of its own) and prints its value with the unit
+/// after it, every text painted whole inside the window. Paper 3's step 3 (the README's
+/// picture), its step 6 (four tiles), paper 5's step 7 (three tiles of one estimator with
+/// a long name, in Russian).
+#[test]
+fn a_lessons_tiles_name_their_measure_whole_and_carry_its_unit() {
+    for link in [
+        "lesson=p3&step=3&presenter=1&lang=en",
+        "lesson=p3&step=6&presenter=1&lang=en",
+        "lesson=p5&step=7&presenter=1&lang=ru",
+    ] {
+        let h = projector(link, 300);
+        let app = &h.state().state;
+        let lang = app.view().lang();
+        let lab = app.sim().lab();
+        let window = h.ctx.content_rect();
+        let whole: Vec<String> = (whole_texts(&h).into_iter())
+            .filter(|(clip, _)| window.expand(0.5).contains_rect(*clip))
+            .map(|(_, t)| t)
+            .collect();
+        let step = app.lesson_step().expect("a lesson step");
+        for key in step.tiles {
+            let name = key.name();
+            let spec = (app.sim().specs().iter()).find(|s| s.name == name);
+            let spec = spec.unwrap_or_else(|| panic!("{link}: no series {name}"));
+            let what = attlab::i18n::series_legend_without_unit(lang, lab.id(), spec).what;
+            assert!(
+                whole.iter().any(|t| t.ends_with(&what)),
+                "{link}: no tile title ends in “{what}”: {whole:?}"
+            );
+            let value = app.sim().value(&name).expect("recorded");
+            let unit = attlab::i18n::unit(lang, spec.unit);
+            let suffix = if unit.is_empty() {
+                String::new()
+            } else {
+                format!(" {unit}")
+            };
+            let shown = (whole.iter())
+                .filter_map(|t| t.strip_suffix(&suffix))
+                .filter_map(|n| n.parse::<f64>().ok())
+                .any(|n| (n - value).abs() <= 1e-4 * value.abs().max(1.0));
+            assert!(shown, "{link}: no tile reads {value} {unit}: {whole:?}");
+        }
+    }
+}
