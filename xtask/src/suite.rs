@@ -242,7 +242,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     suite.step("cargo doc", || {
         let metadata = cmd::cargo()
             .args(["metadata", "--no-deps", "--format-version", "1"])
-            .output()?;
+            .output()
+            .map_err(|e| format!("could not run cargo metadata: {e}"))?;
         if !metadata.status.success() {
             let why = String::from_utf8_lossy(&metadata.stderr);
             return Err(format!("cargo metadata failed: {why}").into());

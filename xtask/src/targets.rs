@@ -39,9 +39,11 @@ pub fn wasm_test_targets(dir: &Path) -> Result<Vec<String>> {
 /// binary not named as its package's library, whose page would overwrite the library's),
 /// named explicitly, with `--examples`. Selecting examples makes cargo resolve features with
 /// the dev-dependencies, as clippy's `--all-targets` does, so the doc reuses clippy's checks
-/// of the dependencies instead of checking 26 of them again with other features (the
+/// of the dependencies instead of checking 24 of them again with other features (the
 /// dev-dependencies add serde's `alloc`, approx's `default`, eframe's `accesskit`, …).
-/// `metadata` is `cargo metadata --no-deps --format-version 1`'s output.
+/// `metadata` is `cargo metadata --no-deps --format-version 1`'s output. Named explicitly, a
+/// library with `doc = false` would be documented and a binary whose `required-features`
+/// are off would fail the step; the workspace has neither.
 pub fn doc_target_args(metadata: &str) -> Result<Vec<String>> {
     let metadata: Value =
         serde_json::from_str(metadata).map_err(|e| format!("cargo metadata's output: {e}"))?;
@@ -50,7 +52,12 @@ pub fn doc_target_args(metadata: &str) -> Result<Vec<String>> {
         .ok_or("cargo metadata's output has no packages")?;
     let mut args = vec!["--lib".to_string(), "--examples".to_string()];
     for package in packages {
-        let targets = package["targets"].as_array().map_or(&[][..], Vec::as_slice);
+        let targets = package["targets"].as_array().ok_or_else(|| {
+            format!(
+                "package {} has no targets in cargo metadata's output",
+                package["name"]
+            )
+        })?;
         let lib = targets
             .iter()
             .find(|t| has_kind(t, &LIB_KINDS))

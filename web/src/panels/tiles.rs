@@ -7,8 +7,9 @@ use attlab::i18n;
 use egui::text::{LayoutJob, TextFormat};
 use egui::{Color32, FontId, RichText, Ui};
 
-/// The number's size, and its unit's after it (points).
+/// The number's size (points).
 const NUMBER_PT: f32 = 34.0;
+/// The size of the unit after the number (points), on the number's baseline.
 const UNIT_PT: f32 = 22.0;
 
 /// The strip of tiles, when presenter mode is on and the lesson step names values.
@@ -27,7 +28,8 @@ pub fn tiles(ui: &mut Ui, app: &AppState) {
             let margins = frame.total_margin().sum().x + ui.spacing().item_spacing.x;
             for (i, key) in step.tiles.iter().enumerate() {
                 let left = (step.tiles.len() - i) as f32;
-                let width = ui.available_width() / left - margins;
+                // Never negative: a number wider than its share leaves the rest nothing.
+                let width = (ui.available_width() / left - margins).max(0.0);
                 frame.show(ui, |ui| tile(ui, app, &key.name(), width));
             }
         });
@@ -43,6 +45,8 @@ fn tile(ui: &mut Ui, app: &AppState, name: &str, width: f32) {
     let value = app.sim().value(name).ok().filter(|v| v.is_finite());
     ui.vertical(|ui| {
         ui.set_max_width(width);
+        // The width the label wraps at, as the layout rounded it.
+        let width = ui.available_width();
         let font = egui::TextStyle::Small.resolve(ui.style());
         let fits = |text: &str| {
             let galley =
@@ -79,32 +83,39 @@ enum Title {
 }
 
 /// "owner: what" as `fits` allows: whole on one line when it fits; else on one line with
-/// the owner cut short ("Beyond the paper: re-i…: rate correction p_x"), so that what the
-/// tile measures stays whole (three tiles of one estimator's p_x, p_y, p_z had all read
-/// "Beyond the paper: re-integrate the last int…"); else the owner, cut to fit, on a line
-/// above the measure. `fits` must hold for a text if it holds for a longer one (a width).
+/// the owner cut a little ("Quaternion RK4 integr…: attitude error (whole angle)"), keeping
+/// at least [`MIN_OWNER_SHARE`] of it; else the owner, cut to fit, on a line above the
+/// measure. So what the tile measures stays whole, and tiles of owners that share their
+/// first words still differ (cut at 44 characters, paper 5's three tiles had all read
+/// "Beyond the paper: re-integrate the last int…", and in Russian paper 3's two
+/// integrations would have read "Интегриров…"). `fits` must hold for a text if it holds for
+/// a longer one (a width).
 fn fit_title(parts: &i18n::LegendParts, fits: impl Fn(&str) -> bool) -> Title {
     let whole = parts.joined();
     let Some(owner) = parts.owner.as_deref().filter(|_| !fits(&whole)) else {
         return Title::One(whole);
     };
+    let n = owner.chars().count();
+    let least = (n * MIN_OWNER_SHARE.0).div_ceil(MIN_OWNER_SHARE.1);
     let cut_owner = |keep: usize| format!("{}: {}", super::elide(owner, keep + 1), parts.what);
-    if fits(&cut_owner(MIN_OWNER_CHARS)) {
-        let keep = longest(MIN_OWNER_CHARS, owner.chars().count(), |k| {
-            fits(&cut_owner(k))
-        });
+    if least < n && fits(&cut_owner(least)) {
+        let keep = longest(least, n, |k| fits(&cut_owner(k)));
         return Title::One(cut_owner(keep));
     }
     let line = |keep: usize| format!("{}:", super::elide(owner, keep + 1));
-    let keep = longest(0, owner.chars().count(), |k| fits(&line(k)));
+    let keep = longest(0, n, |k| fits(&line(k)));
     Title::Two(line(keep), parts.what.clone())
 }
+
+/// The share of an owner's characters (numerator, denominator) a title keeps on the
+/// measure's line; a shorter cut goes on a line of its own.
+const MIN_OWNER_SHARE: (usize, usize) = (2, 3);
 
 /// The greatest `k` in `lo..=hi` for which `fits(k)` holds, given that it holds at `lo`
 /// (or `lo` if nothing does) and once it fails it fails for every greater `k`.
 fn longest(lo: usize, hi: usize, fits: impl Fn(usize) -> bool) -> usize {
-    if fits(hi) {
-        return hi;
+    if hi <= lo || fits(hi) {
+        return hi.max(lo);
     }
     let (mut lo, mut hi) = (lo, hi);
     while hi - lo > 1 {
@@ -113,9 +124,6 @@ fn longest(lo: usize, hi: usize, fits: impl Fn(usize) -> bool) -> usize {
     }
     lo
 }
-
-/// The fewest characters of an owner worth showing before its "…" on the measure's line.
-const MIN_OWNER_CHARS: usize = 8;
 
 /// "3.6916 °": the number strong at [`NUMBER_PT`], the unit at [`UNIT_PT`] on its baseline.
 fn number_with_unit(ui: &Ui, number: &str, unit: &str) -> LayoutJob {
@@ -146,41 +154,42 @@ mod tests {
     /// less a lesson's panel: three tiles of 44 characters fit, as on paper 3's step 3).
     const ROW_CHARS: usize = 132;
 
-    /// Every tile of every lesson step names a series the run records, and with its share
-    /// of a projector's row its title keeps what the tile measures whole, in each language:
-    /// so no tile hides what it measures behind "…".
+    /// Every tile of every lesson step names a series the run records; with its share of a
+    /// projector's row, each title's lines fit (the measure on a line of its own included)
+    /// and no two tiles of a step read alike, in each language. Cut at 44 characters, paper
+    /// 5's step 7 had shown three tiles all reading "Beyond the paper: re-integrate the last
+    /// int…", and paper 1's two filters had lost "less the integrated φ_int".
     #[test]
-    fn every_tile_title_keeps_its_measure_whole_in_each_language() {
-        let mut cut = Vec::new();
+    fn every_tiles_title_fits_its_share_and_tells_the_tiles_apart() {
+        let mut problems = Vec::new();
         for lab in labs::all() {
             let lesson = lab.lesson().expect("every lab has a lesson");
             for (i, step) in lesson.steps.iter().enumerate() {
                 let budget = ROW_CHARS / step.tiles.len().max(1);
+                let fits = |t: &str| t.chars().count() <= budget;
                 for lang in Lang::ALL {
                     let link = format!("lesson={}&step={}&lang={}", lab.id(), i + 1, lang.code());
                     let app = AppState::from_fragment(&link);
+                    let mut titles = Vec::new();
                     for key in step.tiles {
                         let name = key.name();
                         let spec = app.sim().specs().iter().find(|s| s.name == name);
                         let spec = spec.unwrap_or_else(|| panic!("{link}: no series {name}"));
                         let parts = i18n::series_legend_without_unit(lang, lab.id(), spec);
-                        let title = fit_title(&parts, |t| t.chars().count() <= budget);
-                        let (first, whole) = match &title {
-                            Title::One(line) => (
-                                line,
-                                line.ends_with(&format!(": {}", parts.what))
-                                    || line == &parts.joined(),
-                            ),
-                            Title::Two(owner, what) => (owner, what == &parts.what),
+                        let title = fit_title(&parts, fits);
+                        let lines_fit = match &title {
+                            Title::One(line) => fits(line),
+                            Title::Two(owner, what) => fits(owner) && fits(what),
                         };
-                        if !whole || first.chars().count() > budget {
-                            cut.push(format!("{link}: {title:?}"));
+                        if !lines_fit || titles.contains(&title) {
+                            problems.push(format!("{link}: {title:?}"));
                         }
+                        titles.push(title);
                     }
                 }
             }
         }
-        assert!(cut.is_empty(), "{cut:#?}");
+        assert!(problems.is_empty(), "{problems:#?}");
     }
 
     #[test]
@@ -198,8 +207,20 @@ mod tests {
             Some("Beyond the paper: re-integrate the last interval"),
             "rate correction p_x",
         );
-        let cut = "Beyond the paper: re-i…: rate correction p_x";
-        assert_eq!(fit_title(&long, within(44)), one(cut));
+        // Cut to under two thirds, the owner goes on a line of its own.
+        assert_eq!(
+            fit_title(&long, within(44)),
+            Title::Two(
+                "Beyond the paper: re-integrate the last in…:".into(),
+                long.what.clone()
+            )
+        );
+        let quaternion = parts(
+            Some("Quaternion RK4 integration"),
+            "attitude error (whole angle)",
+        );
+        let cut = "Quaternion RK4 integr…: attitude error (whole angle)";
+        assert_eq!(fit_title(&quaternion, within(52)), one(cut));
         // No room for an owner worth reading beside the measure: two lines.
         let wide = parts(
             Some("Method (9): Gauss–Newton"),
@@ -213,5 +234,6 @@ mod tests {
         assert_eq!(fit_title(&parts(None, "period"), within(4)), one("period"));
         assert_eq!(longest(0, 10, |k| k <= 3), 3);
         assert_eq!(longest(0, 10, |_| true), 10);
+        assert_eq!(longest(8, 5, |_| false), 8);
     }
 }

@@ -245,11 +245,12 @@ fn a_lessons_legend_fits_a_projector() {
     }
 }
 
-/// A lesson's tiles on a projector: each names what it measures whole (a long estimator's
-/// name is cut first, or goes on a line of its own) and prints its value with the unit
-/// after it, every text painted whole inside the window. Paper 3's step 3 (the README's
-/// picture), its step 6 (four tiles), paper 5's step 7 (three tiles of one estimator with
-/// a long name, in Russian).
+/// A lesson's tiles on a projector: each prints its value with the unit after it (exactly
+/// as the tile formats it), and right above that number a title that ends in the whole
+/// measure (a long estimator's name is cut first, or goes on a line of its own), all
+/// painted whole inside the window. Paper 3's step 3 (the README's picture) and step 6
+/// (three filters' tilt errors), paper 5's step 7 (three tiles of one estimator with a long
+/// name, in Russian).
 #[test]
 fn a_lessons_tiles_name_their_measure_whole_and_carry_its_unit() {
     for link in [
@@ -261,21 +262,24 @@ fn a_lessons_tiles_name_their_measure_whole_and_carry_its_unit() {
         let app = &h.state().state;
         let lang = app.view().lang();
         let lab = app.sim().lab();
-        let window = h.ctx.content_rect();
-        let whole: Vec<String> = (whole_texts(&h).into_iter())
-            .filter(|(clip, _)| window.expand(0.5).contains_rect(*clip))
-            .map(|(_, t)| t)
+        let window = h.ctx.content_rect().expand(0.5);
+        let whole: Vec<(Rect, String)> = (h.output().shapes.iter())
+            .filter_map(|c| match &c.shape {
+                Shape::Text(t) if window.contains_rect(t.visual_bounding_rect()) => {
+                    let inside = c
+                        .clip_rect
+                        .expand(0.5)
+                        .contains_rect(t.visual_bounding_rect());
+                    inside.then(|| (t.visual_bounding_rect(), t.galley.text().to_owned()))
+                }
+                _ => None,
+            })
             .collect();
         let step = app.lesson_step().expect("a lesson step");
         for key in step.tiles {
             let name = key.name();
             let spec = (app.sim().specs().iter()).find(|s| s.name == name);
             let spec = spec.unwrap_or_else(|| panic!("{link}: no series {name}"));
-            let what = attlab::i18n::series_legend_without_unit(lang, lab.id(), spec).what;
-            assert!(
-                whole.iter().any(|t| t.ends_with(&what)),
-                "{link}: no tile title ends in “{what}”: {whole:?}"
-            );
             let value = app.sim().value(&name).expect("recorded");
             let unit = attlab::i18n::unit(lang, spec.unit);
             let suffix = if unit.is_empty() {
@@ -283,11 +287,19 @@ fn a_lessons_tiles_name_their_measure_whole_and_carry_its_unit() {
             } else {
                 format!(" {unit}")
             };
-            let shown = (whole.iter())
-                .filter_map(|t| t.strip_suffix(&suffix))
-                .filter_map(|n| n.parse::<f64>().ok())
-                .any(|n| (n - value).abs() <= 1e-4 * value.abs().max(1.0));
-            assert!(shown, "{link}: no tile reads {value} {unit}: {whole:?}");
+            let number = format!("{}{suffix}", panels::cycle_num(value));
+            let at = (whole.iter()).find(|(_, t)| *t == number);
+            let (at, _) = at.unwrap_or_else(|| panic!("{link}: no tile reads “{number}”"));
+            let what = attlab::i18n::series_legend_without_unit(lang, lab.id(), spec).what;
+            // The title: its left edge with the number's, its foot just above the number.
+            let above = |r: &Rect| {
+                (r.left() - at.left()).abs() < 4.0 && (0.0..12.0).contains(&(at.top() - r.bottom()))
+            };
+            let title = (whole.iter()).find(|(r, _)| above(r)).map(|(_, t)| t);
+            assert!(
+                title.is_some_and(|t| t.ends_with(&what)),
+                "{link}: the title above “{number}” is {title:?}, not ending in “{what}”"
+            );
         }
     }
 }
