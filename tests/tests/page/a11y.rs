@@ -50,12 +50,12 @@ fn leading_number(text: &str) -> Option<f64> {
 }
 
 /// Problems with the open lab's sliders in the accessibility tree (defaults expected), and
-/// with the live description.
+/// with the live description (the caller names the lab and the screen).
 pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String> {
     let id = lab.id();
     let nodes = match ax_tree(session) {
         Ok(nodes) => nodes,
-        Err(e) => return vec![format!("#lab={id}: no accessibility tree: {e}")],
+        Err(e) => return vec![format!("no accessibility tree: {e}")],
     };
     let sliders: Vec<&(String, String, String)> =
         nodes.iter().filter(|n| n.0 == "slider").collect();
@@ -63,10 +63,7 @@ pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String>
     let real = |k: &ParamKind| matches!(k, ParamKind::Real | ParamKind::Integer);
     for spec in lab.params().iter().filter(|s| real(&s.kind)) {
         let Some((_, _, value)) = sliders.iter().find(|n| n.1 == spec.label) else {
-            problems.push(format!(
-                "#lab={id}: no slider named `{}` in the tree",
-                spec.label
-            ));
+            problems.push(format!("no slider named `{}` in the tree", spec.label));
             continue;
         };
         let read = leading_number(value);
@@ -74,7 +71,7 @@ pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String>
             read.is_some_and(|v| (v - spec.default).abs() <= 1e-6 * spec.default.abs().max(1e-9));
         if !close {
             problems.push(format!(
-                "#lab={id}: slider `{}` reads `{value}`, its value is {}",
+                "slider `{}` reads `{value}`, its value is {}",
                 spec.label, spec.default
             ));
         }
@@ -84,7 +81,7 @@ pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String>
         .unwrap_or(Value::Null);
     let live = live.as_str().unwrap_or_default();
     if !live.contains(" t = ") {
-        problems.push(format!("#lab={id}: the live description is `{live}`"));
+        problems.push(format!("the live description is `{live}`"));
     }
     println!(
         "page test: #lab={id}: {} sliders in the accessibility tree of {} nodes; live: {live}",
