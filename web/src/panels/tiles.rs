@@ -125,7 +125,9 @@ fn longest(lo: usize, hi: usize, fits: impl Fn(usize) -> bool) -> usize {
     lo
 }
 
-/// "3.6916 °": the number strong at [`NUMBER_PT`], the unit at [`UNIT_PT`] on its baseline.
+/// "3.6916 °": the number strong at [`NUMBER_PT`], the unit at [`UNIT_PT`] on its baseline;
+/// a degree alone at the number's size, so its ring stands at the digits' top as in print
+/// (smaller, on the baseline, it sat at a lowercase letter's height).
 fn number_with_unit(ui: &Ui, number: &str, unit: &str) -> LayoutJob {
     let colour = ui.visuals().strong_text_color();
     let family = egui::TextStyle::Body.resolve(ui.style()).family;
@@ -139,7 +141,8 @@ fn number_with_unit(ui: &Ui, number: &str, unit: &str) -> LayoutJob {
     job.append(number, 0.0, format(NUMBER_PT, colour));
     if !unit.is_empty() {
         let weak = ui.visuals().text_color();
-        job.append(&format!(" {unit}"), 0.0, format(UNIT_PT, weak));
+        let size = if unit == "°" { NUMBER_PT } else { UNIT_PT };
+        job.append(&format!(" {unit}"), 0.0, format(size, weak));
     }
     job
 }
