@@ -197,44 +197,51 @@ mod tests {
 
     #[test]
     fn a_long_owner_is_cut_before_the_measure() {
-        let parts = |owner: Option<&str>, what: &str| i18n::LegendParts {
-            owner: owner.map(str::to_string),
-            what: what.to_string(),
-        };
-        let within = |n: usize| move |t: &str| t.chars().count() <= n;
         let one = |s: &str| Title::One(s.to_string());
-        let short = parts(Some("(u, v, z) RK4 integration"), "attitude error");
-        let whole = "(u, v, z) RK4 integration: attitude error";
-        assert_eq!(fit_title(&short, within(44)), one(whole));
-        let long = parts(
-            Some("Beyond the paper: re-integrate the last interval"),
-            "rate correction p_x",
-        );
-        // Cut to under two thirds, the owner goes on a line of its own.
-        assert_eq!(
-            fit_title(&long, within(44)),
-            Title::Two(
-                "Beyond the paper: re-integrate the last in…:".into(),
-                long.what.clone()
-            )
-        );
-        let quaternion = parts(
-            Some("Quaternion RK4 integration"),
-            "attitude error (whole angle)",
-        );
-        let cut = "Quaternion RK4 integr…: attitude error (whole angle)";
-        assert_eq!(fit_title(&quaternion, within(52)), one(cut));
-        // No room for an owner worth reading beside the measure: two lines.
-        let wide = parts(
-            Some("Method (9): Gauss–Newton"),
-            "tilt error (angle of the vertical)",
-        );
-        assert_eq!(
-            fit_title(&wide, within(20)),
-            Title::Two("Method (9): Gauss–…:".into(), wide.what.clone())
-        );
-        // No owner: the measure alone, whole (it wraps in the tile).
-        assert_eq!(fit_title(&parts(None, "period"), within(4)), one("period"));
+        let two = |owner: &str, what: &str| Title::Two(owner.to_string(), what.to_string());
+        // (owner, measure, characters that fit, the title).
+        let cases = [
+            // Whole when it fits.
+            (
+                Some("(u, v, z) RK4 integration"),
+                "attitude error",
+                44,
+                one("(u, v, z) RK4 integration: attitude error"),
+            ),
+            // Cut a little, the owner keeps two thirds or more on the measure's line.
+            (
+                Some("Quaternion RK4 integration"),
+                "attitude error (whole angle)",
+                52,
+                one("Quaternion RK4 integr…: attitude error (whole angle)"),
+            ),
+            // Cut to under two thirds, the owner goes on a line of its own.
+            (
+                Some("Beyond the paper: re-integrate the last interval"),
+                "rate correction p_x",
+                44,
+                two(
+                    "Beyond the paper: re-integrate the last in…:",
+                    "rate correction p_x",
+                ),
+            ),
+            (
+                Some("Method (9): Gauss–Newton"),
+                "tilt error (angle of the vertical)",
+                20,
+                two("Method (9): Gauss–…:", "tilt error (angle of the vertical)"),
+            ),
+            // No owner: the measure alone, whole (it wraps in the tile).
+            (None, "period", 4, one("period")),
+        ];
+        for (owner, what, n, title) in cases {
+            let parts = i18n::LegendParts {
+                owner: owner.map(str::to_string),
+                what: what.to_string(),
+            };
+            let fits = |t: &str| t.chars().count() <= n;
+            assert_eq!(fit_title(&parts, fits), title, "{owner:?} {what} in {n}");
+        }
         assert_eq!(longest(0, 10, |k| k <= 3), 3);
         assert_eq!(longest(0, 10, |_| true), 10);
         assert_eq!(longest(8, 5, |_| false), 8);
