@@ -67,7 +67,8 @@ mod wasm {
     /// One step of every estimator of a lab on the next recorded measurements, with no
     /// truth, sensors or recorder: what a simulation step costs at least. The estimators are
     /// built again when the trace ends (once in 5 800 steps), so they never run on a
-    /// measurement from the past.
+    /// measurement from the past; building paper 2's takes ~17 µs natively, under 0.01 µs a
+    /// step spread over the trace.
     #[wasm_bindgen_bench]
     fn estimators_alone(c: &mut Criterion) {
         for lab in labs::all() {
