@@ -222,6 +222,7 @@ sweep-best = best for { $series }: { $param } = { $value } ({ $rms } rms)
 sweep-max-axis = log10 max |value|
 sweep-objective-axis = objective
 sweep-argmin = argmin of { $name } over this sweep's { $n } values: { $at }
+sweep-argmin-marker = argmin { $name }
 sweep-heat-needs = A heat map needs at least two positive values on each axis.
 sweep-heat-colour = colour: log10 { $name }, from { $lo } (dark) to { $hi } (bright). Optimum: { $at } ({ $name } = { $best }).
 sweep-heat-filling = colour: log10 { $name }; cells fill in as the sweep runs.

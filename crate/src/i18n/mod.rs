@@ -8,12 +8,14 @@
 //! id, so the gap is visible. The tests below fail when either language lacks a message the
 //! other has, and the page's own test fails when a message it asks for exists in neither.
 
+mod numbers;
 mod series;
 mod units;
 
 pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
+pub use numbers::{fixed, list_separator, number, parse_number};
 pub use series::{
     LegendParts, compose, estimator_id, estimator_name, lab_series_words, quantity_id,
     series_label, series_legend, series_legend_parts, series_legend_without_unit,
@@ -361,6 +363,9 @@ fn bundle(lang: Lang) -> &'static Bundle {
                 // No bidi isolation marks around arguments: the page's fonts have no glyph
                 // for them, and every text here runs left to right.
                 bundle.set_use_isolating(false);
+                if *l == Lang::Ru {
+                    bundle.set_formatter(Some(numbers::russian_fluent_number));
+                }
                 for source in l.sources().iter().chain(l.lab_sources()) {
                     let resource = FluentResource::try_new((*source).to_string())
                         .unwrap_or_else(|(partial, _)| partial);
@@ -394,12 +399,12 @@ pub fn t_with(lang: Lang, id: &str, args: &[(&str, FluentValue<'_>)]) -> String 
     format(lang, id, Some(&fluent))
 }
 
-/// Why an estimator is in trouble, in `lang`, with its numbers.
+/// Why an estimator is in trouble, in `lang`, with its numbers (each argument is one).
 pub fn trouble(lang: Lang, why: &crate::model::Trouble) -> String {
     let args: Vec<(&str, FluentValue<'_>)> = why
         .arguments()
         .into_iter()
-        .map(|(name, value)| (name, FluentValue::from(value)))
+        .map(|(name, value)| (name, FluentValue::from(number(lang, &value))))
         .collect();
     t_with(lang, why.message_id(), &args)
 }

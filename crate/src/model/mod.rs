@@ -39,8 +39,8 @@ pub use log::{
 };
 pub use note::ParamNote;
 pub use page::{
-    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, Figure, OrbitPicture, Outage, Page,
-    SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
+    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, DiagramSetting, Figure, OrbitPicture, Outage,
+    Page, SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use report::{

@@ -10,7 +10,8 @@ pub struct ParamNote {
     pub key: &'static str,
     /// The message id in the page catalogue (`crate/locales/*/page.ftl`).
     pub message: &'static str,
-    /// The message's arguments, already formatted (numbers with their digits chosen).
+    /// The message's arguments, already formatted: each a number with its digits chosen, as
+    /// Rust writes it (the page writes its decimal separator in the reader's language).
     pub args: Vec<(&'static str, String)>,
     /// A warning (the setting is outside what the paper's rig allows) rather than a fact.
     pub warning: bool,

@@ -220,7 +220,11 @@ fn draw_view(
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
-                    None => riemann_sphere::show_plane(ui, trails_of(trails, app, ui)),
+                    None => riemann_sphere::show_plane(
+                        ui,
+                        trails_of(trails, app, ui),
+                        app.view().lang(),
+                    ),
                 }
             });
         }
@@ -232,7 +236,8 @@ fn draw_view(
                 .filter(|(_, v)| *v)
                 .map(|(s, _)| s)
                 .collect();
-            single_axis::dial(ui, rect, &visible, &tr(app, "dial-title"));
+            let title = tr(app, "dial-title");
+            single_axis::dial(ui, rect, &visible, (&title, app.view().lang()));
         }
         ViewKind::PhasePortrait => {
             // Trails are kept for hidden sources too, so showing one again loses nothing.
@@ -243,7 +248,12 @@ fn draw_view(
                 tr(app, "phase-angle"),
                 tr(app, "phase-rate"),
             ];
-            let words = (words[0].as_str(), words[1].as_str(), words[2].as_str());
+            let words = (
+                words[0].as_str(),
+                words[1].as_str(),
+                words[2].as_str(),
+                app.view().lang(),
+            );
             single_axis::phase_portrait(ui, rect, &view.trails, &sources, &shown, words);
         }
     }

@@ -193,12 +193,13 @@ pub(super) fn seed_and_speed(ui: &mut Ui, app: &AppState, commands: &mut Vec<Com
     let (lo, hi) = attlab::state::SPEED_RANGE;
     let before = app.run().speed;
     let mut speed = before;
-    let r = ui.add(
+    let r = ui.add(in_language(
         egui::Slider::new(&mut speed, lo..=hi)
             .logarithmic(true)
             .text(tr(app, "speed"))
             .max_decimals(1),
-    );
+        app.view().lang(),
+    ));
     let rail = Rail {
         min: lo,
         max: hi,
@@ -307,7 +308,7 @@ pub(super) fn param_widget(
             r
         }
         ParamKind::Real | ParamKind::Integer => {
-            let mut slider = egui::Slider::new(&mut v, spec.min..=spec.max)
+            let mut slider = in_language(egui::Slider::new(&mut v, spec.min..=spec.max), lang)
                 .logarithmic(spec.scale == Scale::Log && spec.min > 0.0);
             if spec.scale == Scale::Log && spec.min == 0.0 {
                 slider = slider.logarithmic(true).smallest_positive(1e-4);
@@ -324,7 +325,7 @@ pub(super) fn param_widget(
                 label.on_hover_text(hint.clone());
             }
             // A screen reader reads the value with its unit ("0.02 °/s").
-            let text = format!("{} {unit}", crate::a11y::tidy(v));
+            let text = format!("{} {unit}", i18n::number(lang, &crate::a11y::tidy(v)));
             ui.ctx()
                 .accesskit_node_builder(r.id, |node| node.set_value(text.trim_end()));
             if let Some(keyed) = slider_keys::handle(ui, &r, Rail::of(spec), value) {
@@ -466,4 +467,17 @@ fn explanation(ui: &mut Ui, app: &AppState) {
             ui.add_space(4.0);
             ui.label(RichText::new(tr(app, "frames-help")).small());
         });
+}
+
+/// `slider` writing its value as the reader's language does ("0,050" in Russian), with the
+/// decimals egui would choose, and reading a typed value with a point or a comma.
+fn in_language(slider: egui::Slider<'_>, lang: Lang) -> egui::Slider<'_> {
+    slider
+        .custom_formatter(move |v, decimals| {
+            i18n::number(
+                lang,
+                &egui::emath::format_with_decimals_in_range(v, decimals),
+            )
+        })
+        .custom_parser(i18n::parse_number)
 }

@@ -3,8 +3,9 @@
 //! two- and three-state filters). Pause and press s (or the button) to advance one sample;
 //! the terms the lesson step talks about are highlighted.
 
-use super::{arg, estimator_name, tr, tr_with};
+use super::{arg, estimator_name, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand, ViewCommand};
+use attlab::i18n::Lang;
 use attlab::model::{CycleTerm, KalmanCycle, StateMatrix};
 use egui::{RichText, Ui};
 
@@ -30,7 +31,7 @@ pub fn cycle_panel(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comma
                 app,
                 "cycle-at",
                 &[
-                    ("t", arg(format!("{:.3}", app.sim().t_s()))),
+                    ("t", num_arg(app, format!("{:.3}", app.sim().t_s()))),
                     ("k", arg(app.sim().steps())),
                 ],
             ));
@@ -63,41 +64,52 @@ pub fn shown_filter(app: &AppState) -> Option<(usize, &KalmanCycle)> {
         .find_map(|(i, e)| Some((i, e.cycle()?)))
 }
 
-/// A number as the panel prints it: four significant digits.
-pub fn num(v: f64) -> String {
-    if v == 0.0 {
+/// A number as the panel prints it: four significant digits, in the reader's language
+/// ("0,1234" in Russian).
+pub fn num(lang: Lang, v: f64) -> String {
+    let text = if v == 0.0 {
         "0".into()
     } else if (1e-3..1e4).contains(&v.abs()) {
         format!("{v:.4}")
     } else {
         format!("{v:.3e}")
+    };
+    attlab::i18n::number(lang, &text)
+}
+
+/// What separates two numbers of a matrix's row: a comma, or where the comma is the decimal
+/// separator (Russian), a wide space (the rows are separated by semicolons).
+fn in_row(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => ", ",
+        Lang::Ru => "\u{2003}",
     }
 }
 
-/// `[a, b, c]` of the first `n` entries.
-pub fn vector(v: &[f64], n: usize) -> String {
-    let parts: Vec<String> = v.iter().take(n).map(|x| num(*x)).collect();
-    format!("[{}]", parts.join(", "))
+/// `[a, b, c]` of the first `n` entries (`[a; b; c]` in Russian).
+pub fn vector(lang: Lang, v: &[f64], n: usize) -> String {
+    let parts: Vec<String> = v.iter().take(n).map(|x| num(lang, *x)).collect();
+    format!("[{}]", parts.join(attlab::i18n::list_separator(lang)))
 }
 
-/// `[a, b; c, d]` of the top-left `rows` × `cols`.
-pub fn matrix<const C: usize>(m: &[[f64; C]], rows: usize, cols: usize) -> String {
+/// `[a, b; c, d]` of the top-left `rows` × `cols` (`[a  b; c  d]` in Russian).
+pub fn matrix<const C: usize>(lang: Lang, m: &[[f64; C]], rows: usize, cols: usize) -> String {
     let rows: Vec<String> = m
         .iter()
         .take(rows)
         .map(|r| {
             r.iter()
                 .take(cols)
-                .map(|x| num(*x))
+                .map(|x| num(lang, *x))
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join(in_row(lang))
         })
         .collect();
     format!("[{}]", rows.join("; "))
 }
 
-fn square(m: &StateMatrix, n: usize) -> String {
-    matrix(m, n, n)
+fn square(lang: Lang, m: &StateMatrix, n: usize) -> String {
+    matrix(lang, m, n, n)
 }
 
 /// The equations with their numbers, one per row.
@@ -121,7 +133,7 @@ fn equations(ui: &mut Ui, app: &AppState, c: &KalmanCycle, terms: &[CycleTerm]) 
         ))
         .small(),
     );
-    let rows = rows(c);
+    let rows = rows(app.view().lang(), c);
     let accent = ui.visuals().selection.stroke.color;
     let small = ui.style().text_styles[&egui::TextStyle::Small].size;
     egui::Grid::new("cycle_rows")
@@ -153,49 +165,57 @@ fn equations(ui: &mut Ui, app: &AppState, c: &KalmanCycle, terms: &[CycleTerm]) 
 type Row = (Option<CycleTerm>, &'static str, String);
 
 /// The rows of the cycle: the prediction, then the update when a measurement came.
-fn rows(c: &KalmanCycle) -> Vec<Row> {
+fn rows(lang: Lang, c: &KalmanCycle) -> Vec<Row> {
     let n = c.n();
     let mut rows: Vec<Row> = vec![
-        (None, "x̂ =", vector(&c.x_before, n)),
-        (None, "Φ =", square(&c.phi, n)),
-        (Some(CycleTerm::ProcessNoise), "Q =", square(&c.q, n)),
+        (None, "x̂ =", vector(lang, &c.x_before, n)),
+        (None, "Φ =", square(lang, &c.phi, n)),
+        (Some(CycleTerm::ProcessNoise), "Q =", square(lang, &c.q, n)),
         (
             Some(CycleTerm::PriorState),
             "x̂⁻ = Φx̂ =",
-            vector(&c.x_prior, n),
+            vector(lang, &c.x_prior, n),
         ),
         (
             Some(CycleTerm::PriorCovariance),
             "P⁻ = ΦPΦᵀ + Q =",
-            square(&c.p_prior, n),
+            square(lang, &c.p_prior, n),
         ),
     ];
     if let Some(u) = &c.update {
         let m = u.m;
         rows.extend([
-            (None, "z =", vector(&u.z, m)),
-            (None, "H =", matrix(&u.h, m, n)),
-            (Some(CycleTerm::MeasurementNoise), "R =", matrix(&u.r, m, m)),
+            (None, "z =", vector(lang, &u.z, m)),
+            (None, "H =", matrix(lang, &u.h, m, n)),
+            (
+                Some(CycleTerm::MeasurementNoise),
+                "R =",
+                matrix(lang, &u.r, m, m),
+            ),
             (
                 Some(CycleTerm::Innovation),
                 "z − Hx̂⁻ =",
-                vector(&u.residual, m),
+                vector(lang, &u.residual, m),
             ),
             (
                 Some(CycleTerm::Innovation),
                 "S = HP⁻Hᵀ + R =",
-                matrix(&u.s, m, m),
+                matrix(lang, &u.s, m, m),
             ),
-            (Some(CycleTerm::Gain), "K = P⁻HᵀS⁻¹ =", matrix(&u.k, n, m)),
+            (
+                Some(CycleTerm::Gain),
+                "K = P⁻HᵀS⁻¹ =",
+                matrix(lang, &u.k, n, m),
+            ),
             (
                 Some(CycleTerm::PosteriorState),
                 "x̂⁺ = x̂⁻ + K(z − Hx̂⁻) =",
-                vector(&u.x_post, n),
+                vector(lang, &u.x_post, n),
             ),
             (
                 Some(CycleTerm::PosteriorCovariance),
                 "P⁺ = (I − KH)P⁻(I − KH)ᵀ + KRKᵀ =",
-                square(&u.p_post, n),
+                square(lang, &u.p_post, n),
             ),
         ]);
     }

@@ -16,14 +16,16 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let Some((title, window_s, rows)) = app.sim().accuracy() else {
         return;
     };
+    let lang = app.view().lang();
     let cell = |x: f64| {
         if x.is_finite() {
-            attlab::model::fmt_sig(x)
+            i18n::number(lang, &attlab::model::fmt_sig(x))
         } else {
             "—".into()
         }
     };
-    let paper = |x: Option<f64>| x.map_or_else(|| "—".into(), |v| format!("{v:e}"));
+    let paper =
+        |x: Option<f64>| x.map_or_else(|| "—".into(), |v| i18n::number(lang, &format!("{v:e}")));
     let title = lab_word(app, &i18n::accuracy_title_id(app.sim().lab().id()), title);
     super::fit::header(ui, title)
         .default_open(true)
@@ -138,7 +140,7 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
         id.and_then(|id| app.sim().estimators().iter().position(|e| e.id() == id))
             .map(|i| i + 1)
     };
-    Plot::new(("diagram_plot", d.title))
+    crate::render::ticks::in_language(Plot::new(("diagram_plot", d.title)), app.view().lang())
         .height(height)
         .data_aspect(1.0)
         .include_x(-1.2)
@@ -185,14 +187,22 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
 }
 
 /// A diagram's title in the reader's language, with its detail in the paper's notation (its
-/// units in the reader's words).
+/// numbers and units in the reader's words: "Δt = 1 с; ε = 0,1").
 pub fn diagram_heading(app: &AppState, index: usize, d: &attlab::model::Diagram) -> String {
     let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), index), d.title);
     if d.detail.is_empty() {
         title
     } else {
-        let detail = i18n::units_after_numbers(app.view().lang(), &d.detail);
-        format!("{title} ({detail})")
+        let lang = app.view().lang();
+        let parts: Vec<String> = (d.detail.iter())
+            .map(|(symbol, value, unit)| {
+                let value = i18n::number(lang, &value.to_string());
+                format!("{symbol} = {value} {}", i18n::unit(lang, unit))
+                    .trim_end()
+                    .to_string()
+            })
+            .collect();
+        format!("{title} ({})", parts.join(i18n::list_separator(lang)))
     }
 }
 

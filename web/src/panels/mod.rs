@@ -55,6 +55,12 @@ pub(crate) fn arg(value: impl std::fmt::Display) -> FluentValue<'static> {
     FluentValue::from(value.to_string())
 }
 
+/// An argument for [`tr_with`] that is a number as the code formats it ("0.05"), written as
+/// the reader's language writes it ("0,05" in Russian).
+pub(crate) fn num_arg(app: &AppState, value: impl std::fmt::Display) -> FluentValue<'static> {
+    FluentValue::from(i18n::number(app.view().lang(), &value.to_string()))
+}
+
 /// The name of estimator `i` a student reads (its label, in the reader's language).
 pub(crate) fn estimator_name(app: &AppState, i: usize) -> String {
     let lab = app.sim().lab().id();
@@ -119,6 +125,7 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         no_positive: tr(app, "legend-no-positive"),
         reset: tr(app, "plot-reset-hint"),
         outages: outage_words,
+        lang: app.view().lang(),
     }
 }
 
@@ -259,9 +266,9 @@ fn stats_text(app: &AppState, narrow: bool) -> String {
             app,
             "status-short",
             &[
-                ("t", arg(format!("{:7.2}", app.sim().t_s()))),
-                ("realtime", arg(format!("{:.2}", s.realtime))),
-                ("asked", arg(app.run().speed)),
+                ("t", num_arg(app, format!("{:7.2}", app.sim().t_s()))),
+                ("realtime", num_arg(app, format!("{:.2}", s.realtime))),
+                ("asked", num_arg(app, app.run().speed)),
             ],
         )
     } else {
@@ -269,19 +276,22 @@ fn stats_text(app: &AppState, narrow: bool) -> String {
             app,
             "status-long",
             &[
-                ("t", arg(format!("{:8.2}", app.sim().t_s()))),
-                ("step", arg(format!("{:.1}", app.sim().dt_s() * 1e3))),
-                ("rate", arg(format!("{:7.0}", s.steps_per_s))),
-                ("realtime", arg(format!("{:.2}", s.realtime))),
-                ("asked", arg(app.run().speed)),
-                ("frame", arg(format!("{:5.1}", s.frame_ms))),
-                ("sim", arg(format!("{:4.1}", s.step_ms))),
+                ("t", num_arg(app, format!("{:8.2}", app.sim().t_s()))),
+                (
+                    "step",
+                    num_arg(app, format!("{:.1}", app.sim().dt_s() * 1e3)),
+                ),
+                ("rate", num_arg(app, format!("{:7.0}", s.steps_per_s))),
+                ("realtime", num_arg(app, format!("{:.2}", s.realtime))),
+                ("asked", num_arg(app, app.run().speed)),
+                ("frame", num_arg(app, format!("{:5.1}", s.frame_ms))),
+                ("sim", num_arg(app, format!("{:4.1}", s.step_ms))),
                 (
                     "mib",
-                    arg(format!(
-                        "{:.1}",
-                        rec.memory_bytes() as f64 / f64::from(1 << 20)
-                    )),
+                    num_arg(
+                        app,
+                        format!("{:.1}", rec.memory_bytes() as f64 / f64::from(1 << 20)),
+                    ),
                 ),
                 ("series", arg(rec.specs().len())),
             ],

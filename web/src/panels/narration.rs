@@ -4,7 +4,7 @@
 //! While the run goes on it is refreshed every ten seconds; a pause, a lab or an estimator
 //! change refreshes it at once.
 
-use super::{arg, tr_with};
+use super::{arg, num_arg, tr_with};
 use crate::state::AppState;
 use attlab::i18n;
 use std::time::Duration;
@@ -20,7 +20,11 @@ pub fn describe(app: &AppState) -> String {
     let lang = app.view().lang();
     let title = i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title());
     let state = if app.run().playing {
-        tr_with(app, "live-running", &[("speed", arg(app.run().speed))])
+        tr_with(
+            app,
+            "live-running",
+            &[("speed", num_arg(app, app.run().speed))],
+        )
     } else {
         tr_with(app, "live-paused", &[])
     };
@@ -29,7 +33,7 @@ pub fn describe(app: &AppState) -> String {
         "live-run",
         &[
             ("lab", arg(title)),
-            ("t", arg(format!("{:.1}", sim.t_s()))),
+            ("t", num_arg(app, format!("{:.1}", sim.t_s()))),
             ("state", arg(state)),
         ],
     );
@@ -42,8 +46,8 @@ pub fn describe(app: &AppState) -> String {
         let (error, band) = (significant(g.error_deg), significant(g.three_sigma_deg));
         let args = [
             ("name", arg(name)),
-            ("error", arg(error)),
-            ("band", arg(band)),
+            ("error", num_arg(app, error)),
+            ("band", num_arg(app, band)),
         ];
         let id = match g.within() {
             Some(true) => "live-within",

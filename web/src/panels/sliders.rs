@@ -3,7 +3,7 @@
 //! parameters that wait for Reset.
 
 use super::controls::param_widget;
-use super::{arg, tr, tr_with};
+use super::{arg, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n;
 use attlab::model::ParamNote;
@@ -55,7 +55,12 @@ pub(super) fn slider_rows(
 
 /// A note under a slider: small, in the warning colour when it is one.
 fn note_line(ui: &mut Ui, app: &AppState, note: &ParamNote) {
-    let args: Vec<(&str, _)> = note.args.iter().map(|(k, v)| (*k, arg(v))).collect();
+    // Every argument of a note is a number.
+    let args: Vec<(&str, _)> = note
+        .args
+        .iter()
+        .map(|(k, v)| (*k, num_arg(app, v)))
+        .collect();
     let text = RichText::new(tr_with(app, note.message, &args)).small();
     let text = if note.warning {
         text.color(ui.visuals().warn_fg_color)

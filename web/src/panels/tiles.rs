@@ -70,7 +70,7 @@ fn tile(ui: &mut Ui, app: &AppState, name: &str, width: f32) {
             return;
         };
         let unit = spec.map_or(String::new(), |s| i18n::unit(lang, s.unit));
-        ui.label(number_with_unit(ui, &super::cycle_num(value), &unit));
+        ui.label(number_with_unit(ui, &super::cycle_num(lang, value), &unit));
     });
 }
 

@@ -75,6 +75,8 @@ pub struct PlotWords<'a> {
     pub outages: Vec<String>,
     /// The reset button's hint.
     pub reset: String,
+    /// The reader's language, for the numbers on the axes and under the pointer.
+    pub lang: attlab::i18n::Lang,
 }
 
 /// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
@@ -100,7 +102,7 @@ pub fn show(
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
     // brings back the whole run once the reader has zoomed or dragged.
     let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
-    let mut plot = Plot::new(("series_plot", format!("{tab:?}")))
+    let plot = Plot::new(("series_plot", format!("{tab:?}")))
         .x_axis_label(words.time_axis.clone())
         .y_axis_label(fitting_title(
             ui,
@@ -108,10 +110,9 @@ pub fn show(
             plot_rect.height(),
         ))
         .x_grid_spacer(super::ticks::x_marks)
-        .x_axis_formatter(super::ticks::tick_label)
         .y_grid_spacer(super::ticks::y_marks)
-        .y_axis_formatter(super::ticks::tick_label)
         .allow_scroll(false);
+    let mut plot = super::ticks::in_language(plot, words.lang);
     if ui
         .data_mut(|d| d.remove_temp::<bool>(reset_id))
         .unwrap_or(false)
@@ -448,6 +449,7 @@ mod tests {
             no_positive: String::new(),
             outages: Vec::new(),
             reset: String::new(),
+            lang: attlab::i18n::Lang::En,
         }
     }
 

@@ -3,6 +3,7 @@
 //! S = (0, 0, −1) through k to the body's ξ′η′ plane, where it lands at w = u + jv; and the
 //! complex plane with the w trajectories beside it.
 
+use attlab::i18n::Lang;
 use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 use nalgebra::{Rotation3, Vector3};
@@ -305,7 +306,7 @@ fn plane_segments(w: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
 pub const ROOM_FOR_LEGEND: (usize, f32) = (5, 280.0);
 
 /// The complex plane with the w trajectories and the unit circle |w| = 1.
-pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
+pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack], lang: Lang) {
     let colours = super::palette::of(ui.visuals());
     let circle: PlotPoints<'_> = (0..=96)
         .map(|i| {
@@ -322,7 +323,7 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack]) {
                 .background_alpha(0.6),
         );
     }
-    plane
+    super::ticks::in_language(plane, lang)
         .include_x(-2.0)
         .include_x(2.0)
         .include_y(-2.0)

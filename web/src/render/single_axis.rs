@@ -3,6 +3,7 @@
 //! the phase portrait angle–rate, a trail per source. A replayed or live log has no truth:
 //! the caller leaves it out of both.
 
+use attlab::i18n::Lang;
 use egui::{Color32, Painter, Pos2, Rect, Stroke, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot, Points};
 use std::collections::VecDeque;
@@ -71,7 +72,7 @@ fn view_title(painter: &egui::Painter, rect: Rect, title: &str, ink: egui::Color
 
 /// The angle on a dial: a needle per source, truth drawn widest; 0° up, positive clockwise
 /// as on an instrument.
-pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
+pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], (title, lang): (&str, Lang)) {
     let painter = ui.painter_at(rect);
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
@@ -132,7 +133,11 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], title: &str) {
         let at = readouts + Vec2::new(0.0, row * k as f32);
         // The number first, so a long name is what a narrow view cuts, never the angle.
         let text = if s.angle_rad.is_finite() {
-            format!("{:+8.2}°  {}", s.angle_rad.to_degrees(), s.name)
+            format!(
+                "{}°  {}",
+                attlab::i18n::number(lang, &format!("{:+8.2}", s.angle_rad.to_degrees())),
+                s.name
+            )
         } else {
             format!("{:>9}  {}", "—", s.name)
         };
@@ -204,7 +209,7 @@ pub fn phase_portrait(
     trails: &PhaseTrails,
     sources: &[AxisSource],
     shown: &[bool],
-    (title, angle_axis, rate_axis): (&str, &str, &str),
+    (title, angle_axis, rate_axis, lang): (&str, &str, &str, Lang),
 ) {
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         // One line, as the plot's height below assumes; cut with "…" where it does not fit
@@ -215,7 +220,7 @@ pub fn phase_portrait(
         if sources.len() <= most && rect.height() >= tall {
             portrait = portrait.legend(Legend::default().text_style(egui::TextStyle::Small));
         }
-        portrait
+        super::ticks::in_language(portrait, lang)
             .x_axis_label(angle_axis)
             .y_axis_label(rate_axis)
             .show(ui, |plot| {

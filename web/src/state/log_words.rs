@@ -50,7 +50,10 @@ pub fn fault(lang: Lang, f: &LineFault) -> String {
         ),
         LineFault::TimeGlitch { t_s, last_s } => (
             "log-fault-time-glitch",
-            vec![("t", text(t_s)), ("last", text(last_s))],
+            vec![
+                ("t", text(i18n::number(lang, &t_s.to_string()))),
+                ("last", text(i18n::number(lang, &last_s.to_string()))),
+            ],
         ),
         LineFault::Duplicate { line } => ("log-fault-duplicate", vec![("line", text(line))]),
         LineFault::Averaged { line } => ("log-fault-averaged", vec![("line", text(line))]),
@@ -112,9 +115,9 @@ pub fn refusal(lang: Lang, r: &LogRefusal) -> String {
         } => (
             "log-refused-accel",
             vec![
-                ("g", text(format!("{median_g:.3e}"))),
+                ("g", text(i18n::number(lang, &format!("{median_g:.3e}")))),
                 ("unit", text(unit)),
-                ("gives", text(format!("{gives_g:.2}"))),
+                ("gives", text(i18n::fixed(lang, *gives_g, 2))),
             ],
         ),
     };
@@ -238,7 +241,7 @@ mod tests {
             let (en, ru) = (refusal(Lang::En, &r), refusal(Lang::Ru, &r));
             assert!(ru.chars().any(|c| ('а'..='я').contains(&c)), "{ru}");
             assert!(!ru.contains('$') && ru != en, "{ru}");
-            assert_eq!(numbers(&ru), numbers(&en), "{en} / {ru}");
+            same_numbers(&en, &ru);
         }
     }
 
@@ -279,11 +282,33 @@ mod tests {
                     && !ru.contains('$'),
                 "{ru}"
             );
-            assert_eq!(numbers(&ru), numbers(&en), "{en} / {ru}");
+            same_numbers(&en, &ru);
         }
     }
 
     /// The numbers in `s`, sorted (a language may give them in another order).
+    /// `ru` says the numbers `en` says, each with the Russian decimal comma.
+    fn same_numbers(en: &str, ru: &str) {
+        let digit = |k: Option<char>| k.is_some_and(|k| k.is_ascii_digit());
+        let decimal_points: String = (ru.char_indices())
+            .map(|(i, c)| {
+                let around = (
+                    ru[..i].chars().next_back(),
+                    ru[i + c.len_utf8()..].chars().next(),
+                );
+                if c == ',' && digit(around.0) && digit(around.1) {
+                    '.'
+                } else {
+                    c
+                }
+            })
+            .collect();
+        assert_eq!(numbers(&decimal_points), numbers(en), "{en} / {ru}");
+        for n in numbers(en).iter().filter(|n| n.contains('.')) {
+            assert!(ru.contains(&i18n::number(Lang::Ru, n)), "{n} in {ru}");
+        }
+    }
+
     fn numbers(s: &str) -> Vec<String> {
         let mut out: Vec<String> = s
             .split(|c: char| !c.is_ascii_alphanumeric() && c != '.' && c != '+' && c != '-')

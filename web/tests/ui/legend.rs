@@ -287,7 +287,7 @@ fn a_lessons_tiles_name_their_measure_whole_and_carry_its_unit() {
             } else {
                 format!(" {unit}")
             };
-            let number = format!("{}{suffix}", panels::cycle_num(value));
+            let number = format!("{}{suffix}", panels::cycle_num(lang, value));
             let at = (whole.iter()).find(|(_, t)| *t == number);
             let (at, _) = at.unwrap_or_else(|| panic!("{link}: no tile reads “{number}”"));
             let what = attlab::i18n::series_legend_without_unit(lang, lab.id(), spec).what;

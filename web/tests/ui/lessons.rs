@@ -249,17 +249,18 @@ fn the_cycle_panel_prints_the_filters_own_state_at_this_sample() {
     let filter = &s.sim().estimators()[i];
     let est = filter.estimate();
     let x = [est.angle_rad.unwrap(), est.rate_body_rad_s.unwrap().z];
-    let x_text = attlab_web::panels::cycle_vector(&x, 2);
+    let lang = s.view().lang();
+    let x_text = attlab_web::panels::cycle_vector(lang, &x, 2);
     let cov = filter.covariance().unwrap();
     let n = cov.states.len();
     let p: Vec<[f64; 3]> = (0..n)
         .map(|r| std::array::from_fn(|c| if c < n { cov.matrix[c * n + r] } else { 0.0 }))
         .collect();
-    let p_text = attlab_web::panels::cycle_matrix(&p, n, n);
+    let p_text = attlab_web::panels::cycle_matrix(lang, &p, n, n);
     let x_shown = if n == 2 {
         x_text
     } else {
-        attlab_web::panels::cycle_vector(&[x[0], x[1], filter.cycle().unwrap().x_after[2]], 3)
+        attlab_web::panels::cycle_vector(lang, &[x[0], x[1], filter.cycle().unwrap().x_after[2]], 3)
     };
     assert!(
         h.query_by_label(&x_shown).is_some(),

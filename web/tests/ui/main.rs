@@ -16,6 +16,7 @@ mod accuracy;
 mod axes;
 mod body3d;
 mod clock;
+mod decimals;
 mod fill;
 mod keyboard;
 mod legend;

@@ -113,7 +113,7 @@ pub(super) fn diagrams(p: &ParamValues) -> Vec<Diagram> {
     }
     vec![Diagram {
         title: "Eigenvalues of the linearised update",
-        detail: format!("Δt = {dt} s, ε = {eps}"),
+        detail: vec![("Δt", dt, "s"), ("ε", eps, "")],
         unit_circle: true,
         points,
     }]

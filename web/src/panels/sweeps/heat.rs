@@ -1,7 +1,7 @@
 //! A grid sweep's first objective as a heat map over log10 of both parameters, with the
 //! lab's lines over it and the optimum ringed (paper 4's Q landscape).
 
-use super::super::{arg, tr, tr_with};
+use super::super::{arg, num_arg, tr, tr_with};
 use super::Words;
 use crate::state::AppState;
 use attlab::analysis::sweep::Sweep;
@@ -59,10 +59,10 @@ pub(super) fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             "sweep-heat-colour",
             &[
                 ("name", arg(&name)),
-                ("lo", arg(fmt_sig(lo))),
-                ("hi", arg(fmt_sig(hi))),
+                ("lo", num_arg(app, fmt_sig(lo))),
+                ("hi", num_arg(app, fmt_sig(hi))),
                 ("at", arg(w.at(spec, b))),
-                ("best", arg(fmt_sig(b.objectives[0]))),
+                ("best", num_arg(app, fmt_sig(b.objectives[0]))),
             ],
         ),
         None => tr_with(app, "sweep-heat-filling", &[("name", arg(&name))]),
@@ -76,7 +76,7 @@ pub(super) fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let lines = scoring
         .overlay
         .map_or_else(Vec::new, |f| f(app.sim().params()));
-    Plot::new(("sweep_heat", i))
+    crate::render::ticks::in_language(Plot::new(("sweep_heat", i)), app.view().lang())
         .height(260.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))

@@ -6,7 +6,7 @@
 mod heat;
 mod words;
 
-use super::{arg, lab_word, tr, tr_with};
+use super::{arg, lab_word, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::analysis::sweep::{Sweep, SweepPoint};
 use attlab::i18n;
@@ -174,13 +174,13 @@ fn rms_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             let args = [
                 ("series", arg(w.series(s, k))),
                 ("param", arg(w.param(spec.key))),
-                ("value", arg(value)),
-                ("rms", arg(format!("{rms:.4}"))),
+                ("value", num_arg(app, value)),
+                ("rms", num_arg(app, format!("{rms:.4}"))),
             ];
             ui.label(tr_with(app, "sweep-best", &args));
         }
     }
-    Plot::new(("sweep", i))
+    crate::render::ticks::in_language(Plot::new(("sweep", i)), app.view().lang())
         .height(170.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))
@@ -202,7 +202,7 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
     let w = Words::of(app, s, i);
-    Plot::new(("sweep_objectives", i))
+    crate::render::ticks::in_language(Plot::new(("sweep_objectives", i)), app.view().lang())
         .height(190.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))
@@ -217,10 +217,13 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
                 if let Some(best) = s.argmin(k).filter(|p| p.value > 0.0) {
                     let xy = [best.value.log10(), best.objectives[k]];
                     plot.points(
-                        Points::new(format!("argmin {name}"), vec![xy])
-                            .radius(7.0)
-                            .filled(false)
-                            .color(color),
+                        Points::new(
+                            tr_with(app, "sweep-argmin-marker", &[("name", arg(&name))]),
+                            vec![xy],
+                        )
+                        .radius(7.0)
+                        .filled(false)
+                        .color(color),
                     );
                 }
             }
@@ -244,9 +247,10 @@ fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             ui.label(RichText::new(tr_with(app, "sweep-argmin", &args)).strong());
         }
     }
+    let lang = app.view().lang();
     let cell = |x: f64| {
         if x.is_finite() {
-            fmt_sig(x)
+            i18n::number(lang, &fmt_sig(x))
         } else {
             "—".into()
         }
@@ -266,7 +270,7 @@ fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
                     }
                     ui.end_row();
                     for p in &s.points {
-                        ui.label(RichText::new(fmt_sig(p.value)).small().monospace());
+                        ui.label(RichText::new(cell(p.value)).small().monospace());
                         for (v, r) in p.scores.iter().zip(&p.score_range) {
                             let text = if p.runs > 1 && r[0].is_finite() {
                                 format!("{} [{}–{}]", cell(*v), cell(r[0]), cell(r[1]))

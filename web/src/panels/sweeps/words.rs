@@ -83,9 +83,16 @@ impl Words<'_> {
 
     /// "parameter = value" (and the grid's) of a point.
     pub(super) fn at(&self, spec: &SweepSpec, p: &SweepPoint) -> String {
-        let one = format!("{} = {}", self.param(spec.key), fmt_sig(p.value));
+        let lang = self.app.view().lang();
+        let sig = |x: f64| i18n::number(lang, &fmt_sig(x));
+        let one = format!("{} = {}", self.param(spec.key), sig(p.value));
         match (spec.grid, p.grid_value) {
-            (Some(g), Some(v)) => format!("{one}, {} = {}", self.param(g.key), fmt_sig(v)),
+            (Some(g), Some(v)) => format!(
+                "{one}{}{} = {}",
+                i18n::list_separator(lang),
+                self.param(g.key),
+                sig(v)
+            ),
             _ => one,
         }
     }

@@ -1,0 +1,81 @@
+//! Numbers as the reader's language writes them: Russian separates the decimals with a comma
+//! ("0,05 °/s", as the papers and the Russian catalogue's own prose do), English with a point.
+//! Every number the page formats goes through [`number`]; every number a reader types is read
+//! by [`parse_number`], which takes either separator.
+//!
+//! Only numbers are rewritten, never prose: the Russian catalogue's section and figure
+//! references ("§3.3") keep their point, as Russian print does.
+
+use super::Lang;
+
+/// `text`, a number as Rust formats it ("-0.050", "1.5e-3", "  12.30"), with the decimal
+/// separator of `lang`.
+///
+/// ```
+/// # use attlab::i18n::{Lang, number};
+/// assert_eq!(number(Lang::Ru, "-0.050"), "-0,050");
+/// assert_eq!(number(Lang::Ru, "1.5e-3"), "1,5e-3");
+/// assert_eq!(number(Lang::En, "-0.050"), "-0.050");
+/// ```
+pub fn number(lang: Lang, text: &str) -> String {
+    match lang {
+        Lang::En => text.to_string(),
+        Lang::Ru => text.replace('.', ","),
+    }
+}
+
+/// What separates numbers in a list: a comma, or where the comma is the decimal separator
+/// (Russian), a semicolon ("0,5; 1,5").
+pub fn list_separator(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => ", ",
+        Lang::Ru => "; ",
+    }
+}
+
+/// `value` with `decimals` decimals, in `lang` (`format!("{value:.decimals$}")`).
+///
+/// ```
+/// # use attlab::i18n::{Lang, fixed};
+/// assert_eq!(fixed(Lang::Ru, 0.25, 2), "0,25");
+/// assert_eq!(fixed(Lang::En, 0.25, 1), "0.2");
+/// ```
+pub fn fixed(lang: Lang, value: f64, decimals: usize) -> String {
+    number(lang, &format!("{value:.decimals$}"))
+}
+
+/// A number the reader typed: a decimal point or comma, spaces anywhere (thousands), and the
+/// typographic minus (U+2212) as a hyphen. `None` when it is not a number.
+///
+/// ```
+/// # use attlab::i18n::parse_number;
+/// assert_eq!(parse_number("0,05"), Some(0.05));
+/// assert_eq!(parse_number(" −1 200.5 "), Some(-1200.5));
+/// assert_eq!(parse_number("1,5e-3"), Some(1.5e-3));
+/// assert_eq!(parse_number("1,2,3"), None);
+/// assert_eq!(parse_number("abc"), None);
+/// ```
+pub fn parse_number(text: &str) -> Option<f64> {
+    let plain: String = text
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .map(|c| match c {
+            '−' => '-',
+            ',' => '.',
+            c => c,
+        })
+        .collect();
+    plain.parse().ok()
+}
+
+/// Fluent's own formatting of a number argument, with the Russian decimal comma: the
+/// formatter of the Russian bundle (an argument passed as a number still picks its plural).
+pub(super) fn russian_fluent_number<M>(
+    value: &fluent_bundle::FluentValue<'_>,
+    _: &M,
+) -> Option<String> {
+    match value {
+        fluent_bundle::FluentValue::Number(n) => Some(number(Lang::Ru, &n.as_string())),
+        _ => None,
+    }
+}
