@@ -44,7 +44,10 @@ mod wasm {
     const TRACE_STEPS: usize = 5_800;
 
     /// A lab's estimators as built with seed 1, and the measurements of its first
-    /// [`TRACE_STEPS`] steps (truth and sensors only, as `attlab bench` times them).
+    /// [`TRACE_STEPS`] steps (truth and sensors only, as `attlab bench` times them: where a
+    /// lab's truth is steered by an estimate, paper 4's controller, the trace is of the
+    /// motion without that feedback, so its filters see another motion than the page's; they
+    /// do the same arithmetic on it).
     fn estimators_and_trace(
         lab: &'static dyn attlab::model::Lab,
         params: &ParamValues,
@@ -84,6 +87,7 @@ mod wasm {
                     }
                     for e in &mut estimators {
                         e.step(&trace[next], dt_s);
+                        std::hint::black_box(e.status());
                     }
                     next += 1;
                 })

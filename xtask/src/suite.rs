@@ -232,8 +232,8 @@ fn run_steps(suite: &mut Suite) -> Result<()> {
     let native_clippy = "clippy --workspace --all-targets -- -D warnings";
     suite.check("clippy (native)", cargo(native_clippy))?;
     // Every target that builds for wasm32: the libraries, binaries and tests, and the one
-    // wasm bench (`cargo xtask bench` runs it; nothing else compiles it). The other
-    // criterion benches and the examples are native-only.
+    // wasm bench (`cargo xtask bench` runs it; natively its code is compiled out, so nothing
+    // else checks it). The other criterion benches and the examples are native-only.
     let wasm_clippy = format!(
         "clippy --target {} -p attlab -p attlab-web -p attlab-tests --lib --bins --tests \
          --bench wasm_kinematics -- -D warnings",

@@ -1,7 +1,7 @@
 //! Numbers as the reader's language writes them: Russian separates the decimals with a comma
 //! ("0,05 °/s", as the papers and the Russian catalogue's own prose do), English with a point.
 //! Every number the page formats goes through [`number`]; every number a reader types is read
-//! by [`parse_number`], which takes either separator.
+//! by [`parse_number`], which in Russian takes either separator.
 //!
 //! Only numbers are rewritten, never prose: the Russian catalogue's section and figure
 //! references ("§3.3") keep their point, as Russian print does.
@@ -44,25 +44,30 @@ pub fn fixed(lang: Lang, value: f64, decimals: usize) -> String {
     number(lang, &format!("{value:.decimals$}"))
 }
 
-/// A number the reader typed: a decimal point or comma, spaces anywhere (thousands), and the
-/// typographic minus (U+2212) as a hyphen. `None` when it is not a number.
+/// A number the reader typed in `lang`: spaces anywhere (thousands) and the typographic
+/// minus (U+2212) as a hyphen, as egui reads a number; in Russian the decimal separator may
+/// be a comma or a point. An English "1,000" is not a number (egui's own reading refuses it
+/// too, so the value stays). `None` when it is not a number.
 ///
 /// ```
-/// # use attlab::i18n::parse_number;
-/// assert_eq!(parse_number("0,05"), Some(0.05));
-/// assert_eq!(parse_number(" −1 200.5 "), Some(-1200.5));
-/// assert_eq!(parse_number("1,5e-3"), Some(1.5e-3));
-/// assert_eq!(parse_number("1,2,3"), None);
-/// assert_eq!(parse_number("abc"), None);
+/// # use attlab::i18n::{Lang, parse_number};
+/// assert_eq!(parse_number(Lang::Ru, "0,05"), Some(0.05));
+/// assert_eq!(parse_number(Lang::Ru, "0.05"), Some(0.05));
+/// assert_eq!(parse_number(Lang::Ru, " −1 200,5 "), Some(-1200.5));
+/// assert_eq!(parse_number(Lang::Ru, "1,5e-3"), Some(1.5e-3));
+/// assert_eq!(parse_number(Lang::Ru, "1,2,3"), None);
+/// assert_eq!(parse_number(Lang::En, "1,000"), None);
+/// assert_eq!(parse_number(Lang::En, "−2.5"), Some(-2.5));
+/// assert_eq!(parse_number(Lang::En, "abc"), None);
 /// ```
-pub fn parse_number(text: &str) -> Option<f64> {
+pub fn parse_number(lang: Lang, text: &str) -> Option<f64> {
     let plain: String = text
         .chars()
         .filter(|c| !c.is_whitespace())
-        .map(|c| match c {
-            '−' => '-',
-            ',' => '.',
-            c => c,
+        .map(|c| match (c, lang) {
+            ('−', _) => '-',
+            (',', Lang::Ru) => '.',
+            (c, _) => c,
         })
         .collect();
     plain.parse().ok()

@@ -470,7 +470,8 @@ fn explanation(ui: &mut Ui, app: &AppState) {
 }
 
 /// `slider` writing its value as the reader's language does ("0,050" in Russian), with the
-/// decimals egui would choose, and reading a typed value with a point or a comma.
+/// decimals egui would choose, and reading a typed value as egui does, in Russian with a
+/// point or a comma.
 fn in_language(slider: egui::Slider<'_>, lang: Lang) -> egui::Slider<'_> {
     slider
         .custom_formatter(move |v, decimals| {
@@ -479,5 +480,5 @@ fn in_language(slider: egui::Slider<'_>, lang: Lang) -> egui::Slider<'_> {
                 &egui::emath::format_with_decimals_in_range(v, decimals),
             )
         })
-        .custom_parser(i18n::parse_number)
+        .custom_parser(move |text| i18n::parse_number(lang, text))
 }

@@ -2,7 +2,7 @@
 //! see), and the way on (back, next, end). It sits at the top of the controls, so the sliders
 //! the step points at are just below it; "Start the lesson" opens it.
 
-use super::{arg, lab_word, tr, tr_with};
+use super::{arg, lab_word, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, LessonCommand, ShareCommand, ViewCommand};
 use attlab::i18n::lesson_id;
 use attlab::model::{Lesson, Question};
@@ -100,7 +100,8 @@ fn question(
         ui.label(RichText::new(shows).strong());
         ui.label(word(app, Some(n), "why", q.why));
     } else if let Some(t) = app.run().pause_at_s {
-        ui.label(RichText::new(tr_with(app, "lesson-running", &[("t", arg(t))])).weak());
+        let running = tr_with(app, "lesson-running", &[("t", num_arg(app, t))]);
+        ui.label(RichText::new(running).weak());
     }
 }
 

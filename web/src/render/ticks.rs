@@ -85,30 +85,13 @@ pub fn tick_label(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f
     }
 }
 
-/// `plot` writing its numbers as the reader's language does ("0,5" in Russian): its tick
-/// labels ([`tick_label`]) and the coordinates it shows on hover.
+/// `plot` writing its tick labels ([`tick_label`]) as the reader's language does ("0,5" in
+/// Russian). (egui_plot shows no coordinates under the pointer unless given a label
+/// formatter; the page gives none, so that is all it writes.)
 pub fn in_language(plot: egui_plot::Plot<'_>, lang: attlab::i18n::Lang) -> egui_plot::Plot<'_> {
     use attlab::i18n::number;
     plot.x_axis_formatter(move |m, r| number(lang, &tick_label(m, r)))
         .y_axis_formatter(move |m, r| number(lang, &tick_label(m, r)))
-        .label_formatter(move |pos| Some(hover_label(lang, pos)))
-}
-
-/// What a plot shows under the pointer: the nearest point's series and its coordinates, or
-/// the pointer's (egui_plot's own text, with three decimals in the reader's language).
-fn hover_label(lang: attlab::i18n::Lang, pos: &egui_plot::HoverPosition<'_>) -> String {
-    use attlab::i18n::fixed;
-    let xy = |p: &egui_plot::PlotPoint| {
-        format!("x = {}\ny = {}", fixed(lang, p.x, 3), fixed(lang, p.y, 3))
-    };
-    match pos {
-        egui_plot::HoverPosition::NearDataPoint {
-            plot_name,
-            position,
-            ..
-        } => format!("{plot_name}\n{}", xy(position)),
-        egui_plot::HoverPosition::Elsewhere { position } => xy(position),
-    }
 }
 
 /// The least of 1, 2, 5 × 10ⁿ at least `raw`.

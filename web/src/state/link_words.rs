@@ -70,12 +70,14 @@ pub fn param_problem(lang: Lang, lab: &dyn Lab, specs: &[ParamSpec], e: &ParamEr
     let (id, given) = match e {
         // A choice is said by its options, whatever number was asked for.
         ParamError::OutOfRange { value, .. } | ParamError::NotInteger { value, .. } if choice => {
-            ("param-no-option", value.to_string())
+            ("param-no-option", i18n::number(lang, &value.to_string()))
         }
         ParamError::NotANumber { text, .. } => ("param-not-a-number", text.clone()),
         ParamError::NoSuchOption { text, .. } => ("param-no-option", text.clone()),
         ParamError::OutOfRange { value, .. } => ("param-out-of-range", shown(lang, spec, *value)),
-        ParamError::NotInteger { value, .. } => ("param-not-whole", value.to_string()),
+        ParamError::NotInteger { value, .. } => {
+            ("param-not-whole", i18n::number(lang, &value.to_string()))
+        }
         _ => ("param-not-finite", String::new()),
     };
     let args = [
@@ -98,8 +100,8 @@ fn range(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
             .join(", "),
         _ => format!(
             "{} … {} {}",
-            spec.min,
-            spec.max,
+            i18n::number(lang, &spec.min.to_string()),
+            i18n::number(lang, &spec.max.to_string()),
             i18n::unit(lang, spec.unit)
         )
         .trim_end()
@@ -114,6 +116,7 @@ fn label(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
 
 /// A value as the slider shows it, with its unit in `lang`.
 fn shown(lang: Lang, spec: &ParamSpec, v: f64) -> String {
+    let v = i18n::number(lang, &v.to_string());
     format!("{v} {}", i18n::unit(lang, spec.unit))
         .trim_end()
         .to_string()

@@ -286,7 +286,6 @@ mod tests {
         }
     }
 
-    /// The numbers in `s`, sorted (a language may give them in another order).
     /// `ru` says the numbers `en` says, each with the Russian decimal comma.
     fn same_numbers(en: &str, ru: &str) {
         let digit = |k: Option<char>| k.is_some_and(|k| k.is_ascii_digit());
@@ -309,6 +308,7 @@ mod tests {
         }
     }
 
+    /// The numbers in `s`, sorted (a language may give them in another order).
     fn numbers(s: &str) -> Vec<String> {
         let mut out: Vec<String> = s
             .split(|c: char| !c.is_ascii_alphanumeric() && c != '.' && c != '+' && c != '-')

@@ -7,16 +7,6 @@ use attlab::sim::default_tab;
 use attlab::state::{ALL_CONTROLS, UrlState};
 use attlab_web::state::{AppState, Command, LessonCommand, ShareCommand, ViewCommand, qr};
 
-/// A harness around `state`, paused.
-fn harness_for(state: AppState) -> Harness<'static, AttLabApp> {
-    let mut app = AttLabApp::headless(state);
-    app.apply(RunCommand::SetPlaying(false).into());
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .with_context_setup(attlab_web::render::fonts::install)
-        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
-}
-
 /// What the state must show at step `n` of `lab`'s lesson.
 fn assert_step(state: &AppState, lab: &'static dyn Lab, n: usize, step: &LessonStep) {
     let at = format!("{} step {n}", lab.id());

@@ -42,6 +42,21 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 
+/// A harness around `state`, paused.
+fn harness_for(state: attlab_web::state::AppState) -> Harness<'static, AttLabApp> {
+    let mut app = AttLabApp::headless(state);
+    app.apply(RunCommand::SetPlaying(false).into());
+    Harness::builder()
+        .with_size(egui::vec2(1400.0, 900.0))
+        .with_context_setup(attlab_web::render::fonts::install)
+        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
+}
+
+/// The page a link opens (`fragment` as after `#`), paused.
+fn harness_from_link(fragment: &str) -> Harness<'static, AttLabApp> {
+    harness_for(attlab_web::state::AppState::from_fragment(fragment))
+}
+
 /// Lab `lab_id`'s page with the collapsed section `heading` opened and `button` in it
 /// pressed (both found by their accessible names).
 fn press_in_section(lab_id: &str, heading: &str, button: &str) -> Harness<'static, AttLabApp> {

@@ -1,17 +1,8 @@
 //! A value the page refuses is said in the reader's language by the control's label: a
 //! slider's value out of its range, a log's unit choice that is none of its options.
 
+use super::harness_from_link as page;
 use super::*;
-use attlab_web::state::AppState;
-
-fn page(fragment: &str) -> Harness<'static, AttLabApp> {
-    let mut app = AttLabApp::headless(AppState::from_fragment(fragment));
-    app.apply(RunCommand::SetPlaying(false).into());
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .with_context_setup(attlab_web::render::fonts::install)
-        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
-}
 
 /// The last message's words after `command`, and whether it is an error.
 fn said_after(h: &mut Harness<'_, AttLabApp>, command: attlab_web::state::Command) -> String {
