@@ -342,6 +342,21 @@ link-out-of-range = Link item { $item }: “{ $label }” goes from { $range } �
 link-not-whole = Link item { $item }: “{ $label }” takes a whole number — kept at { $kept }.
 link-no-option = Link item { $item }: “{ $label }” is one of: { $range } — kept at { $kept }.
 link-malformed = Link item { $item }: not of the form name=value — ignored.
+link-fault-no-such-lab = no such lab (labs: { $ids })
+link-fault-no-such-lesson = no such lesson (lessons: { $ids })
+link-fault-step-without-lesson = step needs a lesson (lesson=<lab>)
+link-fault-no-such-step = step must be a whole number 1–{ $steps }
+link-fault-not-key-value = expected key=value
+link-fault-seed = seed must be a whole number ≥ 0
+link-fault-speed = speed must be between { $lo } and { $hi }
+link-fault-presenter = presenter must be 1 or 0
+link-fault-theme = theme must be light or dark
+link-fault-lang = lang must be en or ru
+link-fault-answers-without-lesson = answers need a lesson (lesson=<lab>)
+link-fault-no-lesson = this lab has no lesson
+link-fault-not-an-answer = `{ $part }` is not a step number and an answer letter (like 2b)
+link-fault-no-such-answer = step { $step } has no answer { $letter }
+link-fault-not-a-parameter = `{ $key }` is not a parameter of { $lab } (or `all`)
 
 ## A value a slider or a log's unit choice refused (the run goes on unchanged)
 param-out-of-range = “{ $label }” goes from { $range }; { $given } is outside it — unchanged.

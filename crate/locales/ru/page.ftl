@@ -353,6 +353,21 @@ link-out-of-range = Элемент ссылки { $item }: «{ $label }» — о
 link-not-whole = Элемент ссылки { $item }: «{ $label }» принимает целое число — оставлено { $kept }.
 link-no-option = Элемент ссылки { $item }: «{ $label }» — одно из: { $range } — оставлено { $kept }.
 link-malformed = Элемент ссылки { $item }: не в виде имя=значение — пропущен.
+link-fault-no-such-lab = такой работы нет (есть: { $ids })
+link-fault-no-such-lesson = такого урока нет (есть: { $ids })
+link-fault-step-without-lesson = шаг задаётся только вместе с уроком (lesson=<работа>)
+link-fault-no-such-step = шаг — целое число от 1 до { $steps }
+link-fault-not-key-value = нужно имя=значение
+link-fault-seed = зерно — целое число ≥ 0
+link-fault-speed = скорость — от { $lo } до { $hi }
+link-fault-presenter = presenter — 1 или 0
+link-fault-theme = theme — light или dark
+link-fault-lang = lang — en или ru
+link-fault-answers-without-lesson = ответы задаются только вместе с уроком (lesson=<работа>)
+link-fault-no-lesson = у этой работы нет урока
+link-fault-not-an-answer = «{ $part }» — не номер шага с буквой ответа (вроде 2b)
+link-fault-no-such-answer = у шага { $step } нет ответа { $letter }
+link-fault-not-a-parameter = «{ $key }» — не параметр работы { $lab } (и не `all`)
 
 ## Значение, которое ползунок или выбор единиц записи не принял (прогон идёт без изменений)
 param-out-of-range = «{ $label }»: допустимо { $range }, { $given } вне этих пределов; значение не изменено.

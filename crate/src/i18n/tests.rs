@@ -52,6 +52,10 @@ fn every_series_groups_tab_title_and_axis_noun_are_in_the_catalogue() {
 
 /// The arguments the catalogue's messages take as text, each given "x" by the format test.
 const TEXT_ARGUMENTS: &[&str] = &[
+    "steps",
+    "part",
+    "letter",
+    "key",
     "help",
     "what",
     "percent",

@@ -2,7 +2,7 @@
 //! which are given relative to the step), `answers=2b.5a`, and the controls a teacher hides
 //! or locks (`hide=`, `lock=`).
 
-use super::{ALL_CONTROLS, LessonLink, UrlState, UrlStateError};
+use super::{ALL_CONTROLS, LessonLink, LinkFault, UrlState, UrlStateError};
 use crate::labs;
 use crate::model::Lab;
 
@@ -25,12 +25,7 @@ pub(super) fn parse<'a>(
 ) -> (&'static dyn Lab, Option<LessonLink>) {
     let mut lesson = None;
     let mut step: Option<(usize, &str, &str)> = None;
-    let err = |position: usize, text: &str, reason: String| UrlStateError {
-        position,
-        text: text.to_string(),
-        reason,
-        param: None,
-    };
+    let err = UrlStateError::of;
     for (pos, key, value, item) in items {
         match key {
             "lesson" => match labs::find(value).filter(|l| l.lesson().is_some()) {
@@ -41,11 +36,7 @@ pub(super) fn parse<'a>(
                         answers: Vec::new(),
                     });
                 }
-                None => errors.push(err(
-                    pos,
-                    item,
-                    format!("no such lesson (lessons: {})", lesson_ids()),
-                )),
+                None => errors.push(err(pos, item, LinkFault::NoSuchLesson(lesson_ids()))),
             },
             _ => step = Some((pos, value, item)),
         }
@@ -54,17 +45,13 @@ pub(super) fn parse<'a>(
         return (lab, lesson);
     };
     let Some(link) = lesson.as_mut() else {
-        errors.push(err(pos, item, "step needs a lesson (lesson=<lab>)".into()));
+        errors.push(err(pos, item, LinkFault::StepWithoutLesson));
         return (lab, lesson);
     };
     let steps = lab.lesson().map_or(0, |l| l.steps.len());
     match value.parse::<usize>() {
         Ok(n) if (1..=steps).contains(&n) => link.step = n,
-        _ => errors.push(err(
-            pos,
-            item,
-            format!("step must be a whole number 1–{steps}"),
-        )),
+        _ => errors.push(err(pos, item, LinkFault::NoSuchStep(steps))),
     }
     (lab, lesson)
 }
@@ -75,7 +62,7 @@ pub(super) fn apply_list(
     lab: &'static dyn Lab,
     key: &str,
     value: &str,
-) -> Result<(), String> {
+) -> Result<(), LinkFault> {
     if key == "answers" {
         let answers = parse_answers(lab, value)?;
         return match state.lesson.as_mut() {
@@ -83,7 +70,7 @@ pub(super) fn apply_list(
                 link.answers = answers;
                 Ok(())
             }
-            None => Err("answers need a lesson (lesson=<lab>)".into()),
+            None => Err(LinkFault::AnswersWithoutLesson),
         };
     }
     let keys = parse_controls(lab, value)?;
@@ -96,13 +83,13 @@ pub(super) fn apply_list(
 }
 
 /// `2b.5a`: each a step with a question and an answer letter it offers.
-fn parse_answers(lab: &dyn Lab, value: &str) -> Result<Vec<(usize, usize)>, String> {
-    let lesson = lab.lesson().ok_or("this lab has no lesson")?;
+fn parse_answers(lab: &dyn Lab, value: &str) -> Result<Vec<(usize, usize)>, LinkFault> {
+    let lesson = lab.lesson().ok_or(LinkFault::NoLesson)?;
     value
         .split('.')
         .filter(|s| !s.is_empty())
         .map(|part| {
-            let bad = || format!("`{part}` is not a step number and an answer letter (like 2b)");
+            let bad = || LinkFault::NotAnAnswer(part.to_string());
             let letter = part
                 .chars()
                 .last()
@@ -115,7 +102,7 @@ fn parse_answers(lab: &dyn Lab, value: &str) -> Result<Vec<(usize, usize)>, Stri
                 .and_then(|s| s.question)
                 .map_or(0, |q| q.answers.len());
             if answer > offered {
-                return Err(format!("step {step} has no answer {letter}"));
+                return Err(LinkFault::NoSuchAnswer { step, letter });
             }
             Ok((step, answer))
         })
@@ -123,7 +110,7 @@ fn parse_answers(lab: &dyn Lab, value: &str) -> Result<Vec<(usize, usize)>, Stri
 }
 
 /// `key.key` or `all`: parameters of the lab.
-fn parse_controls(lab: &dyn Lab, value: &str) -> Result<Vec<String>, String> {
+fn parse_controls(lab: &dyn Lab, value: &str) -> Result<Vec<String>, LinkFault> {
     value
         .split('.')
         .filter(|s| !s.is_empty())
@@ -131,10 +118,10 @@ fn parse_controls(lab: &dyn Lab, value: &str) -> Result<Vec<String>, String> {
             if key == ALL_CONTROLS || lab.params().iter().any(|p| p.key == key) {
                 Ok(key.to_string())
             } else {
-                Err(format!(
-                    "`{key}` is not a parameter of {} (or `all`)",
-                    lab.id()
-                ))
+                Err(LinkFault::NotAParameter {
+                    key: key.to_string(),
+                    lab: lab.id(),
+                })
             }
         })
         .collect()

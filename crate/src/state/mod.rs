@@ -10,7 +10,10 @@ use crate::labs;
 use crate::model::{Lab, ParamError, ParamValues};
 use thiserror::Error;
 
+mod fault;
 mod lesson;
+
+pub use fault::LinkFault;
 
 /// What a URL fragment asks for.
 #[derive(Clone, Debug, PartialEq)]
@@ -109,6 +112,28 @@ pub struct UrlStateError {
     /// The parameter's own error, when the item set a lab parameter (the page words it with
     /// the slider's label).
     pub param: Option<ParamError>,
+    /// What was wrong, typed, when the item was not a lab parameter (the page says it in
+    /// the reader's language; `reason` is its English).
+    pub fault: Option<LinkFault>,
+}
+
+impl UrlStateError {
+    /// The error of item `position` (`text` as written) refused for `fault`.
+    fn of(position: usize, text: &str, fault: LinkFault) -> Self {
+        Self {
+            position,
+            text: text.to_string(),
+            reason: fault.to_string(),
+            param: None,
+            fault: Some(fault),
+        }
+    }
+}
+
+/// Why [`UrlState::apply_item`] refused an item: a lab parameter's error or a link fault.
+enum Refused {
+    Param(ParamError),
+    Fault(LinkFault),
 }
 
 impl UrlState {
@@ -188,22 +213,15 @@ impl UrlState {
             })
             .collect();
         let mut errors = Vec::new();
-        let err = |position: usize, text: &str, reason: String| UrlStateError {
-            position,
-            text: text.to_string(),
-            reason,
-            param: None,
+        let err = |position: usize, text: &str, fault: LinkFault| {
+            UrlStateError::of(position, text, fault)
         };
         let mut lab = labs::all()[0];
         for (pos, key, value, item) in &items {
             if let ("lab", Some(id)) = (key.as_str(), value) {
                 match labs::find(id) {
                     Some(l) => lab = l,
-                    None => errors.push(err(
-                        *pos,
-                        item,
-                        format!("no such lab (labs: {})", labs::ids()),
-                    )),
+                    None => errors.push(err(*pos, item, LinkFault::NoSuchLab(labs::ids()))),
                 }
             }
         }
@@ -217,17 +235,22 @@ impl UrlState {
         state.lesson = lesson;
         for (pos, key, value, item) in &items {
             let Some(value) = value else {
-                errors.push(err(*pos, item, "expected key=value".into()));
+                errors.push(err(*pos, item, LinkFault::NotKeyValue));
                 continue;
             };
             if matches!(key.as_str(), "lesson" | "step") {
                 continue;
             }
-            if let Err((reason, param)) = state.apply_item(lab, key, value) {
-                errors.push(UrlStateError {
-                    param,
-                    ..err(*pos, item, reason)
-                });
+            match state.apply_item(lab, key, value) {
+                Ok(()) => {}
+                Err(Refused::Param(e)) => errors.push(UrlStateError {
+                    position: *pos,
+                    text: item.to_string(),
+                    reason: e.to_string(),
+                    param: Some(e),
+                    fault: None,
+                }),
+                Err(Refused::Fault(f)) => errors.push(err(*pos, item, f)),
             }
         }
         (state, errors)
@@ -235,14 +258,9 @@ impl UrlState {
 
     /// Applies one `key=value` item of a link to the state, or says what is wrong with it
     /// (and, for a lab parameter, its error).
-    fn apply_item(
-        &mut self,
-        lab: &'static dyn Lab,
-        key: &str,
-        value: &str,
-    ) -> Result<(), (String, Option<ParamError>)> {
+    fn apply_item(&mut self, lab: &'static dyn Lab, key: &str, value: &str) -> Result<(), Refused> {
         if matches!(key, "answers" | "hide" | "lock") {
-            return lesson::apply_list(self, lab, key, value).map_err(|reason| (reason, None));
+            return lesson::apply_list(self, lab, key, value).map_err(Refused::Fault);
         }
         if !matches!(
             key,
@@ -251,40 +269,37 @@ impl UrlState {
             return self
                 .params
                 .set_text(lab.params(), key, value)
-                .map_err(|e| (e.to_string(), Some(e)));
+                .map_err(Refused::Param);
         }
-        self.apply_setting(key, value)
-            .map_err(|reason| (reason, None))
+        self.apply_setting(key, value).map_err(Refused::Fault)
     }
 
     /// Applies one of the page's own settings (not a lab parameter).
-    fn apply_setting(&mut self, key: &str, value: &str) -> Result<(), String> {
+    fn apply_setting(&mut self, key: &str, value: &str) -> Result<(), LinkFault> {
         match key {
             "lab" => {}
             "seed" => {
-                self.seed = value
-                    .parse::<u64>()
-                    .map_err(|_| "seed must be a whole number ≥ 0".to_string())?;
+                self.seed = value.parse::<u64>().map_err(|_| LinkFault::Seed)?;
             }
             "speed" => match value.parse::<f64>() {
                 Ok(s) if (SPEED_RANGE.0..=SPEED_RANGE.1).contains(&s) => self.speed = s,
                 _ => {
                     let (lo, hi) = SPEED_RANGE;
-                    return Err(format!("speed must be between {lo} and {hi}"));
+                    return Err(LinkFault::Speed { lo, hi });
                 }
             },
             "presenter" => match value {
                 "1" | "true" | "on" => self.presenter = true,
                 "0" | "false" | "off" => self.presenter = false,
-                _ => return Err("presenter must be 1 or 0".into()),
+                _ => return Err(LinkFault::Presenter),
             },
             "theme" => match value {
                 "light" => self.theme = Some(Theme::Light),
                 "dark" => self.theme = Some(Theme::Dark),
-                _ => return Err("theme must be light or dark".into()),
+                _ => return Err(LinkFault::Theme),
             },
             "lang" => {
-                let lang = Lang::from_tag(value).ok_or("lang must be en or ru")?;
+                let lang = Lang::from_tag(value).ok_or(LinkFault::Lang)?;
                 self.lang = Some(lang);
             }
             _ => {}

@@ -13,7 +13,12 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
         FluentValue::from(format!("{} “{}”", e.position, e.text)),
     );
     let Some(param) = &e.param else {
-        return i18n::t_with(lang, "link-bad", &[item, ("why", e.reason.clone().into())]);
+        // A page setting's, a lesson's or a list's fault in the reader's words.
+        let why = e
+            .fault
+            .as_ref()
+            .map_or_else(|| e.reason.clone(), |f| f.words(lang));
+        return i18n::t_with(lang, "link-bad", &[item, ("why", why.into())]);
     };
     let spec_of = |key: &str| lab.params().iter().find(|s| s.key == key);
     let (id, key) = match param {

@@ -57,3 +57,18 @@ fn a_logs_refused_unit_choice_is_said_by_its_label_in_either_language() {
         );
     }
 }
+
+/// A link's bad page settings and lesson items are said in Russian too, a number with its
+/// comma: no English reason ("must be") on a Russian page.
+#[test]
+fn a_links_bad_settings_are_said_in_the_readers_language() {
+    let h =
+        page("lab=free-rotation&lang=ru&speed=abc&theme=blue&presenter=2&seed=x&step=3&hide=zz");
+    let problems = h.state().state.link_problems();
+    assert_eq!(problems.len(), 6, "{problems:#?}");
+    for p in problems {
+        assert!(!p.contains("must be") && !p.contains("needs a"), "{p}");
+    }
+    let speed = problems.iter().find(|p| p.contains("speed=abc"));
+    assert!(speed.is_some_and(|p| p.contains("0,1")), "{problems:#?}");
+}
