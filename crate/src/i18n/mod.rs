@@ -15,7 +15,7 @@ mod units;
 pub use fluent_bundle::FluentValue;
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
-pub use numbers::{fixed, list_separator, number, parse_number};
+pub use numbers::{diagram_detail, fixed, list_separator, number, parse_number};
 pub use series::{
     LegendParts, compose, estimator_id, estimator_name, lab_series_words, quantity_id,
     series_label, series_legend, series_legend_parts, series_legend_without_unit,

@@ -33,6 +33,27 @@ pub fn list_separator(lang: Lang) -> &'static str {
     }
 }
 
+/// A diagram's detail in the paper's notation, its numbers and units in `lang`: "Δt = 1 s,
+/// ε = 0.1", "Δt = 1 с; ε = 0,1".
+///
+/// ```
+/// # use attlab::i18n::{Lang, diagram_detail};
+/// let detail = [("Δt", 1.0, "s"), ("ε", 0.1, "")];
+/// assert_eq!(diagram_detail(Lang::En, &detail), "Δt = 1 s, ε = 0.1");
+/// assert_eq!(diagram_detail(Lang::Ru, &detail), "Δt = 1 с; ε = 0,1");
+/// ```
+pub fn diagram_detail(lang: Lang, detail: &[crate::model::DiagramSetting]) -> String {
+    let parts: Vec<String> = (detail.iter())
+        .map(|(symbol, value, unit)| {
+            let value = number(lang, &value.to_string());
+            format!("{symbol} = {value} {}", super::unit(lang, unit))
+                .trim_end()
+                .to_string()
+        })
+        .collect();
+    parts.join(list_separator(lang))
+}
+
 /// `value` with `decimals` decimals, in `lang` (`format!("{value:.decimals$}")`).
 ///
 /// ```

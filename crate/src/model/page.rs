@@ -147,7 +147,7 @@ pub struct Diagram {
     pub title: &'static str,
     /// What the title adds in the paper's notation: each setting's symbol, value and unit
     /// as the code writes it, e.g. `("Δt", 1.0, "s")` and `("ε", 0.1, "")` for "Δt = 1 s,
-    /// ε = 0.1" (the page writes the numbers and units in the reader's language).
+    /// ε = 0.1" (`i18n::diagram_detail` writes it in the reader's language).
     pub detail: Vec<DiagramSetting>,
     /// Draw the unit circle.
     pub unit_circle: bool,
@@ -158,27 +158,6 @@ pub struct Diagram {
 /// One setting a diagram's title names: its symbol, its value and its unit as the code
 /// writes it ("" for none).
 pub type DiagramSetting = (&'static str, f64, &'static str);
-
-impl Diagram {
-    /// The detail in English: "Δt = 1 s, ε = 0.1".
-    pub fn detail_text(&self) -> String {
-        let parts: Vec<String> = (self.detail.iter())
-            .map(|(symbol, value, unit)| {
-                format!("{symbol} = {value} {unit}").trim_end().to_string()
-            })
-            .collect();
-        parts.join(", ")
-    }
-
-    /// The title with its detail, in English.
-    pub fn heading(&self) -> String {
-        if self.detail.is_empty() {
-            self.title.to_string()
-        } else {
-            format!("{} ({})", self.title, self.detail_text())
-        }
-    }
-}
 
 /// One labelled point of a [`Diagram`].
 #[derive(Clone, Debug, PartialEq)]

@@ -193,16 +193,8 @@ pub fn diagram_heading(app: &AppState, index: usize, d: &attlab::model::Diagram)
     if d.detail.is_empty() {
         title
     } else {
-        let lang = app.view().lang();
-        let parts: Vec<String> = (d.detail.iter())
-            .map(|(symbol, value, unit)| {
-                let value = i18n::number(lang, &value.to_string());
-                format!("{symbol} = {value} {}", i18n::unit(lang, unit))
-                    .trim_end()
-                    .to_string()
-            })
-            .collect();
-        format!("{title} ({})", parts.join(i18n::list_separator(lang)))
+        let detail = i18n::diagram_detail(app.view().lang(), &d.detail);
+        format!("{title} ({detail})")
     }
 }
 

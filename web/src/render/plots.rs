@@ -75,7 +75,7 @@ pub struct PlotWords<'a> {
     pub outages: Vec<String>,
     /// The reset button's hint.
     pub reset: String,
-    /// The reader's language, for the numbers on the axes and under the pointer.
+    /// The reader's language, for the numbers on the axes.
     pub lang: attlab::i18n::Lang,
 }
 
