@@ -110,7 +110,11 @@ job-progress = { $what } · { $percent } %
 job-holds = моделирование пока стоит
 stop = Стоп
 status-short = t = { $t } с · ×{ $realtime } реального времени (задано ×{ $asked })
-status-long = t = { $t } с · шаг { $step } мс · { $rate } шагов/с · ×{ $realtime } реального времени (задано ×{ $asked }) · кадр каждые { $frame } мс · модель { $sim } мс/кадр · запись { $mib } МиБ ({ $series } рядов, весь прогон)
+status-long = t = { $t } с · шаг { $step } мс · { $rate } шагов/с · ×{ $realtime } реального времени (задано ×{ $asked }) · кадр { $frame } мс · модель { $sim } мс/кадр · запись { $mib } МиБ ({ $series } { $series ->
+    [one] ряд
+    [few] ряда
+   *[many] рядов
+}, весь прогон)
 behind = · не успевает за реальным временем: уменьшите скорость
 diverged = · { $id } разошёлся: { $why } (нажмите «Сброс»)
 unobservable = · { $id } ненаблюдаем: { $why }

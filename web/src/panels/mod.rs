@@ -293,7 +293,8 @@ fn stats_text(app: &AppState, narrow: bool) -> String {
                         format!("{:.1}", rec.memory_bytes() as f64 / f64::from(1 << 20)),
                     ),
                 ),
-                ("series", arg(rec.specs().len())),
+                // A number, so that Russian picks its plural ("194 ряда").
+                ("series", rec.specs().len().into()),
             ],
         )
     }

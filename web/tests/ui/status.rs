@@ -38,3 +38,37 @@ fn a_job_under_way_says_what_it_does_in_the_readers_language() {
         assert!(bar.ends_with(" %"), "{lang}: {bar}");
     }
 }
+
+/// The engineer's status line (time, step, rates, frame, recorder) on a laptop, 1366×768:
+/// one line in both languages for every lab (the Russian had wrapped, its last words on a
+/// second line the plot gave up), and the Russian with the plural its count asks for
+/// ("194 ряда", "41 ряд", "8 рядов").
+#[test]
+fn the_status_line_is_one_line_on_a_laptop_and_its_count_agrees() {
+    for lab in attlab::labs::all() {
+        for lang in ["en", "ru"] {
+            let fragment = format!("lab={}&lang={lang}", lab.id());
+            let h = window(&fragment, 10, (egui::vec2(1366.0, 768.0), 1.0));
+            let status = (h.output().shapes.iter()).find_map(|c| match &c.shape {
+                Shape::Text(t) if t.galley.text().starts_with("t =") => Some(t.galley.clone()),
+                _ => None,
+            });
+            let status = status.unwrap_or_else(|| panic!("{fragment}: no status line"));
+            assert_eq!(status.rows.len(), 1, "{fragment}: {}", status.text());
+            let series = h.state().state.sim().specs().len();
+            if lang == "ru" {
+                let word = match (series % 10, series % 100) {
+                    (1, n) if n != 11 => "ряд,",
+                    (2..=4, n) if !(12..=14).contains(&n) => "ряда,",
+                    _ => "рядов,",
+                };
+                let said = format!("({series} {word}");
+                assert!(
+                    status.text().contains(&said),
+                    "{fragment}: {}",
+                    status.text()
+                );
+            }
+        }
+    }
+}
