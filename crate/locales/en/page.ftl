@@ -110,7 +110,7 @@ job-progress = { $what } · { $percent } %
 job-holds = the simulation holds meanwhile
 stop = Stop
 status-short = t = { $t } s · ×{ $realtime } real time (×{ $asked } asked)
-status-long = t = { $t } s · step { $step } ms · { $rate } steps/s · ×{ $realtime } real time (×{ $asked } asked) · frame every { $frame } ms · sim { $sim } ms/frame · recorder { $mib } MiB ({ $series } series, whole run)
+status-long = t = { $t } s · step { $step } ms · { $rate } steps/s · { $realtime } real time (×{ $asked } asked) · frame { $frame } ms · sim { $sim } ms/frame · recorder { $mib } MiB ({ $series } series, whole run)
 behind = · behind real time: lower the speed
 diverged = · { $id } diverged: { $why } (press Reset)
 unobservable = · { $id } unobservable: { $why }

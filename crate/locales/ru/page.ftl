@@ -110,7 +110,7 @@ job-progress = { $what } · { $percent } %
 job-holds = моделирование пока стоит
 stop = Стоп
 status-short = t = { $t } с · ×{ $realtime } реального времени (задано ×{ $asked })
-status-long = t = { $t } с · шаг { $step } мс · { $rate } шагов/с · ×{ $realtime } реального времени (задано ×{ $asked }) · кадр { $frame } мс · модель { $sim } мс/кадр · запись { $mib } МиБ ({ $series } { $series ->
+status-long = t = { $t } с · шаг { $step } мс · { $rate } шагов/с · { $realtime } реального времени (задано ×{ $asked }) · кадр { $frame } мс · счёт { $sim } мс/кадр · запись { $mib } МиБ ({ $series } { $series ->
     [one] ряд
     [few] ряда
    *[many] рядов
@@ -360,18 +360,18 @@ link-malformed = Элемент ссылки { $item }: не в виде имя=
 link-fault-no-such-lab = такой работы нет (есть: { $ids })
 link-fault-no-such-lesson = такого урока нет (есть: { $ids })
 link-fault-step-without-lesson = шаг задаётся только вместе с уроком (lesson=<работа>)
-link-fault-no-such-step = шаг — целое число от 1 до { $steps }
-link-fault-not-key-value = нужно имя=значение
-link-fault-seed = зерно — целое число ≥ 0
-link-fault-speed = скорость — от { $lo } до { $hi }
-link-fault-presenter = presenter — 1 или 0
-link-fault-theme = theme — light или dark
-link-fault-lang = lang — en или ru
+link-fault-no-such-step = шаг должен быть целым числом от 1 до { $steps }
+link-fault-not-key-value = ожидается имя=значение
+link-fault-seed = зерно должно быть целым числом ≥ 0
+link-fault-speed = скорость должна быть от { $lo } до { $hi }
+link-fault-presenter = для presenter (режим для проектора) нужно 1 или 0
+link-fault-theme = для theme (оформление) нужно light или dark
+link-fault-lang = для lang (язык) нужно en или ru
 link-fault-answers-without-lesson = ответы задаются только вместе с уроком (lesson=<работа>)
 link-fault-no-lesson = у этой работы нет урока
-link-fault-not-an-answer = «{ $part }» — не номер шага с буквой ответа (вроде 2b)
+link-fault-not-an-answer = «{ $part }» — не номер шага с буквой ответа (например, 2b)
 link-fault-no-such-answer = у шага { $step } нет ответа { $letter }
-link-fault-not-a-parameter = «{ $key }» — не параметр работы { $lab } (и не `all`)
+link-fault-not-a-parameter = «{ $key }» — не настройка работы { $lab } (и не «all»)
 
 ## Значение, которое ползунок или выбор единиц записи не принял (прогон идёт без изменений)
 param-out-of-range = «{ $label }»: допустимо { $range }, { $given } вне этих пределов; значение не изменено.

@@ -21,7 +21,7 @@ pub use series::{
     series_label, series_legend, series_legend_parts, series_legend_without_unit,
 };
 use std::sync::OnceLock;
-pub use units::{unit, units_after_numbers};
+pub use units::unit;
 
 /// A language of the page.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -384,3 +384,29 @@ fn the_page_says_what_the_catalogue_says_before_the_app_starts() {
         );
     }
 }
+
+/// The Russian status line's count of series takes the plural its number asks for.
+#[test]
+fn the_russian_series_count_agrees_with_its_number() {
+    for (n, word) in [
+        (1, "ряд,"),
+        (2, "ряда,"),
+        (5, "рядов,"),
+        (11, "рядов,"),
+        (12, "рядов,"),
+        (14, "рядов,"),
+        (21, "ряд,"),
+        (22, "ряда,"),
+        (111, "рядов,"),
+        (194, "ряда,"),
+    ] {
+        let mut args: Vec<(&str, FluentValue<'_>)> = ["t", "step", "rate", "realtime", "asked"]
+            .into_iter()
+            .chain(["frame", "sim", "mib"])
+            .map(|name| (name, FluentValue::from("1")))
+            .collect();
+        args.push(("series", n.into()));
+        let text = t_with(Lang::Ru, "status-long", &args);
+        assert!(text.contains(&format!("({n} {word}")), "{n}: {text}");
+    }
+}

@@ -33,8 +33,10 @@ pub fn unit(lang: Lang, unit: &str) -> String {
 
 /// `text` with every unit written as the code writes it that follows a number ("Δt = 1.17
 /// s") in `lang`'s words ("Δt = 1.17 с"); the rest, spacing and punctuation included, as it
-/// is. For a line that mixes the paper's notation with a unit.
-pub fn units_after_numbers(lang: Lang, text: &str) -> String {
+/// is. The tests read the Russian catalogue with it: a Russian message must not write an
+/// English unit after a number ("100 Hz").
+#[cfg(test)]
+fn units_after_numbers(lang: Lang, text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 8);
     let mut rest = text;
     let mut after_number = false;
@@ -57,6 +59,7 @@ pub fn units_after_numbers(lang: Lang, text: &str) -> String {
     out
 }
 
+#[cfg(test)]
 /// `word` is a unit as the code writes it and Russian writes it otherwise: every word of it
 /// is a unit's word (`unit-<word>` in English), and the Russian differs ("g" is not).
 fn english_unit(word: &str) -> bool {

@@ -213,9 +213,7 @@ impl UrlState {
             })
             .collect();
         let mut errors = Vec::new();
-        let err = |position: usize, text: &str, fault: LinkFault| {
-            UrlStateError::of(position, text, fault)
-        };
+        let err = UrlStateError::of;
         let mut lab = labs::all()[0];
         for (pos, key, value, item) in &items {
             if let ("lab", Some(id)) = (key.as_str(), value) {

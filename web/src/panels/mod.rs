@@ -281,8 +281,11 @@ fn stats_text(app: &AppState, narrow: bool) -> String {
                     "step",
                     num_arg(app, format!("{:.1}", app.sim().dt_s() * 1e3)),
                 ),
-                ("rate", num_arg(app, format!("{:7.0}", s.steps_per_s))),
-                ("realtime", num_arg(app, format!("{:.2}", s.realtime))),
+                ("rate", num_arg(app, format!("{:6.0}", s.steps_per_s))),
+                (
+                    "realtime",
+                    num_arg(app, format!("{:>9}", format!("×{:.2}", s.realtime))),
+                ),
                 ("asked", num_arg(app, app.run().speed)),
                 ("frame", num_arg(app, format!("{:5.1}", s.frame_ms))),
                 ("sim", num_arg(app, format!("{:4.1}", s.step_ms))),

@@ -59,15 +59,19 @@ fn a_logs_refused_unit_choice_is_said_by_its_label_in_either_language() {
 }
 
 /// A link's bad page settings and lesson items are said in Russian too, a number with its
-/// comma: no English reason ("must be") on a Russian page.
+/// comma: none of the reasons the core gives in English reaches the Russian page.
 #[test]
 fn a_links_bad_settings_are_said_in_the_readers_language() {
-    let h =
-        page("lab=free-rotation&lang=ru&speed=abc&theme=blue&presenter=2&seed=x&step=3&hide=zz");
+    let fragment =
+        "lab=free-rotation&lang=ru&speed=abc&theme=blue&presenter=2&seed=x&step=3&hide=zz";
+    let h = page(fragment);
     let problems = h.state().state.link_problems();
+    let (_, errors) = attlab::state::UrlState::parse(fragment);
     assert_eq!(problems.len(), 6, "{problems:#?}");
-    for p in problems {
-        assert!(!p.contains("must be") && !p.contains("needs a"), "{p}");
+    assert_eq!(errors.len(), 6, "{errors:#?}");
+    for (p, e) in problems.iter().zip(&errors) {
+        assert!(e.fault.is_some(), "{e:?}");
+        assert!(!p.contains(&e.reason), "{p}: the English “{}”", e.reason);
     }
     let speed = problems.iter().find(|p| p.contains("speed=abc"));
     assert!(speed.is_some_and(|p| p.contains("0,1")), "{problems:#?}");

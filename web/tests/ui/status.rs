@@ -46,8 +46,9 @@ fn a_job_under_way_says_what_it_does_in_the_readers_language() {
 #[test]
 fn the_status_line_is_one_line_on_a_laptop_and_its_count_agrees() {
     for lab in attlab::labs::all() {
-        for lang in ["en", "ru"] {
-            let fragment = format!("lab={}&lang={lang}", lab.id());
+        // At the top speed the pace's numbers are at their widest ("×9876,54 … задано ×10000").
+        for (lang, speed) in [("en", 1.0), ("ru", 1.0), ("en", 10_000.0), ("ru", 10_000.0)] {
+            let fragment = format!("lab={}&lang={lang}&speed={speed}", lab.id());
             let h = window(&fragment, 10, (egui::vec2(1366.0, 768.0), 1.0));
             let status = (h.output().shapes.iter()).find_map(|c| match &c.shape {
                 Shape::Text(t) if t.galley.text().starts_with("t =") => Some(t.galley.clone()),
@@ -55,7 +56,12 @@ fn the_status_line_is_one_line_on_a_laptop_and_its_count_agrees() {
             });
             let status = status.unwrap_or_else(|| panic!("{fragment}: no status line"));
             assert_eq!(status.rows.len(), 1, "{fragment}: {}", status.text());
-            let series = h.state().state.sim().specs().len();
+            eprintln!(
+                "WIDTH {fragment} {} {}",
+                status.rect.width(),
+                status.text().chars().count()
+            );
+            let series = h.state().state.sim().recorder().specs().len();
             if lang == "ru" {
                 let word = match (series % 10, series % 100) {
                     (1, n) if n != 11 => "ряд,",
