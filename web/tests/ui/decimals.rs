@@ -2,12 +2,11 @@
 //! the Russian catalogue's own prose do; the English page with a point. References to a
 //! section, an equation, a figure or a table keep their point in both ("§3.3", "рис. 5.3").
 
-use super::{harness, harness_from_link};
+use super::{harness, harness_from_link, painted};
 use attlab::i18n::Lang;
 use attlab::labs;
 use attlab_web::AttLabApp;
 use attlab_web::state::{RunCommand, ViewCommand};
-use egui::Shape;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -52,16 +51,6 @@ fn numbers_with(text: &str, separator: char) -> Vec<String> {
         found.push(chars[from..(end + 4).min(chars.len())].iter().collect());
     }
     found
-}
-
-/// Every text the page painted in its last frame.
-fn painted(h: &Harness<'_, AttLabApp>) -> Vec<String> {
-    (h.output().shapes.iter())
-        .filter_map(|c| match &c.shape {
-            Shape::Text(t) => Some(t.galley.text().to_owned()),
-            _ => None,
-        })
-        .collect()
 }
 
 /// The painted numbers with a decimal point, which a Russian page must not have.

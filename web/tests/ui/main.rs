@@ -42,6 +42,16 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 
+/// Every text the page painted in its last frame.
+fn painted(h: &Harness<'_, AttLabApp>) -> Vec<String> {
+    (h.output().shapes.iter())
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Text(t) => Some(t.galley.text().to_owned()),
+            _ => None,
+        })
+        .collect()
+}
+
 /// A harness around `state`, paused.
 fn harness_for(state: attlab_web::state::AppState) -> Harness<'static, AttLabApp> {
     let mut app = AttLabApp::headless(state);

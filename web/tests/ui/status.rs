@@ -2,18 +2,9 @@
 //! it does in the page's language, with its share done.
 
 use super::legend::window;
+use super::painted;
 use attlab_web::state::IoCommand;
 use egui::epaint::Shape;
-
-/// Every text the last frame painted.
-fn painted(h: &egui_kittest::Harness<'_, attlab_web::AttLabApp>) -> Vec<String> {
-    (h.output().shapes.iter())
-        .filter_map(|c| match &c.shape {
-            Shape::Text(t) => Some(t.galley.text().to_owned()),
-            _ => None,
-        })
-        .collect()
-}
 
 /// A CSV export of 20 000 steps of paper 2 (a re-run of ≥ 0.2 s, many frames' budgets):
 /// the progress bar reads "Выгрузка всех отсчётов в CSV · N %" in Russian and "Exporting
