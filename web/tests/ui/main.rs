@@ -29,6 +29,9 @@ mod replay;
 mod shader;
 mod side_panel;
 mod status;
+mod support;
+
+use support::{harness_for, harness_from_link, painted};
 
 fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
@@ -40,31 +43,6 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
         .with_size(egui::vec2(1400.0, 900.0))
         .with_context_setup(attlab_web::render::fonts::install)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
-}
-
-/// Every text the page painted in its last frame.
-fn painted(h: &Harness<'_, AttLabApp>) -> Vec<String> {
-    (h.output().shapes.iter())
-        .filter_map(|c| match &c.shape {
-            egui::Shape::Text(t) => Some(t.galley.text().to_owned()),
-            _ => None,
-        })
-        .collect()
-}
-
-/// A harness around `state`, paused.
-fn harness_for(state: attlab_web::state::AppState) -> Harness<'static, AttLabApp> {
-    let mut app = AttLabApp::headless(state);
-    app.apply(RunCommand::SetPlaying(false).into());
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 900.0))
-        .with_context_setup(attlab_web::render::fonts::install)
-        .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
-}
-
-/// The page a link opens (`fragment` as after `#`), paused.
-fn harness_from_link(fragment: &str) -> Harness<'static, AttLabApp> {
-    harness_for(attlab_web::state::AppState::from_fragment(fragment))
 }
 
 /// Lab `lab_id`'s page with the collapsed section `heading` opened and `button` in it
