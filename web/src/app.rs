@@ -50,6 +50,9 @@ impl AttLabApp {
         // desktop window has no mirror: eframe there would need its own AccessKit adapter).
         #[cfg(target_arch = "wasm32")]
         crate::a11y::Mirror::install(&cc.egui_ctx);
+        // Back and Forward change the fragment with no input on the canvas: draw a frame to
+        // read it.
+        platform::repaint_on_history_moves(&cc.egui_ctx);
         let gpu_ready = cc.wgpu_render_state.as_ref().map(body3d::init).is_some();
         let mut app = Self::headless(AppState::from_fragment(&platform::initial_fragment()));
         app.gpu_ready = gpu_ready;

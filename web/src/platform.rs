@@ -32,15 +32,47 @@ pub fn current_fragment() -> Option<String> {
     }
 }
 
-/// Replaces the URL fragment without adding a history entry (no-op on the desktop).
-pub fn set_fragment(fragment: &str) {
+/// Writes the URL fragment: a new history entry when `new_entry` (a lesson step, another
+/// lab: Back returns to it), else in place of the current one (a slider moved). A no-op on
+/// the desktop.
+pub fn set_fragment(fragment: &str, new_entry: bool) {
     #[cfg(target_arch = "wasm32")]
     if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
         let url = format!("#{fragment}");
-        let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&url));
+        let state = wasm_bindgen::JsValue::NULL;
+        let _ = if new_entry {
+            history.push_state_with_url(&state, "", Some(&url))
+        } else {
+            history.replace_state_with_url(&state, "", Some(&url))
+        };
     }
     #[cfg(not(target_arch = "wasm32"))]
-    let _ = fragment;
+    let _ = (fragment, new_entry);
+}
+
+/// Asks `ctx` for a frame whenever the browser moves through the history (Back, Forward) or
+/// the reader edits the fragment: a paused page draws only on input, and the frame loop is
+/// where the new fragment is read. A no-op on the desktop.
+pub fn repaint_on_history_moves(ctx: &egui::Context) {
+    #[cfg(target_arch = "wasm32")]
+    {
+        use wasm_bindgen::JsCast as _;
+        let Some(window) = web_sys::window() else {
+            return;
+        };
+        for event in ["popstate", "hashchange"] {
+            let ctx = ctx.clone();
+            let listener = wasm_bindgen::closure::Closure::<dyn FnMut()>::new(move || {
+                ctx.request_repaint();
+            });
+            let _ =
+                window.add_event_listener_with_callback(event, listener.as_ref().unchecked_ref());
+            // Listens for the page's whole life.
+            listener.forget();
+        }
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    let _ = ctx;
 }
 
 /// The first of the browser's languages the page speaks (`navigator.languages`); English on

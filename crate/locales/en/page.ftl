@@ -49,7 +49,7 @@ png-view-hint = Save this view as a PNG (key p while it is shown alone)
 
 ## Help
 what-am-i-looking-at = What am I looking at?
-keys-help = Keys: space pause/resume · r reset · s single step · ←/→ plot tab · f one view at full size (repeat for the next view, then the plots alone, then all) · p PNG of the view shown alone, else of every plot tab · ? or F1 every key (Tab moves between the controls)
+keys-help = Keys: space pause/resume · r reset · s single step · ←/→ plot tab · in a lesson PageDown/PageUp or →/← next/previous step, Shift+←/→ plot tab · f one view at full size (repeat for the next view, then the plots alone, then all) · p PNG of the view shown alone, else of every plot tab · ? or F1 every key (Tab moves between the controls)
 frames-help = Frames: reference ζ up; body ξ′ right, η′ forward, ζ′ up. The sphere shows the vertical k = (a′, b′, c′) in body axes; the ray from the pole S through k meets the body plane at w = u + jv = (a′ + jb′)/(1 + c′). |w| = 1 is pitch ±90°; w → ∞ is upside down, where the (u, v, z) integrator switches to s = 1/w.
 
 ## A narrow screen
@@ -161,8 +161,10 @@ keys-reset = r
 keys-reset-does = reset: t = 0 with the same seed
 keys-step = s
 keys-step-does = one step, paused
-keys-tabs = ← →
+keys-tabs = ← → (in a lesson Shift+← →)
 keys-tabs-does = the previous, the next plot tab (when no control has the keyboard)
+keys-lesson = PageDown or →, PageUp or ← in a lesson
+keys-lesson-does = the next, the previous step of the lesson (the keys a presenter's clicker sends)
 keys-full = f
 keys-full-does = one view at full size (again: the next view, the plots alone, everything)
 keys-png = p
@@ -313,6 +315,8 @@ msg-plots-lost = the plots lost their history: { $why }
 msg-rerun-took = re-ran { $t } s of simulation for this plot in { $ms } ms
 msg-preset-applied = preset { $name } applied
 msg-preset-waits = preset { $name }: some values apply at Reset
+msg-locked-kept = locked by the teacher's link, kept as it was: { $names }
+locked-hint = Locked by the teacher's link: presets, “defaults” and the lesson's steps leave it as it is.
 msg-png-lab-changed = PNG export stopped: the lab changed
 msg-png-busy = a PNG is being made already: one at a time
 msg-png-failed = PNG export failed: { $why }

@@ -218,6 +218,11 @@ fn attributes(element: &web_sys::Element, node: &MirrorNode, old: Option<&Mirror
     }
     if changed(&|n| format!("{}{}", n.disabled, n.clickable)) {
         set("aria-disabled", node.disabled.then(|| "true".into()));
+        // A disabled range input takes no value from a screen reader's keys at all (a
+        // locked slider had moved through it).
+        if node.element == Element::Range {
+            set("disabled", node.disabled.then(String::new));
+        }
         let focusable = node.clickable || node.element == Element::Range;
         set("tabindex", focusable.then(|| "-1".into()));
     }
@@ -298,6 +303,13 @@ fn write_numeric(element: &web_sys::Element, node: &MirrorNode) {
 fn request_of(event: &web_sys::Event, action: Action) -> Option<ActionRequest> {
     let target = event.target()?.dyn_into::<web_sys::Element>().ok()?;
     let element = target.closest("[data-ak]").ok()??;
+    // A disabled control (a locked or inactive slider) takes no value and no click; it may
+    // still have the keyboard, so a screen reader reads it.
+    let disabled =
+        element.has_attribute("disabled") || element.get_attribute("aria-disabled").is_some();
+    if disabled && action != Action::Focus {
+        return None;
+    }
     let id: u64 = element.get_attribute("data-ak")?.parse().ok()?;
     let data = match action {
         Action::SetValue => {

@@ -17,11 +17,20 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let panel = if app.view().presenter {
         egui::Panel::left("controls_presenter").exact_size(230.0)
     } else {
+        // Dragged wider, it stops at half the window: the views and the plot keep the rest
+        // (it could take almost the whole width).
+        let most = (0.5 * ui.ctx().content_rect().width()).max(300.0);
         egui::Panel::left("controls")
             .resizable(true)
             .default_size(300.0)
+            .size_range(220.0..=most)
     };
     panel.show(ui, |ui| {
+        // A lesson's way on stays in view under the panel, however long the card.
+        if app.lesson().is_some() {
+            egui::Panel::bottom("lesson_navigation")
+                .show(ui, |ui| super::lesson::navigation_bar(ui, app, commands));
+        }
         egui::ScrollArea::vertical().show(ui, |ui| {
             // A lesson under way comes first: its text and question beside the model.
             if app.lesson().is_some() {
@@ -450,7 +459,11 @@ fn messages(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             if ui.small_button("✕").clicked() {
                 commands.push(Command::Dismiss(i));
             }
-            ui.colored_label(color, &m.text);
+            let text = match m.times {
+                1 => m.text.clone(),
+                n => format!("{} (×{n})", m.text),
+            };
+            ui.colored_label(color, text);
         });
     }
 }

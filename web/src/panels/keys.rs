@@ -1,12 +1,15 @@
 //! Keyboard: the page's shortcuts (space pause/resume, r reset, s single step, ←/→ the
-//! previous/next plot tab, f one view at full size, p a PNG, ? or F1 this list) and the
+//! previous/next plot tab, in a lesson PageUp/PageDown or ←/→ the previous/next step and
+//! Shift+←/→ the tabs, f one view at full size, p a PNG, ? or F1 this list) and the
 //! dialog that lists them with the keys of the controls (Tab, Enter, a slider's keys).
 //! A letter is ignored while a text field has the keyboard; space and the arrows belong to
 //! the control that has the keyboard, if any (Esc leaves it).
 
 use super::tr;
 use crate::render::plots;
-use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, RunCommand, ViewCommand};
+use crate::state::{
+    AppState, Command, Focus, IoCommand, LessonCommand, PngTarget, RunCommand, ViewCommand,
+};
 use attlab::model::PlotTab;
 use egui::Key;
 
@@ -57,11 +60,40 @@ pub fn shortcuts(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command
             },
         )));
     }
-    for (key, delta) in [(Key::ArrowLeft, -1), (Key::ArrowRight, 1)] {
-        if pressed(key)
-            && !control_has_keys
-            && let Some(tab) = neighbour_tab(app, delta)
-        {
+    if !control_has_keys {
+        steps_and_tabs(ctx, app, commands);
+    }
+}
+
+/// The arrows and the page keys: outside a lesson ←/→ move the plot tab; in a lesson the
+/// keys a presenter's clicker sends walk its steps (PageDown or →, PageUp or ←), and the
+/// plot tabs move with Shift+←/→.
+fn steps_and_tabs(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Command>) {
+    let pressed = |k: Key| ctx.input(|i| i.key_pressed(k) && i.modifiers.is_none());
+    let shifted = |k: Key| {
+        ctx.input(|i| i.key_pressed(k) && i.modifiers.matches_exact(egui::Modifiers::SHIFT))
+    };
+    let lesson = app.lesson().map(|l| l.step);
+    let steps = app.sim().lab().lesson().map_or(0, |l| l.steps.len());
+    for ([page, arrow], delta) in [
+        ([Key::PageUp, Key::ArrowLeft], -1),
+        ([Key::PageDown, Key::ArrowRight], 1),
+    ] {
+        if let Some(n) = lesson {
+            if pressed(page) || pressed(arrow) {
+                let next = n
+                    .checked_add_signed(delta)
+                    .filter(|m| (1..=steps).contains(m));
+                commands.extend(next.map(|m| Command::from(LessonCommand::Go(m))));
+                continue;
+            }
+            if !shifted(arrow) {
+                continue;
+            }
+        } else if !pressed(arrow) {
+            continue;
+        }
+        if let Some(tab) = neighbour_tab(app, delta) {
             commands.push(Command::from(ViewCommand::SelectTab(tab)));
         }
     }
@@ -107,7 +139,7 @@ pub fn focus_ring(ctx: &egui::Context, keyboard: &mut bool) {
 }
 
 /// The keys, as the dialog lists them: (keys, what they do), message ids of the catalogue.
-pub const KEYS: [(&str, &str); 12] = [
+pub const KEYS: [(&str, &str); 13] = [
     ("keys-tab", "keys-tab-does"),
     ("keys-activate", "keys-activate-does"),
     ("keys-slider-arrows", "keys-slider-arrows-does"),
@@ -118,6 +150,7 @@ pub const KEYS: [(&str, &str); 12] = [
     ("keys-reset", "keys-reset-does"),
     ("keys-step", "keys-step-does"),
     ("keys-tabs", "keys-tabs-does"),
+    ("keys-lesson", "keys-lesson-does"),
     ("keys-full", "keys-full-does"),
     ("keys-png", "keys-png-does"),
 ];

@@ -46,8 +46,21 @@ pub(super) fn card(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             if let Some(q) = &step.question {
                 question(ui, app, q, state.step, state.answer(state.step), commands);
             }
-            navigation(ui, app, lesson, state.step, commands);
+            if let Some(i) = step.sweep {
+                ui.add_space(4.0);
+                super::sweeps::in_lesson(ui, app, i, commands);
+            }
+            tools(ui, app, commands);
         });
+}
+
+/// Back, Next and Again, where the lesson card's panel keeps them in view (pinned under
+/// the card, however long its text and answer): nothing when no lesson is open.
+pub(super) fn navigation_bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let (Some(lesson), Some(state)) = (app.sim().lab().lesson(), app.lesson()) else {
+        return;
+    };
+    navigation(ui, app, lesson, state.step, commands);
 }
 
 /// "Lesson: title · step k of n".
@@ -86,6 +99,10 @@ fn question(
             commands.push(LessonCommand::Answer(k + 1).into());
         }
     }
+    let seen = egui::Id::unique(("lesson why shown", app.sim().lab().id(), n));
+    if chosen.is_none() || !app.lesson_revealed() {
+        ui.data_mut(|d| d.remove::<bool>(seen));
+    }
     let Some(_) = chosen else {
         return;
     };
@@ -98,14 +115,20 @@ fn question(
         );
         let shows = tr_with(app, "lesson-shows", &[("answer", arg(answer))]);
         ui.label(RichText::new(shows).strong());
-        ui.label(word(app, Some(n), "why", q.why));
+        let why = ui.label(word(app, Some(n), "why", q.why));
+        // Brought into view once, when the run first shows it: after an answer the why had
+        // stayed below the card's fold on a projector.
+        if !ui.data(|d| d.get_temp::<bool>(seen).unwrap_or(false)) {
+            why.scroll_to_me(Some(egui::Align::BOTTOM));
+            ui.data_mut(|d| d.insert_temp(seen, true));
+        }
     } else if let Some(t) = app.run().pause_at_s {
         let running = tr_with(app, "lesson-running", &[("t", num_arg(app, t))]);
         ui.label(RichText::new(running).weak());
     }
 }
 
-/// Back, next, the tools a lesson uses (share, the filter's cycle) and the way out.
+/// Back, next and again (PageUp and PageDown, or ← and →, do the same).
 fn navigation(ui: &mut Ui, app: &AppState, lesson: &Lesson, n: usize, commands: &mut Vec<Command>) {
     ui.horizontal_wrapped(|ui| {
         if ui
@@ -127,6 +150,10 @@ fn navigation(ui: &mut Ui, app: &AppState, lesson: &Lesson, n: usize, commands: 
             commands.push(LessonCommand::Go(n).into());
         }
     });
+}
+
+/// The tools a lesson uses (share, the filter's cycle) and the way out.
+fn tools(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     ui.horizontal_wrapped(|ui| {
         if ui.small_button(tr(app, "share")).clicked() {
             commands.push(ShareCommand::Open.into());

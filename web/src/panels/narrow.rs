@@ -53,7 +53,15 @@ pub fn bar(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
 /// With a lesson open, "Lesson · step k of n": the card is at the top of the sheet it opens
 /// (a question step opens the sheet by itself; see `AppState::show_step`).
 fn lesson_button(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let (Some(lesson), Some(all)) = (app.lesson(), app.sim().lab().lesson()) else {
+    let Some(all) = app.sim().lab().lesson() else {
+        return;
+    };
+    let Some(lesson) = app.lesson() else {
+        // On the bar, not down in the controls' sheet where a phone's reader never looked.
+        if ui.button(tr(app, "lesson-start")).clicked() {
+            commands.push(Command::from(crate::state::LessonCommand::Start));
+            commands.push(Command::from(ViewCommand::SetSheet(true)));
+        }
         return;
     };
     let text = super::tr_with(
@@ -98,6 +106,10 @@ pub fn sheet(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                     commands.push(Command::from(ViewCommand::SetSheet(false)));
                 }
             });
+            if app.lesson().is_some() {
+                egui::Panel::bottom("narrow_lesson_navigation")
+                    .show(ui, |ui| super::lesson::navigation_bar(ui, app, commands));
+            }
             egui::ScrollArea::vertical().show(ui, |ui| {
                 if app.lesson().is_some() {
                     super::lesson::card(ui, app, commands);

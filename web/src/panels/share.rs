@@ -33,11 +33,7 @@ pub fn share_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comm
                 ui.label(egui::RichText::new(tr(app, "share-scan")).small().weak());
             });
         });
-        ui.add(
-            egui::TextEdit::singleline(&mut link.as_str())
-                .desired_width(f32::INFINITY)
-                .font(egui::TextStyle::Monospace),
-        );
+        whole_link(ui, &link);
         ui.horizontal(|ui| {
             if ui.button(tr(app, "share-copy")).clicked() {
                 commands.push(ShareCommand::Copy.into());
@@ -49,6 +45,24 @@ pub fn share_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comm
     if modal.inner || modal.should_close() {
         commands.push(ShareCommand::Close.into());
     }
+}
+
+/// The link, whole: wrapped anywhere (it has no spaces) in the dialog's width, and
+/// selectable; a one-line field had cut it at the dialog's edge.
+fn whole_link(ui: &mut Ui, link: &str) {
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let mut job = egui::text::LayoutJob::single_section(
+        link.to_string(),
+        egui::TextFormat::simple(font, ui.visuals().text_color()),
+    );
+    job.wrap = egui::text::TextWrapping {
+        max_width: ui.available_width(),
+        break_anywhere: true,
+        ..Default::default()
+    };
+    egui::Frame::group(ui.style()).show(ui, |ui| {
+        ui.add(egui::Label::new(job).selectable(true));
+    });
 }
 
 /// What the link opens: the step or the state, presenter mode, the answers.
@@ -94,27 +108,47 @@ fn controls(ui: &mut Ui, app: &AppState, o: &ShareOptions, commands: &mut Vec<Co
                             ui.strong(tr(app, "share-hide"));
                             ui.strong(tr(app, "share-lock"));
                             ui.end_row();
-                            row(ui, o, ALL_CONTROLS, &tr(app, "share-all"), commands);
+                            let heads = [tr(app, "share-hide"), tr(app, "share-lock")];
+                            row(
+                                ui,
+                                o,
+                                (ALL_CONTROLS, &tr(app, "share-all")),
+                                &heads,
+                                commands,
+                            );
                             let lab = app.sim().lab();
                             for spec in lab.params() {
                                 let id = i18n::param_label_id(lab.id(), spec.key);
                                 let label = lab_word(app, &id, spec.label);
-                                row(ui, o, spec.key, &label, commands);
+                                row(ui, o, (spec.key, &label), &heads, commands);
                             }
                         });
                 });
         });
 }
 
-/// One control's row: its name, hide, lock.
-fn row(ui: &mut Ui, o: &ShareOptions, key: &'static str, label: &str, commands: &mut Vec<Command>) {
+/// One control's row: its name, hide, lock. The boxes have no text of their own (the
+/// columns' heads say what they do), so a screen reader is told "Hide: Gyro σ".
+fn row(
+    ui: &mut Ui,
+    o: &ShareOptions,
+    (key, label): (&'static str, &str),
+    [hide_word, lock_word]: &[String; 2],
+    commands: &mut Vec<Command>,
+) {
     ui.label(super::elide(label, 32)).on_hover_text(label);
-    let mut hide = o.hide.contains(&key);
-    if ui.checkbox(&mut hide, "").changed() {
+    let boxed = |ui: &mut Ui, on: bool, word: &str| {
+        let mut value = on;
+        let response = ui.checkbox(&mut value, "");
+        let name = format!("{word}: {label}");
+        response
+            .widget_info(|| egui::WidgetInfo::selected(egui::Role::CheckBox, true, value, &name));
+        response.changed().then_some(value)
+    };
+    if let Some(hide) = boxed(ui, o.hide.contains(&key), hide_word) {
         commands.push(ShareCommand::Hide(key, hide).into());
     }
-    let mut lock = o.lock.contains(&key);
-    if ui.checkbox(&mut lock, "").changed() {
+    if let Some(lock) = boxed(ui, o.lock.contains(&key), lock_word) {
         commands.push(ShareCommand::Lock(key, lock).into());
     }
     ui.end_row();

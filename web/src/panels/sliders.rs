@@ -24,14 +24,27 @@ pub(super) fn slider_rows(
             continue;
         }
         let value = app.sim().params().get(spec.key);
-        let active = !app.view().locks(spec.key)
+        let locked = app.view().locks(spec.key);
+        let active = !locked
             && (spec.outside_run
                 || spec
                     .requires
                     .is_none_or(|k| app.sim().params().get(k) != 0.0));
         let row = |ui: &mut Ui| {
-            ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
-                .inner
+            let widget = |ui: &mut Ui| {
+                ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))
+                    .inner
+            };
+            if !locked {
+                return widget(ui);
+            }
+            // A padlock before the greyed control: locked, not merely off.
+            ui.horizontal_top(|ui| {
+                let hint = tr(app, "locked-hint");
+                padlock(ui, &hint).on_hover_text(hint);
+                ui.vertical(widget).inner
+            })
+            .inner
         };
         let changed = if highlight.contains(&spec.key) {
             let stroke = egui::Stroke::new(2.0, ui.visuals().selection.stroke.color);
@@ -51,6 +64,35 @@ pub(super) fn slider_rows(
             note_line(ui, app, note);
         }
     }
+}
+
+/// A padlock a line of text high, painted (the page's fonts have no 🔒): the sign of a
+/// control the teacher's link locks, which a screen reader reads as `words`.
+fn padlock(ui: &mut Ui, words: &str) -> egui::Response {
+    let h = ui.text_style_height(&egui::TextStyle::Body);
+    let (rect, response) = ui.allocate_exact_size(egui::vec2(0.75 * h, h), egui::Sense::hover());
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, words));
+    let colour = ui.visuals().warn_fg_color;
+    let painter = ui.painter_at(rect.expand(1.0));
+    let body = egui::Rect::from_min_max(
+        egui::pos2(rect.left(), rect.top() + 0.45 * h),
+        egui::pos2(rect.right(), rect.bottom() - 0.05 * h),
+    );
+    painter.rect_filled(body, 0.12 * h, colour);
+    // The shackle: a half ring on two short legs.
+    let (cx, r) = (body.center().x, 0.26 * h);
+    let top = body.top() - 0.12 * h;
+    let mut points = vec![egui::pos2(cx - r, body.top())];
+    points.extend((0..=12).map(|k| {
+        let a = std::f32::consts::PI * (1.0 + k as f32 / 12.0);
+        egui::pos2(cx + r * a.cos(), top + r * a.sin())
+    }));
+    points.push(egui::pos2(cx + r, body.top()));
+    painter.add(egui::Shape::line(
+        points,
+        egui::Stroke::new(0.13 * h, colour),
+    ));
+    response
 }
 
 /// A note under a slider: small, in the warning colour when it is one.

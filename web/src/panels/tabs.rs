@@ -11,28 +11,35 @@ use egui::Ui;
 /// One chip per estimator in its colour: a click hides it (or shows it again) in every
 /// view and plot. The chips take one row; those that do not fit are behind a menu.
 pub(super) fn estimator_legend(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    // The filters a lesson step discusses first: a step about sets 5 and 10 of paper 2's
+    // thirty had left their chips under "+25 more…". (Not the shown ones in general: a
+    // chip would jump away from the pointer that hid it.)
+    let discussed = app.lesson_step().map_or(&[][..], |s| s.show);
     let estimators = app.sim().estimators();
+    let (first, rest): (Vec<usize>, Vec<usize>) =
+        (0..estimators.len()).partition(|i| discussed.contains(&estimators[*i].id()));
+    let order: Vec<usize> = first.into_iter().chain(rest).collect();
     let mut room = ui.available_width() - 160.0;
-    let fits = (0..estimators.len())
+    let fits = (order.iter())
         .take_while(|i| {
-            room -= tab_width(ui, &format!("● {}", super::estimator_short(app, *i))) * 0.9;
+            room -= tab_width(ui, &format!("● {}", super::estimator_short(app, **i))) * 0.9;
             room >= 0.0
         })
         .count();
     ui.horizontal(|ui| {
         ui.label(egui::RichText::new(tr(app, "estimators")).small());
-        for i in 0..fits {
-            estimator_chip(ui, app, i, commands);
+        for i in &order[..fits] {
+            estimator_chip(ui, app, *i, commands);
         }
-        if fits < estimators.len() {
+        if fits < order.len() {
             let label = tr_with(
                 app,
                 "more-estimators",
-                &[("n", (estimators.len() - fits).into())],
+                &[("n", (order.len() - fits).into())],
             );
             ui.menu_button(egui::RichText::new(label).small(), |ui| {
-                for i in fits..estimators.len() {
-                    estimator_chip(ui, app, i, commands);
+                for i in &order[fits..] {
+                    estimator_chip(ui, app, *i, commands);
                 }
             });
         }

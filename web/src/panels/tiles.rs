@@ -1,5 +1,6 @@
-//! Big numbers for the back row: in presenter mode, the values a lesson step names (the
-//! current error, a covariance element) as large tiles above the views.
+//! The values a lesson step names (the current error, a covariance element) as tiles above
+//! the views, on every screen: large for the back row in presenter mode, smaller on a
+//! laptop and a phone (a step's text points at them, so every reader must have them).
 
 use super::{series_legend, tr};
 use crate::state::AppState;
@@ -7,19 +8,23 @@ use attlab::i18n;
 use egui::text::{LayoutJob, TextFormat};
 use egui::{Color32, FontId, RichText, Ui};
 
-/// The number's size (points).
+/// The number's size (points) in presenter mode, for the back row.
 const NUMBER_PT: f32 = 34.0;
-/// The size of the unit after the number (points), on the number's baseline.
-const UNIT_PT: f32 = 22.0;
+/// The number's size elsewhere: a laptop's or a phone's reader sits at the screen.
+const NUMBER_NEAR_PT: f32 = 20.0;
+/// The unit's size after the number, as a share of the number's, on its baseline.
+const UNIT_SHARE: f32 = 0.65;
 
-/// The strip of tiles, when presenter mode is on and the lesson step names values.
+/// The strip of tiles, when a lesson step names values.
 pub fn tiles(ui: &mut Ui, app: &AppState) {
     let Some(step) = app.lesson_step().filter(|s| !s.tiles.is_empty()) else {
         return;
     };
-    if !app.view().presenter {
-        return;
-    }
+    let size = if app.view().presenter {
+        NUMBER_PT
+    } else {
+        NUMBER_NEAR_PT
+    };
     egui::Panel::top("lesson_tiles").show(ui, |ui| {
         ui.horizontal(|ui| {
             // Each tile's share of what the row has left (a short tile leaves the rest more),
@@ -30,7 +35,7 @@ pub fn tiles(ui: &mut Ui, app: &AppState) {
                 let left = (step.tiles.len() - i) as f32;
                 // Never negative: a number wider than its share leaves the rest nothing.
                 let width = (ui.available_width() / left - margins).max(0.0);
-                frame.show(ui, |ui| tile(ui, app, &key.name(), width));
+                frame.show(ui, |ui| tile(ui, app, &key.name(), (width, size)));
             }
         });
     });
@@ -38,7 +43,7 @@ pub fn tiles(ui: &mut Ui, app: &AppState) {
 
 /// One tile: what the series measures, without its unit, in the tile's `width` (see
 /// [`fit_title`]), and the value in large type with the unit after it.
-fn tile(ui: &mut Ui, app: &AppState, name: &str, width: f32) {
+fn tile(ui: &mut Ui, app: &AppState, name: &str, (width, size): (f32, f32)) {
     let lang = app.view().lang();
     let lab = app.sim().lab().id();
     let spec = app.sim().specs().iter().find(|s| s.name == name);
@@ -66,11 +71,16 @@ fn tile(ui: &mut Ui, app: &AppState, name: &str, width: f32) {
         };
         ui.label(RichText::new(text).small()).on_hover_text(legend);
         let Some(value) = value else {
-            ui.label(RichText::new(tr(app, "tile-none")).size(NUMBER_PT).strong());
+            ui.label(RichText::new(tr(app, "tile-none")).size(size).strong());
             return;
         };
         let unit = spec.map_or(String::new(), |s| i18n::unit(lang, s.unit));
-        ui.label(number_with_unit(ui, &super::cycle_num(lang, value), &unit));
+        ui.label(number_with_unit(
+            ui,
+            &super::cycle_num(lang, value),
+            &unit,
+            size,
+        ));
     });
 }
 
@@ -125,10 +135,10 @@ fn longest(lo: usize, hi: usize, fits: impl Fn(usize) -> bool) -> usize {
     lo
 }
 
-/// "3.6916 °": the number strong at [`NUMBER_PT`], the unit at [`UNIT_PT`] on its baseline;
-/// a degree alone at the number's size, so its ring stands at the digits' top as in print
-/// (smaller, on the baseline, it sat at a lowercase letter's height).
-fn number_with_unit(ui: &Ui, number: &str, unit: &str) -> LayoutJob {
+/// "3.6916 °": the number strong at `size`, the unit at [`UNIT_SHARE`] of it on its
+/// baseline; a degree alone at the number's size, so its ring stands at the digits' top as
+/// in print (smaller, on the baseline, it sat at a lowercase letter's height).
+fn number_with_unit(ui: &Ui, number: &str, unit: &str, size: f32) -> LayoutJob {
     let colour = ui.visuals().strong_text_color();
     let family = egui::TextStyle::Body.resolve(ui.style()).family;
     let mut job = LayoutJob::default();
@@ -138,11 +148,15 @@ fn number_with_unit(ui: &Ui, number: &str, unit: &str) -> LayoutJob {
         valign: egui::Align::BOTTOM,
         ..Default::default()
     };
-    job.append(number, 0.0, format(NUMBER_PT, colour));
+    job.append(number, 0.0, format(size, colour));
     if !unit.is_empty() {
         let weak = ui.visuals().text_color();
-        let size = if unit == "°" { NUMBER_PT } else { UNIT_PT };
-        job.append(&format!(" {unit}"), 0.0, format(size, weak));
+        let unit_size = if unit == "°" {
+            size
+        } else {
+            UNIT_SHARE * size
+        };
+        job.append(&format!(" {unit}"), 0.0, format(unit_size, weak));
     }
     job
 }

@@ -89,13 +89,16 @@ impl AppState {
         let Some(step) = lab.lesson().and_then(|l| l.step(n)) else {
             return;
         };
-        let params = match attlab::lessons::step_params(lab, step) {
+        let mut params = match attlab::lessons::step_params(lab, step) {
             Ok(p) => p,
             Err(e) => {
                 self.warn("msg-lesson-bad-step", &[("why", e.into())]);
                 return;
             }
         };
+        // The teacher's lock wins over the step's values, and the page says so.
+        let held = self.hold_locked(&mut params);
+        self.say_locked(&held);
         self.lesson = Some(LessonState { step: n, answers });
         self.restart_with(params, step);
         if let Some(i) = step.sweep {
@@ -125,6 +128,15 @@ impl AppState {
                 .map(|i| i + 1)
                 .collect()
         };
+        // The 3D ghost shows the first filter the step discusses that has an attitude (it
+        // had stayed on the lab's first filter while a step was about another).
+        let estimates = self.sim.estimates();
+        if let Some(i) = (step.show.iter())
+            .filter_map(|id| ids.iter().position(|e| e == id))
+            .find(|i| estimates.get(*i).is_some_and(|e| e.quaternion().is_some()))
+        {
+            self.view.ghost_index = i;
+        }
         if let Some(speed) = step.speed {
             self.run.speed = speed;
         }
@@ -184,6 +196,10 @@ impl AppState {
             self.sim = simulation(self.sim.lab(), params, self.run.seed, tab, step.tiles);
         }
         self.show_step(step);
+        // As walked to: the step's sweep starts too (its text reports what it finds).
+        if let Some(i) = step.sweep {
+            self.apply_run(super::RunCommand::RunSweep(i));
+        }
     }
 
     /// Whether the run has reached the step's pause (shows the answer to its question).

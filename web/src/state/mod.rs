@@ -47,6 +47,9 @@ pub struct Message {
     pub text: String,
     /// Shown in red.
     pub is_error: bool,
+    /// How many times it was said in a row (the same preset pressed five times is one
+    /// line, "×5").
+    pub times: usize,
 }
 
 impl Message {
@@ -55,6 +58,7 @@ impl Message {
         Self {
             text: text.into(),
             is_error: true,
+            times: 1,
         }
     }
 
@@ -63,6 +67,7 @@ impl Message {
         Self {
             text: text.into(),
             is_error: false,
+            times: 1,
         }
     }
 }
@@ -260,7 +265,7 @@ impl AppState {
             Command::Lesson(c) => self.apply_lesson(c),
             Command::Share(c) => return self.apply_share(c),
             Command::Live(c) => self.apply_live(c),
-            Command::Notify(m) => self.messages.push(m),
+            Command::Notify(m) => self.notify(m),
             Command::Dismiss(i) => {
                 if i < self.messages.len() {
                     self.messages.remove(i);
@@ -270,12 +275,22 @@ impl AppState {
         None
     }
 
+    /// Shows `message`, or counts it once more when it repeats the last one.
+    fn notify(&mut self, message: Message) {
+        match self.messages.last_mut() {
+            Some(last) if last.text == message.text && last.is_error == message.is_error => {
+                last.times += message.times;
+            }
+            _ => self.messages.push(message),
+        }
+    }
+
     fn info(&mut self, text: impl Into<String>) {
-        self.messages.push(Message::info(text));
+        self.notify(Message::info(text));
     }
 
     fn error(&mut self, text: impl Into<String>) {
-        self.messages.push(Message::error(text));
+        self.notify(Message::error(text));
     }
 
     /// The page's message `id` in the reader's language.

@@ -148,6 +148,9 @@ impl AppState {
     pub(super) fn apply_run(&mut self, command: RunCommand) {
         match command {
             RunCommand::SelectLab(lab) => self.select_lab(lab),
+            // A control the teacher's link locks keeps its value, whoever asks (the
+            // screen reader's mirror, a preset).
+            RunCommand::SetParam(key, _) if self.view.locks(key) => self.say_locked(&[key]),
             RunCommand::SetParam(key, value) => {
                 if let Err(e) = self.sim.set_param(key, value) {
                     let lab = self.sim.lab();
@@ -163,7 +166,10 @@ impl AppState {
             RunCommand::ApplyPreset(i) => self.apply_preset(i),
             RunCommand::RestoreDefaults => {
                 let lab = self.sim.lab();
-                self.restart(lab, ParamValues::defaults(lab.params()));
+                let mut params = ParamValues::defaults(lab.params());
+                let held = self.hold_locked(&mut params);
+                self.say_locked(&held);
+                self.restart(lab, params);
             }
             RunCommand::SetPlaying(on) => self.run.playing = on,
             RunCommand::Reset => {
@@ -217,8 +223,12 @@ impl AppState {
     }
 
     /// A fresh run of `lab` with `params`, recording the tab shown and the lesson step's
-    /// tiles; the jobs under way and a replayed log end with the old run.
-    pub(super) fn restart(&mut self, lab: &'static dyn Lab, params: ParamValues) {
+    /// tiles; the jobs under way and a replayed log end with the old run. In the same lab,
+    /// the controls the link locks keep their values whatever `params` says.
+    pub(super) fn restart(&mut self, lab: &'static dyn Lab, mut params: ParamValues) {
+        if lab.id() == self.sim.lab().id() {
+            self.hold_locked(&mut params);
+        }
         if self.live.take().is_some() {
             crate::live_io::stop();
         }
@@ -229,14 +239,53 @@ impl AppState {
         self.io.replaying = None;
     }
 
+    /// Sets the locked controls of `params` back to the values they hold in the run, and
+    /// returns those `params` had asked to change.
+    pub(super) fn hold_locked(&self, params: &mut ParamValues) -> Vec<&'static str> {
+        let now = self.sim.params();
+        let specs = self.sim.lab().params();
+        let mut held = Vec::new();
+        for spec in specs.iter().filter(|s| self.view.locks(s.key)) {
+            let (asked, kept) = (params.get(spec.key), now.get(spec.key));
+            if asked != kept && params.set(specs, spec.key, kept).is_ok() {
+                held.push(spec.key);
+            }
+        }
+        held
+    }
+
+    /// Says that the controls `keys` are locked by the teacher's link and kept (nothing
+    /// for none).
+    pub(super) fn say_locked(&mut self, keys: &[&'static str]) {
+        if keys.is_empty() {
+            return;
+        }
+        let lab = self.sim.lab();
+        let lang = self.view.lang();
+        let names: Vec<String> = (keys.iter())
+            .filter_map(|k| lab.params().iter().find(|p| p.key == *k))
+            .map(|p| {
+                let id = attlab::i18n::param_label_id(lab.id(), p.key);
+                attlab::i18n::lab_text(lang, &id, p.label)
+            })
+            .collect();
+        self.say("msg-locked-kept", &[("names", names.join(", ").into())]);
+    }
+
     fn apply_preset(&mut self, i: usize) {
         let lab = self.sim.lab();
         let Some(preset) = lab.presets().get(i) else {
             return;
         };
-        for (k, v) in preset.values {
-            self.apply_run(RunCommand::SetParam(k, *v));
+        let (locked, free): (Vec<_>, Vec<_>) =
+            preset.values.iter().partition(|(k, _)| self.view.locks(k));
+        for (k, v) in free {
+            self.apply_run(RunCommand::SetParam(k, v));
         }
+        let held: Vec<&'static str> = (locked.iter())
+            .filter(|(k, v)| self.sim.params().get(k) != *v)
+            .map(|(k, _)| *k)
+            .collect();
         let waiting = self.sim.pending_reset();
         let id = attlab::i18n::preset_id(lab.id(), i);
         let name = attlab::i18n::lab_text(self.view.lang(), &id, preset.name);
@@ -246,6 +295,7 @@ impl AppState {
             "msg-preset-waits"
         };
         self.say(message, &[("name", name.into())]);
+        self.say_locked(&held);
     }
 
     fn start_sweep(&mut self, i: usize) {
@@ -330,6 +380,15 @@ impl AppState {
                 run.pause_at_s = None;
                 run.playing = false;
                 run.step_debt = 0.0;
+                // On a phone the answered step's why is in the controls' sheet, which the
+                // answer closed to show the run: open it now the run has shown it.
+                if self
+                    .lesson
+                    .as_ref()
+                    .is_some_and(|l| l.answer(l.step).is_some())
+                {
+                    self.view.sheet_open = true;
+                }
                 break;
             }
             self.sim.step();

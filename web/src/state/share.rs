@@ -94,7 +94,9 @@ impl AppState {
             self.share = Some(ShareOptions {
                 from_step: false,
                 presenter: self.view.presenter,
-                answers: true,
+                // A teacher's link goes to the class: its questions unanswered unless the
+                // teacher (or a student sending theirs back) ticks the box.
+                answers: false,
                 hide: keys(&self.view.hide),
                 lock: keys(&self.view.lock),
             });

@@ -142,6 +142,8 @@ fn the_share_link_round_trips_and_hides_and_locks_what_it_says() {
         ShareCommand::Lock(locked, true),
         ShareCommand::Presenter(true),
         ShareCommand::FromStep(true),
+        // A student sending theirs to the teacher ticks the answers (off by default).
+        ShareCommand::Answers(true),
     ] {
         state.apply(Command::Share(c));
     }

@@ -30,6 +30,7 @@ mod shader;
 mod side_panel;
 mod status;
 mod support;
+mod teacher;
 
 use support::{harness_for, harness_from_link, painted};
 

@@ -31,25 +31,51 @@ pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         );
         super::fit::header(ui, tr_with(app, "sweep-title", &[("title", arg(title))]))
             .default_open(true)
-            .show(ui, |ui| {
-                let running = app
-                    .run()
-                    .sweep
-                    .as_ref()
-                    .filter(|(j, _)| *j == i)
-                    .map(|(_, s)| s);
-                controls(ui, app, spec, i, running, commands);
-                let Some(s) = running else { return };
-                problems(ui, app, s);
-                match (spec.grid, s.scoring()) {
-                    (Some(_), Some(_)) => heat_map(ui, app, s, i),
-                    (None, Some(_)) => {
-                        objective_plot(ui, app, s, i);
-                        score_table(ui, app, s, i);
-                    }
-                    _ => rms_plot(ui, app, s, i),
-                }
-            });
+            .show(ui, |ui| body(ui, app, (spec, i), true, commands));
+    }
+}
+
+/// A lesson step's sweep `i`, in the step's card: the button or the progress, then its
+/// best values and its plot (the table is in the lab's sweeps below, on a wide screen). The
+/// result had been 1 600 px down the panel, and nowhere in presenter mode.
+pub fn in_lesson(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Command>) {
+    let Some(spec) = app.sim().lab().sweeps().get(i) else {
+        return;
+    };
+    let title = lab_word(
+        app,
+        &i18n::sweep_id(app.sim().lab().id(), i, "title"),
+        spec.title,
+    );
+    ui.label(RichText::new(tr_with(app, "sweep-title", &[("title", arg(title))])).strong());
+    body(ui, app, (spec, i), false, commands);
+}
+
+/// Sweep `i`'s controls and, once it runs, its problems and results; `table` adds the
+/// table of every value's scores.
+fn body(
+    ui: &mut Ui,
+    app: &AppState,
+    (spec, i): (&SweepSpec, usize),
+    table: bool,
+    commands: &mut Vec<Command>,
+) {
+    let running = (app.run().sweep.as_ref())
+        .filter(|(j, _)| *j == i)
+        .map(|(_, s)| s);
+    controls(ui, app, spec, i, running, commands);
+    let Some(s) = running else { return };
+    problems(ui, app, s);
+    match (spec.grid, s.scoring()) {
+        (Some(_), Some(_)) => heat_map(ui, app, s, i),
+        (None, Some(_)) => {
+            argmins(ui, app, s, i);
+            objective_plot(ui, app, s, i);
+            if table {
+                score_table(ui, app, s, i);
+            }
+        }
+        _ => rms_plot(ui, app, s, i),
     }
 }
 
@@ -230,10 +256,8 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         });
 }
 
-/// One row per value: the median scores (with their range over the seeds) and objectives;
-/// each objective's argmin in bold.
-fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
-    let colours = crate::render::palette::of(ui.visuals());
+/// Each objective's least value over the points so far, in bold.
+fn argmins(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
     let w = Words::of(app, s, i);
@@ -247,6 +271,15 @@ fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             ui.label(RichText::new(tr_with(app, "sweep-argmin", &args)).strong());
         }
     }
+}
+
+/// One row per value: the median scores (with their range over the seeds) and objectives;
+/// each objective's argmin in bold.
+fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+    let colours = crate::render::palette::of(ui.visuals());
+    let Some(scoring) = s.scoring() else { return };
+    let spec = s.spec();
+    let w = Words::of(app, s, i);
     let lang = app.view().lang();
     let cell = |x: f64| {
         if x.is_finite() {
