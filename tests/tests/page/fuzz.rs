@@ -142,9 +142,15 @@ fn still_draws(session: &Session<'_>) -> Result<(), String> {
     ))
 }
 
-/// The window sizes each lab is fuzzed at: the desktop's, and a phone's (its stacked
-/// layout, the bar and the sheet).
-const WINDOWS: [Option<(u32, u32)>; 2] = [None, Some((390, 844))];
+/// The windows each lab is fuzzed at: the desktop's (no size: the browser's window, a
+/// mouse), a phone's (its stacked layout, the bar and the sheet) and a tablet's, the two
+/// last with touch, where real touch gestures go through the browser's own input (see
+/// [`super::touch`]) after the synthetic events.
+const WINDOWS: [(Option<(u32, u32)>, bool); 3] = [
+    (None, false),
+    (Some((390, 844)), true),
+    (Some((1024, 768)), true),
+];
 
 /// One lab fuzzed from `seed`, half its events at each of [`WINDOWS`]: its problems, each
 /// with the command that replays it.
@@ -156,20 +162,21 @@ pub(crate) fn fuzz_lab(
     events: u32,
 ) -> Vec<String> {
     let mut problems = Vec::new();
-    for (k, window) in WINDOWS.iter().enumerate() {
+    for (k, (window, touch)) in WINDOWS.iter().enumerate() {
         let size = window.map_or("the default window".to_string(), |(w, h)| {
-            format!("{w}×{h}")
+            format!("{w}×{h}{}", if *touch { " (touch)" } else { "" })
         });
         let tag = format!(
             "fuzz {lab} at {size}, seed {seed} (replay: ATTLAB_FUZZ_SEED={seed} ATTLAB_FUZZ_LABS={lab} cargo xtask fuzz-page --minutes 0.1)"
         );
-        if let Err(e) = session.set_viewport(*window, window.is_some()) {
+        if let Err(e) = session.set_viewport(*window, *touch) {
             problems.push(format!("{tag}: cannot emulate the window: {e}"));
             continue;
         }
         let window_seed = seed.wrapping_add((k as u64) << 32);
         let per_window = events / WINDOWS.len() as u32;
-        let found = fuzz_window(session, base, lab, window_seed, per_window);
+        let gestures = window.filter(|_| *touch);
+        let found = fuzz_window(session, base, lab, (window_seed, per_window), gestures);
         problems.extend(found.into_iter().map(|p| format!("{tag}: {p}")));
     }
     if let Err(e) = session.set_viewport(None, false) {
@@ -178,13 +185,15 @@ pub(crate) fn fuzz_lab(
     problems
 }
 
-/// `events` random events on `lab` in the window as emulated.
+/// `events` random events on `lab` in the window as emulated, from `seed`; then, in a
+/// touch window of `gestures` size, real touch gestures, after which the page must still be
+/// on its own address (a swipe had taken the browser Back, out of the app).
 fn fuzz_window(
     session: &Session<'_>,
     base: &str,
     lab: &str,
-    seed: u64,
-    events: u32,
+    (seed, events): (u64, u32),
+    gestures: Option<(u32, u32)>,
 ) -> Vec<String> {
     let start = Instant::now();
     if let Err(e) = session.open(&format!("{base}#lab={lab}")) {
@@ -194,6 +203,10 @@ fn fuzz_window(
     let mut problems = status_problems(&status);
     let _ = session.console();
     problems.extend(send_events(session, seed, events));
+    if let Some(size) = gestures {
+        problems.extend(super::touch::gestures(session, seed, size));
+        problems.extend(super::touch::still_home(session, base));
+    }
     if let Err(e) = still_draws(session) {
         problems.push(e);
     }

@@ -26,6 +26,7 @@ mod live;
 mod replay;
 mod screens;
 mod soak;
+mod touch;
 mod workers;
 
 use checks::*;
