@@ -6,6 +6,9 @@
 use crate::model::{Lab, Lesson, LessonStep, ParamValues, PlotTab, SeriesGroup};
 use crate::sim::Simulation;
 
+#[cfg(feature = "study")]
+pub mod quotes;
+
 /// Sentences a step's text may have.
 pub const SENTENCES: std::ops::RangeInclusive<usize> = 2..=5;
 /// Steps a lesson may have.
@@ -188,6 +191,37 @@ mod tests {
         };
         let found = step_problems(lab, &bad_tab);
         assert_eq!(found.len(), 2, "{found:?}");
+    }
+
+    /// Every number each step's words quote holds for the run the step opens (a parameter
+    /// it sets, the paper's number, or a reading of the run to the digits written), its
+    /// Russian words write the same numbers, and no measured-looking number goes unquoted.
+    /// The labs run side by side.
+    #[cfg(all(feature = "study", not(target_arch = "wasm32")))]
+    #[test]
+    fn every_number_a_step_quotes_holds_for_the_run_it_opens() {
+        use rayon::prelude::*;
+        let steps: Vec<(&'static dyn Lab, usize, &LessonStep)> = crate::labs::all()
+            .iter()
+            .flat_map(|lab| {
+                let lesson = lab.lesson().expect("every lab has a lesson");
+                lesson
+                    .steps
+                    .iter()
+                    .enumerate()
+                    .map(move |(i, s)| (*lab, i + 1, s))
+            })
+            .collect();
+        let problems: Vec<String> = steps
+            .par_iter()
+            .flat_map_iter(|(lab, n, step)| {
+                let params = step_params(*lab, step).expect("a good step");
+                quotes::step_quote_problems(*lab, *n, step, &params)
+                    .into_iter()
+                    .map(move |p| format!("{} step {n}: {p}", lab.id()))
+            })
+            .collect();
+        assert!(problems.is_empty(), "{}", problems.join("\n"));
     }
 
     #[test]

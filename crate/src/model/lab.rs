@@ -225,6 +225,18 @@ pub trait Study: Sync {
     fn output_file(&self, _params: &ParamValues) -> Option<OutputFile> {
         None
     }
+    /// A lesson's reading of the lab's own ([`super::Reading::Lab`]) named `name`, on the
+    /// run of `params` at `seed`: `None` for a name the lab does not know (the `study`
+    /// feature: the page never reads them).
+    #[cfg(feature = "study")]
+    fn lesson_reading(
+        &self,
+        _name: &str,
+        _params: &ParamValues,
+        _seed: u64,
+    ) -> Option<Result<f64, String>> {
+        None
+    }
     /// The scenario of the lab's golden trace (tests/golden): assignments on top of its
     /// defaults that switch its sensor errors on where the defaults have none, so the noise
     /// generators are pinned too.

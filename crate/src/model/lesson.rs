@@ -50,6 +50,9 @@ pub struct LessonStep {
     pub terms: &'static [CycleTerm],
     /// The lab's sweep (by index in its study's sweeps) the step starts in the background.
     pub sweep: Option<usize>,
+    /// Every number the step's words quote, and where it comes from: a test reads each one
+    /// off the run the step opens (or the run it names), so the words hold for the screen.
+    pub quotes: &'static [Quote],
 }
 
 /// A term of the Kalman filter's cycle (see [`super::KalmanCycle`]).
@@ -91,6 +94,7 @@ impl LessonStep {
             question: None,
             terms: &[],
             sweep: None,
+            quotes: &[],
         }
     }
 }
@@ -107,6 +111,205 @@ pub struct Question {
     pub answer: usize,
     /// One or two sentences of why, shown after the run.
     pub why: &'static str,
+}
+
+/// A number a step's words quote ("0.19°", "2.36 s", "6·10⁻¹³ °"), as the English writes
+/// it (the Russian writes the same number with a decimal comma), and where it comes from.
+#[derive(Clone, Copy, Debug)]
+pub struct Quote {
+    /// The number with its unit, as the English text, question, answers or why write it.
+    pub shown: &'static str,
+    /// Where it comes from.
+    pub source: QuoteSource,
+}
+
+/// Where a quoted number comes from.
+#[derive(Clone, Copy, Debug)]
+pub enum QuoteSource {
+    /// The value of parameter `key` in the step's run (in the parameter's unit).
+    Param(&'static str),
+    /// The time the step pauses at (s).
+    Pause,
+    /// The paper's number, or a constant of the lab's model the words explain: not read off
+    /// the run.
+    Paper,
+    /// A number the question or a wrong answer poses ("About 0.1°: the bias is tiny"), or a
+    /// round figure the words compare with: not a claim about the run.
+    Posed,
+    /// Read off a run: the step's own, or it with `with` on top (a value the words compare
+    /// with), at seed 1, as the page opens it.
+    Run {
+        /// Parameter values on top of the step's.
+        with: &'static [(&'static str, f64)],
+        /// What is read.
+        reading: Reading,
+        /// How the reading must compare with the number.
+        holds: Holds,
+        /// What the reading is multiplied by to be in the words' unit (1 but where the words
+        /// give a degree reading in radians, π/180).
+        scale: f64,
+    },
+}
+
+/// How a reading must compare with the number the words write.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Holds {
+    /// It rounds to the digits written.
+    Digits,
+    /// Within a share of the number: for words that say "about" or "≈".
+    About(f64),
+    /// At most the number: "under 0.2°", "within 0.1°".
+    AtMost,
+}
+
+/// What a quote reads off a run, a series by its key over a span of time (s).
+#[derive(Clone, Copy, Debug)]
+pub enum Reading {
+    /// The value at time `t`.
+    At(SeriesKey, f64),
+    /// The last finite value at or before time `t` (where the plot's line ends: w near ∞).
+    LastFinite(SeriesKey, f64),
+    /// The root mean square over [from, to].
+    Rms(SeriesKey, f64, f64),
+    /// The standard deviation about the mean over [from, to].
+    Std(SeriesKey, f64, f64),
+    /// The mean over [from, to].
+    Mean(SeriesKey, f64, f64),
+    /// The least value over [from, to].
+    Min(SeriesKey, f64, f64),
+    /// The greatest value over [from, to].
+    Max(SeriesKey, f64, f64),
+    /// The largest |value − value at `from`| over [from, to], as a share of |value at
+    /// `from`| (a conserved quantity's drift).
+    Drift(SeriesKey, f64, f64),
+    /// The square root of the value at `t` (a standard deviation from a variance).
+    SqrtAt(SeriesKey, f64),
+    /// The largest |value| over [from, to].
+    MaxAbs(SeriesKey, f64, f64),
+    /// The largest |a − b| over [from, to].
+    MaxAbsDiff(SeriesKey, SeriesKey, f64, f64),
+    /// The root mean square of a − b over [from, to].
+    RmsDiff(SeriesKey, SeriesKey, f64, f64),
+    /// The first time in [from, to] at which |value| is at most `bound`.
+    FirstWithin(SeriesKey, f64, f64, f64),
+    /// The first time in [from, to] at which |a − b| is at most `bound`.
+    FirstClose(SeriesKey, SeriesKey, f64, f64, f64),
+    /// The first time in [from, to] at which the value exceeds `level`.
+    FirstAbove(SeriesKey, f64, f64, f64),
+    /// The largest of an estimator's per-axis RMS attitude errors over [from, to]: the σ of
+    /// the accuracy table.
+    WorstAxisRms(&'static str, f64, f64),
+    /// A reading of the lab's own, by a name its study knows (the updates' errors of paper
+    /// 5, a settling time): see `Study::lesson_reading`.
+    Lab(&'static str),
+}
+
+impl Quote {
+    /// A parameter's value.
+    pub const fn param(shown: &'static str, key: &'static str) -> Self {
+        Self {
+            shown,
+            source: QuoteSource::Param(key),
+        }
+    }
+
+    /// The paper's number or the model's constant.
+    pub const fn paper(shown: &'static str) -> Self {
+        Self {
+            shown,
+            source: QuoteSource::Paper,
+        }
+    }
+
+    /// A number a question or an answer poses.
+    pub const fn posed(shown: &'static str) -> Self {
+        Self {
+            shown,
+            source: QuoteSource::Posed,
+        }
+    }
+
+    /// The time the step pauses at.
+    pub const fn pause(shown: &'static str) -> Self {
+        Self {
+            shown,
+            source: QuoteSource::Pause,
+        }
+    }
+
+    /// Read off the step's run, to the digits shown.
+    pub const fn run(shown: &'static str, reading: Reading) -> Self {
+        Self::run_with(shown, &[], reading)
+    }
+
+    /// Read off the step's run with `with` on top, to the digits shown.
+    pub const fn run_with(
+        shown: &'static str,
+        with: &'static [(&'static str, f64)],
+        reading: Reading,
+    ) -> Self {
+        Self {
+            shown,
+            source: QuoteSource::Run {
+                with,
+                reading,
+                holds: Holds::Digits,
+                scale: 1.0,
+            },
+        }
+    }
+
+    /// The same, within a share `share` of the number: for words that say "about".
+    pub const fn about(self, share: f64) -> Self {
+        self.holding(Holds::About(share))
+    }
+
+    /// The same, at most the number: for words that say "under" or "within".
+    pub const fn at_most(self) -> Self {
+        self.holding(Holds::AtMost)
+    }
+
+    const fn holding(self, holds: Holds) -> Self {
+        match self.source {
+            QuoteSource::Run {
+                with,
+                reading,
+                scale,
+                ..
+            } => Self {
+                shown: self.shown,
+                source: QuoteSource::Run {
+                    with,
+                    reading,
+                    holds,
+                    scale,
+                },
+            },
+            _ => self,
+        }
+    }
+
+    /// The same, the reading multiplied by `scale` into the words' unit (a degree reading
+    /// written in radians: π/180).
+    pub const fn scaled(self, scale: f64) -> Self {
+        match self.source {
+            QuoteSource::Run {
+                with,
+                reading,
+                holds,
+                ..
+            } => Self {
+                shown: self.shown,
+                source: QuoteSource::Run {
+                    with,
+                    reading,
+                    holds,
+                    scale,
+                },
+            },
+            _ => self,
+        }
+    }
 }
 
 impl Lesson {

@@ -32,7 +32,7 @@ pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 pub use lab::{
     AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
 };
-pub use lesson::{CycleTerm, Lesson, LessonStep, Question};
+pub use lesson::{CycleTerm, Holds, Lesson, LessonStep, Question, Quote, QuoteSource, Reading};
 pub use log::{
     LOGGED_SAMPLE, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
     REPLAY_GAPS, RateLog,

@@ -20,6 +20,7 @@ mod decimals;
 mod fill;
 mod keyboard;
 mod legend;
+mod lesson_screen;
 mod lessons;
 mod live;
 mod narrow;

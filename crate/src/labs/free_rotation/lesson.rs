@@ -3,7 +3,10 @@
 //! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-free-rotation.ftl.
 
 use super::truth::{ENERGY_J, MOMENTUM_N_M_S};
-use crate::model::{Lesson, LessonStep, PlotTab, Question, SeriesGroup, SeriesKey, q};
+use crate::estimators::ATTITUDE_AXES;
+use crate::model::{
+    Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesGroup, SeriesKey, q,
+};
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Free rotation: Euler's equations, and what integrating a gyro can and cannot do",
@@ -15,6 +18,15 @@ pub(super) static LESSON: Lesson = Lesson {
             speed: Some(5.0),
             pause_at_s: Some(60.0),
             tiles: &[SeriesKey::truth(&q::RATE_X_DEG_S)],
+            quotes: &[
+                Quote::paper("(1, 2, 3) kg·m²"),
+                Quote::param("40 °/s", "spin_deg_s"),
+                Quote::run(
+                    "40 °/s",
+                    Reading::Mean(SeriesKey::truth(&q::RATE_X_DEG_S), 0.0, 60.0),
+                )
+                .about(0.1),
+            ],
             ..LessonStep::new(
                 "A stable spin",
                 "A rigid body with principal moments I = (1, 2, 3) kg·m² turns with no torque, by Euler's equations Jω̇ + ω × Jω = 0. \
@@ -39,6 +51,15 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "The intermediate axis is unstable (the Dzhanibekov effect): the body flips over and back, and each flip reverses ω_y. With no torque nothing is lost, so it never settles.",
             }),
+            quotes: &[
+                Quote::param("40 °/s", "spin_deg_s"),
+                Quote::param("2 kg·m²", "inertia_y_kg_m2"),
+                Quote::run(
+                    "−40 °/s",
+                    Reading::Min(SeriesKey::truth(&q::RATE_Y_DEG_S), 0.0, 60.0),
+                )
+                .about(0.1),
+            ],
             ..LessonStep::new(
                 "The intermediate axis flips",
                 "Now the same 40 °/s spin is about y, the intermediate moment I_y = 2 kg·m² (the lab's default). \
@@ -54,10 +75,18 @@ pub(super) static LESSON: Lesson = Lesson {
                 SeriesKey::truth(&ENERGY_J),
                 SeriesKey::truth(&MOMENTUM_N_M_S),
             ],
+            quotes: &[
+                Quote::run(
+                    "10⁻¹²",
+                    Reading::Drift(SeriesKey::truth(&ENERGY_J), 0.0, 60.0),
+                )
+                .about(0.9),
+                Quote::pause("60 s"),
+            ],
             ..LessonStep::new(
                 "What stays constant",
                 "While the rates swap between the axes, two quantities do not change: the kinetic energy T = ½ωᵀJω and the length of the angular momentum |Jω|. \
-                 The plot shows both flat; the lab's check finds a relative energy drift of about 1e-12 over 60 s. \
+                 The plot shows both flat; the lab's check finds a relative energy drift of about 10⁻¹² over 60 s. \
                  They are the first test of any simulation of a free rigid body.",
             )
         },
@@ -71,10 +100,25 @@ pub(super) static LESSON: Lesson = Lesson {
                 SeriesKey::new("quat-rk4", &q::ERR_DEG),
                 SeriesKey::new("uvz-rk4", &q::ERR_DEG),
             ],
+            quotes: &[
+                Quote::pause("60 s"),
+                Quote::run(
+                    "10⁻⁵ rad",
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                )
+                .about(0.15)
+                .scaled(std::f64::consts::PI / 180.0),
+                Quote::run(
+                    "0.0006°",
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                )
+                .about(0.15),
+                Quote::param("100 Hz", "rate_hz"),
+            ],
             ..LessonStep::new(
                 "Integrating a perfect gyro",
                 "Two estimators know only the initial attitude and the gyro: one integrates the quaternion, q̇ = ½ q⊗ω, the other paper 3's (u, v, z) by its eq. 21, switching to the chart s = 1/w whenever the body is upside down; both use Runge–Kutta 4. \
-                 With the gyro's noise and bias at zero both follow the truth: after 60 s the error is about 1e-5 rad (0.0006°). \
+                 With the gyro's noise and bias at zero both follow the truth: after 60 s the error is about 10⁻⁵ rad (0.0006°). \
                  It comes only from sampling ω at 100 Hz: halving the step quarters it. \
                  The two error curves coincide, the same kinematics in two parametrisations.",
             )
@@ -96,6 +140,23 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 2,
                 why: "A body at rest never turns its bias, so the error grows linearly, b·t: 6° about each axis after 60 s, and √3 · 0.1 °/s · 60 s ≈ 10.4° as a whole angle.",
             }),
+            quotes: &[
+                Quote::pause("60 s"),
+                Quote::posed("0.1°"),
+                Quote::posed("6°"),
+                Quote::posed("10°"),
+                Quote::run(
+                    "6°",
+                    Reading::MaxAbs(SeriesKey::new("quat-rk4", &q::ERR_X_DEG), 60.0, 60.0),
+                )
+                .about(0.05),
+                Quote::param("0.1 °/s", "gyro_bias_deg_s"),
+                Quote::run(
+                    "10.4°",
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                ),
+                Quote::param("0 °/s", "spin_deg_s"),
+            ],
             ..LessonStep::new(
                 "A constant bias",
                 "Now the body is at rest (initial spin 0 °/s) and the gyro has a constant bias of 0.1 °/s on each axis, with signs (+, −, +). \
@@ -120,6 +181,21 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "Turned around with the body, the bias partly cancels itself: the error is about 0.7° at 60 s, against the 10.4° of a body that never turns. It still grows, just not in a straight line.",
             }),
+            quotes: &[
+                Quote::pause("60 s"),
+                Quote::posed("10°"),
+                Quote::run(
+                    "0.7°",
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                )
+                .about(0.15),
+                Quote::run_with(
+                    "10.4°",
+                    &[("spin_deg_s", 0.0)],
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                ),
+                Quote::param("0.1 °/s", "gyro_bias_deg_s"),
+            ],
             ..LessonStep::new(
                 "Turning averages the bias",
                 "The same bias of 0.1 °/s, but the body tumbles about its intermediate axis again. \
@@ -135,6 +211,17 @@ pub(super) static LESSON: Lesson = Lesson {
             tiles: &[
                 SeriesKey::new("quat-rk4", &q::ERR_X_DEG),
                 SeriesKey::new("quat-rk4", &q::ERR_DEG),
+            ],
+            quotes: &[
+                Quote::param("0.2 °/s", "gyro_noise_deg_s"),
+                Quote::paper("0.01 s"),
+                Quote::run(
+                    "0.155°",
+                    Reading::SqrtAt(SeriesKey::variance("quat-rk4", &ATTITUDE_AXES[0]), 60.0),
+                )
+                .scaled(180.0 / std::f64::consts::PI),
+                Quote::paper("60 s"),
+                Quote::pause("240 s"),
             ],
             ..LessonStep::new(
                 "Noise: a random walk",
@@ -166,6 +253,17 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 2,
                 why: "The bias error is b·t whatever the step, and nothing inside the gyro tells a bias from a true rate. To stop the drift a filter needs an absolute reference, a measured direction such as the sun, the magnetic field or the stars (paper 2); paper 1 shows how far a gyro and a model alone can go.",
             }),
+            quotes: &[
+                Quote::pause("60 s"),
+                Quote::posed("1°"),
+                Quote::posed("3°"),
+                Quote::run(
+                    "10.4°",
+                    Reading::At(SeriesKey::new("quat-rk4", &q::ERR_DEG), 60.0),
+                ),
+                Quote::param("0.1 °/s", "gyro_bias_deg_s"),
+                Quote::param("1000 Hz", "rate_hz"),
+            ],
             ..LessonStep::new(
                 "A faster gyro does not help",
                 "Back to the body at rest with a bias of 0.1 °/s and no noise, but now the gyro is sampled ten times faster, at 1000 Hz. \

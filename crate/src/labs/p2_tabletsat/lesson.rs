@@ -2,9 +2,17 @@
 //! happens when one fails, and the bias and disturbance estimates. Steps are data (see
 //! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-p2.ftl.
 
-use super::sensors::GYRO_BIAS;
+use super::sensors::{GYRO_BIAS, STAR_AVAILABLE};
 use crate::estimators::mekf;
-use crate::model::{Lesson, LessonStep, PlotTab, Question, SeriesKey, q};
+use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
+
+/// The last minute of a 200-s step, where its σ is measured (the accuracy table's window).
+const LAST_MINUTE: (f64, f64) = (140.0, 200.0);
+
+/// The σ of the accuracy table for `source` over the last minute of a 200-s step.
+const fn sigma(source: &'static str) -> Reading {
+    Reading::WorstAxisRms(source, LAST_MINUTE.0, LAST_MINUTE.1)
+}
 
 /// The plot of every filter's attitude error (log scale).
 const EVERY_FILTER: Option<PlotTab> = Some(PlotTab::Figure(2));
@@ -18,6 +26,12 @@ pub(super) static LESSON: Lesson = Lesson {
             speed: Some(20.0),
             pause_at_s: Some(200.0),
             tiles: &[SeriesKey::new("mag-sun", &q::ERR_DEG)],
+            quotes: &[
+                Quote::param("250 nT", "mag_noise_nt"),
+                Quote::param("0.1°", "sun_noise_deg"),
+                Quote::paper("0.12°"),
+                Quote::param("2°", "filter_init_err_deg"),
+            ],
             ..LessonStep::new(
                 "Two directions: Mag+Sun",
                 "TabletSat holds the orbital frame with reaction wheels, and every filter of Table 2 runs at once on the same measurements. \
@@ -45,10 +59,20 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 0,
                 why: "The measured rate carries the attitude between the noisy vector readings and against the unmodelled torque. Table 3 gives 0.02° against 0.12°; here, with every sensor read at 1 Hz, the measured σ over the last minute is about 0.06° against 0.095°.",
             }),
+            quotes: &[
+                Quote::paper("0.02°"),
+                Quote::paper("0.12°"),
+                Quote::param("1 Hz", "gyro_rate_hz"),
+                Quote::param("1 Hz", "vector_rate_hz"),
+                Quote::run("0.06°", sigma("mag-sun-gyro")).about(0.1),
+                Quote::run("0.095°", sigma("mag-sun")).about(0.05),
+                Quote::param("0.005 °/s", "gyro_noise_deg_s"),
+                Quote::param("8·10⁻⁷ N·m", "dist_torque_n_m"),
+            ],
             ..LessonStep::new(
                 "Add the gyro",
                 "Set 5 adds the gyro, 0.005 °/s (Table 1): z = [b, s, ω], H = [W_b 0; W_s 0; 0 E]. \
-                 Without it the rate ω is only predicted by the dynamics (6), which do not know the unmodelled torque of 8e-7 N·m.",
+                 Without it the rate ω is only predicted by the dynamics (6), which do not know the unmodelled torque of 8·10⁻⁷ N·m.",
             )
         },
         LessonStep {
@@ -68,8 +92,13 @@ pub(super) static LESSON: Lesson = Lesson {
                     "The three star-tracker sets, about equally",
                 ],
                 answer: 2,
-                why: "The 0.001° star tracker dominates: Table 3 gives 5e-4–8e-4° for every star-tracker set, about 40 times below the 0.02° of Mag+Sun+Gyro. The paper concludes that next to a star tracker the magnetometer and the sun sensor add nothing, and the gyro mainly improves the rate.",
+                why: "The 0.001° star tracker dominates: Table 3 gives 5·10⁻⁴–8·10⁻⁴° for every star-tracker set, about 40 times below the 0.02° of Mag+Sun+Gyro. The paper concludes that next to a star tracker the magnetometer and the sun sensor add nothing, and the gyro mainly improves the rate.",
             }),
+            quotes: &[
+                Quote::param("0.001°", "star_noise_deg"),
+                Quote::paper("5·10⁻⁴–8·10⁻⁴°"),
+                Quote::paper("0.02°"),
+            ],
             ..LessonStep::new(
                 "Add the star tracker",
                 "The star tracker measures the attitude quaternion itself, to 0.001° (set 12: H = [E 0]). \
@@ -93,6 +122,29 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 2,
                 why: "Its magnetometer and sun sensor still give two directions, so it falls back to about the accuracy of Mag+Sun+Gyro, under 0.2°. ST+Gyro only integrates the gyro and drifts to about 8°; ST alone has nothing but the dynamics and stops, reported as diverged. Run on: when the stars return at about 1390 s, ST+Gyro snaps back to the star tracker's accuracy.",
             }),
+            quotes: &[
+                Quote::run(
+                    "0.2°",
+                    Reading::Max(
+                        SeriesKey::new("st-gyro-mag-sun", &q::ERR_DEG),
+                        100.0,
+                        1380.0,
+                    ),
+                )
+                .at_most(),
+                Quote::run(
+                    "8°",
+                    Reading::At(SeriesKey::new("st-gyro", &q::ERR_DEG), 1380.0),
+                )
+                .about(0.2),
+                Quote::run(
+                    "1390 s",
+                    Reading::FirstAbove(SeriesKey::sensors(&STAR_AVAILABLE), 0.5, 0.0, 3000.0),
+                )
+                .about(0.01),
+                Quote::param("90°", "star_sun_exclusion_deg"),
+                Quote::param("2°", "filter_init_err_deg"),
+            ],
             ..LessonStep::new(
                 "The star tracker goes blind",
                 "A star tracker fails when the sun is in its field of view. \
@@ -121,6 +173,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "With s ∥ b, H is degenerate and the rotation about that line is not observed; the paper notes that the filter then diverges. Here Mag+Sun wanders by degrees and says so; Mag+Sun+Gyro holds better, since its gyro carries that rotation for a while, and the star tracker does not care.",
             }),
+            quotes: &[Quote::param("0.5°", "sun_field_angle_deg")],
             ..LessonStep::new(
                 "Sun along the field",
                 "A thought experiment: the sun is put 0.5° from the direction of the magnetic field. \
@@ -148,6 +201,29 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 0,
                 why: "The star tracker pins the attitude, so a steady difference between the gyro and the attitude's change must be bias: the estimate comes within 0.005 °/s of it in about 2 s, well inside the paper's under a minute (Figs. 6–7).",
             }),
+            quotes: &[
+                Quote::run(
+                    "2 s",
+                    Reading::FirstClose(
+                        SeriesKey::new("st-gyro-gbias", &mekf::GBIAS_X_DEG_S),
+                        SeriesKey::sensors(&GYRO_BIAS[0]),
+                        0.005,
+                        0.0,
+                        60.0,
+                    ),
+                )
+                .about(0.5),
+                Quote::paper("0.005 °/s"),
+                Quote::param("0.05 °/s", "gyro_bias_deg_s"),
+                Quote::run(
+                    "0.03 °/s",
+                    Reading::At(SeriesKey::sensors(&GYRO_BIAS[0]), 0.0),
+                ),
+                Quote::run(
+                    "0.04 °/s",
+                    Reading::At(SeriesKey::sensors(&GYRO_BIAS[1]), 0.0),
+                ),
+            ],
             ..LessonStep::new(
                 "Estimating the gyro bias",
                 "Give the gyro a bias of 0.05 °/s: 0.03 °/s about x and 0.04 °/s about y. \
@@ -175,9 +251,16 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 0,
                 why: "Knowing d, the prediction no longer lags behind the real motion between measurements. The paper gives 0.12° → 0.03°; here the measured σ over the last minute goes from about 0.095° to 0.058°.",
             }),
+            quotes: &[
+                Quote::paper("0.12°"),
+                Quote::paper("0.03°"),
+                Quote::run("0.095°", sigma("mag-sun")).about(0.05),
+                Quote::run("0.058°", sigma("mag-sun-dist")).about(0.05),
+                Quote::param("8·10⁻⁷ N·m", "dist_torque_n_m"),
+            ],
             ..LessonStep::new(
                 "The disturbance filter",
-                "A constant torque of 8e-7 N·m, unknown to the filters' dynamics (6), acts on the satellite, as in the paper's tuning runs. \
+                "A constant torque of 8·10⁻⁷ N·m, unknown to the filters' dynamics (6), acts on the satellite, as in the paper's tuning runs. \
                  §3.2 runs a second filter beside the EKF that estimates the disturbance d in ω̇ = f(ω, Λ) + d from the innovations, with a fading memory α.",
             )
         },
@@ -192,10 +275,18 @@ pub(super) static LESSON: Lesson = Lesson {
                 SeriesKey::new("st-dist", &mekf::D_X_S2),
                 SeriesKey::new("mag-sun-dist", &mekf::D_X_S2),
             ],
+            quotes: &[
+                Quote::param("100 s", "dist_from_s"),
+                Quote::run(
+                    "10⁻⁶ s⁻²",
+                    Reading::MaxAbs(SeriesKey::truth(&super::truth::DIST_TRUE[0]), 600.0, 600.0),
+                )
+                .about(0.7),
+            ],
             ..LessonStep::new(
                 "A torque switched on",
                 "Now the same torque switches on at 100 s. \
-                 The disturbance estimates d̂ of Fig. 8 leave zero and climb towards J⁻¹M_d, of the order of 1e-6 s⁻². \
+                 The disturbance estimates d̂ of Fig. 8 leave zero and climb towards J⁻¹M_d, of the order of 10⁻⁶ s⁻². \
                  The fading memory inflates P_d by 1/α every second, so d̂ keeps listening: a smaller α forgets faster and follows a change sooner, but is noisier.",
             )
         },

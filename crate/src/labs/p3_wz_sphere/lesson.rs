@@ -3,7 +3,20 @@
 //! Russian is in crate/locales/ru/lesson-p3.ftl.
 
 use crate::estimators::wz_kalman;
-use crate::model::{Lesson, LessonStep, PlotTab, Question, SeriesKey, q};
+use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
+
+/// The (u, v, z) integration's and the truth's `quantity`.
+const fn uvz_and_truth(quantity: &'static crate::model::Quantity) -> (SeriesKey, SeriesKey) {
+    (
+        SeriesKey::new("uvz-rk4", quantity),
+        SeriesKey::truth(quantity),
+    )
+}
+
+/// A tilt error over [5 s, 100 s], after the blend's first time constants.
+const fn tilt_rms(source: &'static str) -> Reading {
+    Reading::Rms(SeriesKey::new(source, &q::TILT_ERR_DEG), 5.0, 100.0)
+}
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 3: the vertical as w = u + jv on the Riemann sphere, and the gyro blended with the accelerometers",
@@ -15,6 +28,24 @@ pub(super) static LESSON: Lesson = Lesson {
             speed: Some(10.0),
             pause_at_s: Some(100.0),
             tiles: &[SeriesKey::new("uvz-rk4", &q::ERR_DEG)],
+            quotes: &[
+                Quote::param("1 °/s", "yaw_rate_deg_s"),
+                Quote::param("30°", "pitch_amp_deg"),
+                Quote::param("25°", "roll_amp_deg"),
+                Quote::param("0.05 rad/s", "pitch_freq_rad_s"),
+                Quote::param("0.05 rad/s", "roll_freq_rad_s"),
+                Quote::param("0 °/s", "gyro_bias_deg_s"),
+                Quote::paper("15°"),
+                Quote::run("100°", Reading::At(SeriesKey::truth(&q::YAW_DEG), 100.0)).about(0.01),
+                Quote::run(
+                    "30°",
+                    Reading::MaxAbs(SeriesKey::truth(&q::PITCH_DEG), 0.0, 100.0),
+                ),
+                Quote::run(
+                    "25°",
+                    Reading::MaxAbs(SeriesKey::truth(&q::ROLL_DEG), 0.0, 100.0),
+                ),
+            ],
             ..LessonStep::new(
                 "Eq. 21 reproduces Fig. 5",
                 "The paper's motion (§5): yaw ψ = ω_ψ·t with ω_ψ = 1 °/s, pitch ϑ = A_ϑ·cos ω_ϑt and roll γ = A_γ·sin ω_γt with A_ϑ = 30°, A_γ = 25°, ω_ϑ = ω_γ = 0.05 rad/s. \
@@ -31,6 +62,14 @@ pub(super) static LESSON: Lesson = Lesson {
             speed: Some(10.0),
             pause_at_s: Some(62.8),
             tiles: &[SeriesKey::new("uvz-rk4", &q::ERR_DEG)],
+            quotes: &[
+                Quote::paper("90°"),
+                Quote::param("89°", "pitch_amp_deg"),
+                Quote::run("89°", Reading::At(SeriesKey::truth(&q::PITCH_DEG), 0.0)),
+                Quote::paper("0 s"),
+                Quote::run("−89°", Reading::At(SeriesKey::truth(&q::PITCH_DEG), 62.8)),
+                Quote::pause("62.8 s"),
+            ],
             ..LessonStep::new(
                 "Pitch near 90°: trouble for Euler, not for w",
                 "At ϑ = ±90° the Euler angles lock: yaw and roll turn about the same axis and eq. 25 becomes 0/0. \
@@ -61,11 +100,37 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "Turned 180° about ξ′, the body sees the same eq. 21 for s = 1/w, projected from the north pole (an addition to the paper). Over this 100-s tumble its attitude error differs from the quaternion's by 6·10⁻¹³ ° at most.",
             }),
+            quotes: &[
+                Quote::run(
+                    "3.7",
+                    Reading::LastFinite(SeriesKey::new("uvz-rk4", &q::V), 30.0),
+                ),
+                Quote::run("1.3", Reading::LastFinite(SeriesKey::truth(&q::V), 30.0)),
+                Quote::run(
+                    "3.7°",
+                    Reading::At(SeriesKey::new("uvz-rk4", &q::ERR_DEG), 30.0),
+                ),
+                Quote::param("6 °/s", "tumble_rate_deg_s"),
+                Quote::pause("30 s"),
+                Quote::paper("90°"),
+                Quote::paper("180°"),
+                Quote::run(
+                    "6·10⁻¹³ °",
+                    Reading::MaxAbsDiff(
+                        SeriesKey::new("uvz-rk4", &q::ERR_DEG),
+                        SeriesKey::new("quat-rk4", &q::ERR_DEG),
+                        0.0,
+                        100.0,
+                    ),
+                )
+                .about(0.5),
+                Quote::param("0.1 °/s", "gyro_bias_deg_s"),
+            ],
             ..LessonStep::new(
                 "Upside down: w = ∞",
                 "The projection from the south pole S in eq. 12 sends the vertical pointing to S, c′ = −1, to w = ∞; the terms uω_ξ + vω_η of ż grow without bound. \
                  Watch the sphere and the w plane as the roll passes 90° (|w| = 1) and 180°: the plane's caption names the chart each filter is in. \
-                 In Fig. 4 u and v run off the plot while |w| is large. \
+                 In Fig. 4 u and v run off the plot while |w| is large, and there a small attitude error is a large one in w: at the pause the estimate's v is 3.7 against the truth's 1.3, with its attitude only 3.7° off. \
                  The tiles read the true c′ and the attitude errors of (u, v, z) and of the quaternion, both carrying the gyro's 0.1 °/s bias.",
             )
         },
@@ -82,6 +147,27 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "Eq. 21 integrates the offset with the rates and nothing pulls it back: 0.1 °/s for 100 s is 10° per axis. The run ends 11.2° off, with v off by 0.104 and z by 5.65°.",
             }),
+            quotes: &[
+                Quote::param("0.1 °/s", "gyro_bias_deg_s"),
+                Quote::posed("1°"),
+                Quote::posed("5°"),
+                Quote::posed("20°"),
+                Quote::posed("45°"),
+                Quote::pause("100 s"),
+                Quote::paper("10°"),
+                Quote::run(
+                    "11.2°",
+                    Reading::At(SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG), 100.0),
+                ),
+                Quote::run("0.104", {
+                    let (est, truth) = uvz_and_truth(&q::V);
+                    Reading::MaxAbsDiff(est, truth, 100.0, 100.0)
+                }),
+                Quote::run("5.65°", {
+                    let (est, truth) = uvz_and_truth(&q::Z_DEG);
+                    Reading::MaxAbsDiff(est, truth, 100.0, 100.0)
+                }),
+            ],
             ..LessonStep::new(
                 "The gyro channel drifts",
                 "Now the gyro reads the true rate plus 0.1 °/s on every axis (the paper does not say which axes; the lab assumes all three, positive). \
@@ -98,6 +184,22 @@ pub(super) static LESSON: Lesson = Lesson {
             tiles: &[
                 SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG),
                 SeriesKey::new("accel", &q::TILT_ERR_DEG),
+            ],
+            quotes: &[
+                Quote::param("0.01 g", "accel_noise_g"),
+                Quote::run(
+                    "0.0053",
+                    Reading::RmsDiff(
+                        SeriesKey::new("accel", &q::V),
+                        SeriesKey::truth(&q::V),
+                        0.5,
+                        100.0,
+                    ),
+                ),
+                Quote::run(
+                    "0.81°",
+                    Reading::Rms(SeriesKey::new("accel", &q::TILT_ERR_DEG), 0.5, 100.0),
+                ),
             ],
             ..LessonStep::new(
                 "The accelerometers are noisy, not drifting",
@@ -128,6 +230,21 @@ pub(super) static LESSON: Lesson = Lesson {
                 answer: 1,
                 why: "HPF removes the gyro channel's slow drift and LPF the accelerometers' fast noise. After 5 s its tilt error is 0.13° rms against the accelerometers' 0.81°, and 0.065° at 100 s against the gyro's 11.2°.",
             }),
+            quotes: &[
+                Quote::param("1 s", "blend_time_const_s"),
+                Quote::paper("5 s"),
+                Quote::run("0.13°", tilt_rms("blend")),
+                Quote::run("0.81°", tilt_rms("accel")),
+                Quote::run(
+                    "0.065°",
+                    Reading::At(SeriesKey::new("blend", &q::TILT_ERR_DEG), 100.0),
+                ),
+                Quote::pause("100 s"),
+                Quote::run(
+                    "11.2°",
+                    Reading::At(SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG), 100.0),
+                ),
+            ],
             ..LessonStep::new(
                 "The blend of Fig. 9",
                 "Fig. 9 blends the channels: uᵏ = HPF(u) + LPF(uᵃ) and vᵏ = HPF(v) + LPF(vᵃ), with W_HPF = Ts/(Ts + 1), W_LPF = 1/(Ts + 1) and T = 1 s. \
@@ -145,6 +262,10 @@ pub(super) static LESSON: Lesson = Lesson {
                 SeriesKey::new("blend", &q::TILT_ERR_DEG),
                 SeriesKey::new("kf-uv", &q::TILT_ERR_DEG),
                 SeriesKey::variance("kf-uv", &wz_kalman::STATE_V),
+            ],
+            quotes: &[
+                Quote::run("0.11°", tilt_rms("kf-uv")),
+                Quote::run("0.13°", tilt_rms("blend")),
             ],
             ..LessonStep::new(
                 "A Kalman filter chooses its own gain",

@@ -5,6 +5,8 @@
 
 pub mod keys;
 mod lesson;
+#[cfg(feature = "study")]
+mod lesson_readings;
 mod mpu6050;
 mod mse_units;
 mod plant;
@@ -300,5 +302,15 @@ impl Study for QuadrotorRoll {
 
     fn sweeps(&self) -> &'static [SweepSpec] {
         tuning::SWEEPS
+    }
+
+    #[cfg(feature = "study")]
+    fn lesson_reading(
+        &self,
+        name: &str,
+        params: &ParamValues,
+        _seed: u64,
+    ) -> Option<Result<f64, String>> {
+        lesson_readings::reading(name, params)
     }
 }

@@ -76,7 +76,16 @@ pub fn score_gamma_with(gamma: f64, extra: &[&str]) -> Result<GammaScore, Analys
     let period = format!("step_period_s={STEP_AT_S}");
     let mut set = vec![step.as_str(), period.as_str()];
     set.extend_from_slice(extra);
-    let base = params_with(lab, &set)?;
+    score_params(params_with(lab, &set)?, gamma)
+}
+
+/// The scores of `gamma` on top of `base` (every other parameter as it says): medians over
+/// five seeds of an 8-s run, as the page's γ sweep scores each value.
+pub fn score_params(
+    base: crate::model::ParamValues,
+    gamma: f64,
+) -> Result<GammaScore, AnalysisError> {
+    let lab: &'static dyn Lab = &QuadrotorRoll;
     let spec = tuning::SWEEPS[0];
     let sweep = Sweep::new(
         lab,
@@ -122,6 +131,16 @@ fn grid_scores(extra: &[&str]) -> Result<Vec<GammaScore>, AnalysisError> {
 
 /// The grid's scores at each vibration level (g) of [`VIBRATION_FACTORS`].
 type ByVibration = [(f64, Vec<GammaScore>)];
+
+/// The γ of the paper's grid whose J(0.5, 0.5) is least, on top of `base`.
+pub fn best_of_grid(base: &crate::model::ParamValues) -> Result<f64, AnalysisError> {
+    let scores: Vec<GammaScore> = (GRID.iter())
+        .map(|g| score_params(base.clone(), g.0))
+        .collect::<Result<_, _>>()?;
+    let j = j_of(&scores, 0.5, 0.5);
+    let best = (0..j.len()).min_by(|a, b| j[*a].total_cmp(&j[*b]));
+    Ok(best.map_or(f64::NAN, |k| scores[k].gamma))
+}
 
 /// J(α, β) at each γ of the grid.
 fn j_of(scores: &[GammaScore], alpha: f64, beta: f64) -> Vec<f64> {

@@ -6,6 +6,8 @@
 //! side on the same measurements.
 
 mod lesson;
+#[cfg(feature = "study")]
+mod lesson_readings;
 mod page;
 mod params;
 mod reproduce;
@@ -122,5 +124,15 @@ impl Study for SensitivityLab {
 
     fn output_file(&self, p: &ParamValues) -> Option<OutputFile> {
         Some(page::output_file(p))
+    }
+
+    #[cfg(feature = "study")]
+    fn lesson_reading(
+        &self,
+        name: &str,
+        params: &ParamValues,
+        _seed: u64,
+    ) -> Option<Result<f64, String>> {
+        lesson_readings::reading(name, params)
     }
 }

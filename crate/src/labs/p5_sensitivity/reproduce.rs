@@ -49,8 +49,26 @@ fn run(assignments: &[&str], duration_s: f64, extra: &[SeriesKey]) -> Result<Tra
     run_trace(lab, assignments, 1, duration_s, &keys)
 }
 
+/// Every method's angles and flags, the true angles and the reference instants for
+/// `duration_s` of the run of `params` at seed 1, with the series `extra`.
+pub(super) fn run_params(
+    params: crate::model::ParamValues,
+    duration_s: f64,
+    extra: &[SeriesKey],
+) -> Result<Trace, AnalysisError> {
+    let mut keys: Vec<SeriesKey> = METHODS.iter().flat_map(|(id, ..)| series(id)).collect();
+    keys.extend(ANGLES.iter().map(|q| SeriesKey::truth(q)));
+    keys.push(SeriesKey::sensors(&REFERENCE));
+    keys.extend_from_slice(extra);
+    let lab: &'static dyn Lab = &SensitivityLab;
+    crate::analysis::scenario::run_trace_with(lab, params, 1, duration_s, &keys)
+}
+
 /// Largest angle error (rad) of `id` at each reference instant.
-fn errors_at_updates(trace: &Trace, id: &'static str) -> Result<Vec<f64>, AnalysisError> {
+pub(super) fn errors_at_updates(
+    trace: &Trace,
+    id: &'static str,
+) -> Result<Vec<f64>, AnalysisError> {
     let refs = trace.series(SeriesKey::sensors(&REFERENCE))?;
     let mut out = Vec::new();
     for (k, r) in refs.iter().enumerate() {
