@@ -387,6 +387,7 @@ body-no-gpu = 3D view needs the wgpu renderer
 
 ## Zoom and its way back
 plot-reset-hint = Show the whole run again (the wheel zooms about the pointer; drag to move; a double click does this too)
+plot-steady-note = scaled to the steady part: the first { $s } s run off it (the wheel or a pinch zooms out)
 view-reset-hint = Back to the first view (a double click does this too)
 
 ## The lesson card (web/src/panels/lesson.rs)

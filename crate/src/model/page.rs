@@ -63,6 +63,9 @@ pub struct Figure {
     pub series: &'static [SeriesKey],
     /// Draw log10 of the values (covariance elements spanning decades).
     pub log: bool,
+    /// The run's start is a transient that would set the scale (s): the value axis fits
+    /// what comes after it, the result the figure shows; zooming out shows the rest.
+    pub steady_after_s: Option<f64>,
 }
 
 impl Figure {
@@ -72,12 +75,22 @@ impl Figure {
             title,
             series,
             log: false,
+            steady_after_s: None,
         }
     }
 
     /// The same on a log10 axis.
     pub const fn log(self) -> Self {
         Self { log: true, ..self }
+    }
+
+    /// The same, its value axis fitted to what comes after the first `t_s` seconds (a
+    /// filter that starts degrees off and settles at its first measurement).
+    pub const fn steady_after(self, t_s: f64) -> Self {
+        Self {
+            steady_after_s: Some(t_s),
+            ..self
+        }
     }
 }
 

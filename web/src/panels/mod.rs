@@ -126,6 +126,7 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         reset: tr(app, "plot-reset-hint"),
         outages: outage_words,
         lang: app.view().lang(),
+        steady_note: Box::new(move |s| tr_with(app, "plot-steady-note", &[("s", num_arg(app, s))])),
     }
 }
 

@@ -71,6 +71,37 @@ pub fn thin_to_pixels(points: Vec<[f64; 2]>, px: [f64; 2]) -> Vec<[f64; 2]> {
     kept
 }
 
+/// The greatest value of `points` in each column `px` wide (at the column's greatest
+/// point), in order; a NaN point is kept as the break it is. A line that rises and falls
+/// within a pixel (a covariance between updates) becomes the line over its peaks.
+pub fn upper_envelope(points: &[[f64; 2]], px: f64) -> Vec<[f64; 2]> {
+    if !(px.is_finite() && px > 0.0) {
+        return points.to_vec();
+    }
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(points.len());
+    let mut column: Option<(f64, [f64; 2])> = None;
+    for &p in points {
+        if !p[1].is_finite() || !p[0].is_finite() {
+            out.extend(column.take().map(|(_, top)| top));
+            out.push(p);
+            continue;
+        }
+        let k = (p[0] / px).floor();
+        match &mut column {
+            Some((c, top)) if *c == k => {
+                if p[1] > top[1] {
+                    *top = p;
+                }
+            }
+            _ => {
+                out.extend(column.replace((k, p)).map(|(_, top)| top));
+            }
+        }
+    }
+    out.extend(column.map(|(_, top)| top));
+    out
+}
+
 fn inside(p: [f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
     (0..2).all(|k| p[k] >= lo[k] && p[k] <= hi[k])
 }
@@ -153,6 +184,26 @@ mod tests {
         // No usable pixel size: left alone.
         let line = vec![[0.0, 0.0], [0.0, 0.0], [0.0, 0.0]];
         assert_eq!(thin_to_pixels(line.clone(), [0.0, 1.0]), line);
+    }
+
+    #[test]
+    fn the_upper_envelope_keeps_each_columns_peak_and_the_breaks() {
+        // Columns 1 wide: a sawtooth rising within each and dropping at its edge.
+        let saw = [
+            [0.1, 1.0],
+            [0.5, 2.0],
+            [0.9, 3.0],
+            [1.1, 1.0],
+            [1.9, 3.5],
+            [f64::NAN, 0.0],
+            [2.2, 1.0],
+        ];
+        let top = upper_envelope(&saw, 1.0);
+        assert_eq!(top.len(), 4, "{top:?}");
+        assert_eq!((top[0], top[1]), ([0.9, 3.0], [1.9, 3.5]));
+        assert!(top[2][0].is_nan());
+        assert_eq!(top[3], [2.2, 1.0]);
+        assert_eq!(upper_envelope(&saw, 0.0).len(), saw.len());
     }
 
     #[test]

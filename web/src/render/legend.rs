@@ -82,8 +82,9 @@ pub fn rows(legends: &[LegendParts]) -> Vec<Row> {
 /// outage's shading (its position among the outages) with its words.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Line {
-    /// A heading or a series' entry; an entry's series (index into the recorder) and colour.
-    Series(Row, Option<(usize, Color32)>),
+    /// A heading or a series' entry; an entry's series (index into the recorder), colour
+    /// and line pattern.
+    Series(Row, Option<(usize, Color32, LineStyle)>),
     /// The ±3σ bands, with their words.
     Bands(String),
     /// Outage `k` and its words.
@@ -107,7 +108,7 @@ impl Line {
 /// shaded.
 pub fn lines(
     rec: &Recorder,
-    shown: &[(usize, Color32)],
+    (shown, patterns): (&[(usize, Color32)], &[LineStyle]),
     (log, state): (bool, &PlotState),
     outages: &[Outage],
     words: &PlotWords<'_>,
@@ -130,8 +131,9 @@ pub fn lines(
         .map(|mut row| {
             let series = match &mut row {
                 Row::Entry { index, text, .. } => {
-                    let series = shown.get(*index).copied();
-                    if series.is_some_and(|(i, _)| no_data.contains(&i)) {
+                    let series = (shown.get(*index).copied())
+                        .map(|(i, colour)| (i, colour, patterns[*index]));
+                    if series.is_some_and(|(i, ..)| no_data.contains(&i)) {
                         let none = if log {
                             &words.no_positive
                         } else {
@@ -238,7 +240,7 @@ pub fn place(ui: &Ui, full: egui::Rect, lines: &[Line]) -> (egui::Rect, egui::Re
 
 /// The legend as [`place`] laid it out: its [`lines`], each series in its colour and line
 /// pattern.
-pub fn show(ui: &mut Ui, rec: &Recorder, lines: &[Line], placed: Placed) {
+pub fn show(ui: &mut Ui, lines: &[Line], placed: Placed) {
     let Placed { rows, scrolls } = placed;
     let gap = ui.spacing().item_spacing.y;
     let colours = palette::of(ui.visuals());
@@ -257,10 +259,10 @@ pub fn show(ui: &mut Ui, rec: &Recorder, lines: &[Line], placed: Placed) {
                     SWATCH_PT,
                 );
                 match line {
-                    Line::Series(_, Some((i, color))) => {
+                    Line::Series(_, Some((_, color, pattern))) => {
                         let y = mark.center().y;
                         let stroke = egui::Stroke::new(2.5, *color);
-                        let pattern = palette::pattern(rec.specs()[*i].source);
+                        let pattern = *pattern;
                         let ends = vec![egui::pos2(mark.min.x, y), egui::pos2(mark.max.x, y)];
                         palette::styled_polyline(ui.painter(), ends, stroke, pattern);
                     }

@@ -3,6 +3,7 @@
 
 pub mod body3d;
 pub mod clip;
+pub mod dense;
 pub mod fonts;
 pub mod legend;
 pub mod mesh;
@@ -11,8 +12,10 @@ pub mod outages;
 pub mod palette;
 pub mod plots;
 pub mod riemann_sphere;
+mod series_lines;
 pub mod single_axis;
 pub mod ticks;
+pub mod y_range;
 
 /// `text` laid out on one line, cut with "…" to `max_width` where it is wider (a view's
 /// title, an outage's label): the one way the renderer fits a label into its room.

@@ -191,6 +191,36 @@ pub fn pattern(source_index: usize) -> LineStyle {
     }
 }
 
+/// The line pattern of each of a plot's `shown` series (index into `specs`, colour): its
+/// source's, except where one source draws several series in one colour (a group tab's x,
+/// y and z of the truth, which had been three identical white lines), which then take the
+/// patterns in turn by their order, so the legend tells them apart; and an estimator's
+/// series that a figure colours by position (its x, y, z) are solid, their colours telling
+/// them apart (dashed, paper 2's noisy errors at the scale of their steady part had drawn a
+/// dash every few pixels, 221 000 triangles a frame).
+pub fn patterns(
+    palette: &Palette,
+    specs: &[attlab::model::SeriesSpec],
+    shown: &[(usize, Color32)],
+) -> Vec<LineStyle> {
+    let source = |k: usize| specs[shown[k].0].source;
+    let same = |a: usize, b: usize| source(a) == source(b) && shown[a].1 == shown[b].1;
+    (0..shown.len())
+        .map(|k| {
+            if source(k) > 0 && shown[k].1 != palette.source(source(k)) {
+                return LineStyle::Solid;
+            }
+            let alike = (0..shown.len()).filter(|j| same(*j, k)).count();
+            if alike < 2 {
+                return pattern(source(k));
+            }
+            let rank = (0..k).filter(|j| same(*j, k)).count();
+            // The patterns of sources 1, 2, 3, 4: solid, long dashes, dots, short dashes.
+            pattern(1 + rank % PATTERNS)
+        })
+        .collect()
+}
+
 /// Draws `points` as one polyline in `style` with `stroke` (the views' trails use the
 /// plots' patterns).
 pub fn styled_polyline(
@@ -224,16 +254,27 @@ pub fn styled_polyline(
 
 /// Colours of a figure's series: an estimator's series in its source colour when it is that
 /// source's only series in the figure; several series of one estimator (its x, y, z) in the
-/// palette by position, so they stay apart; the truth's first series in the truth's colour;
-/// a second truth series and sensor readings in muted colours no estimator uses.
+/// palette by position, skipping the colours the figure's other series take (free
+/// rotation's "error about y" had taken the blue of the (u, v, z) integration's whole angle
+/// beside it) and the dark theme's second blue until last; the truth's first series in the
+/// truth's colour; a second truth series and sensor readings in muted colours no estimator
+/// uses.
 pub fn figure_colors(palette: &Palette, specs: &[&attlab::model::SeriesSpec]) -> Vec<Color32> {
     let count = |src: usize| specs.iter().filter(|s| s.source == src).count();
+    let taken: Vec<Color32> = (specs.iter())
+        .filter(|s| s.source > 0 && !s.name.starts_with("truth.") && count(s.source) == 1)
+        .map(|s| palette.source(s.source))
+        .collect();
+    let mut by_position = BY_POSITION
+        .iter()
+        .map(|k| palette.sources[*k])
+        .filter(|c| !taken.contains(c))
+        .cycle();
     let mut other = 0;
     let mut truth_seen = false;
     specs
         .iter()
-        .enumerate()
-        .map(|(position, s)| {
+        .map(|s| {
             let is_truth = s.name.starts_with("truth.");
             if is_truth && !truth_seen {
                 truth_seen = true;
@@ -243,13 +284,18 @@ pub fn figure_colors(palette: &Palette, specs: &[&attlab::model::SeriesSpec]) ->
                 if count(s.source) == 1 {
                     return palette.source(s.source);
                 }
-                return palette.source(position + 1);
+                return by_position.next().unwrap_or(palette.source(s.source));
             }
             other += 1;
             palette.others[(other - 1) % palette.others.len()]
         })
         .collect()
 }
+
+/// The estimators' colours (indices into a palette's sources) in the order a figure gives
+/// one filter's several series: the dark theme's two blues (2 and 5) and its orange and
+/// vermillion (1 and 6) as far apart as the seven allow.
+const BY_POSITION: [usize; 7] = [1, 2, 3, 4, 7, 6, 5];
 
 #[cfg(test)]
 #[path = "palette_tests.rs"]

@@ -217,4 +217,52 @@ fn a_figure_keeps_each_estimators_colour_and_gives_the_rest_others() {
     let refs: Vec<&SeriesSpec> = axes.iter().collect();
     let c = figure_colors(&DARK, &refs);
     assert!(c[0] != c[1] && c[1] != c[2] && c[0] != c[2], "{c:?}");
+    // Free rotation's errors: one filter's x, y, z and whole angle beside another's whole
+    // angle: the five in five colours, in both themes.
+    let errors = [
+        spec(SeriesKey::new("quat-rk4", &q::ERR_X_DEG), 1),
+        spec(SeriesKey::new("quat-rk4", &q::ERR_Y_DEG), 1),
+        spec(SeriesKey::new("quat-rk4", &q::ERR_Z_DEG), 1),
+        spec(SeriesKey::new("uvz-rk4", &q::ERR_DEG), 2),
+        spec(SeriesKey::new("quat-rk4", &q::ERR_DEG), 1),
+    ];
+    let refs: Vec<&SeriesSpec> = errors.iter().collect();
+    for palette in [&DARK, &LIGHT] {
+        let c = figure_colors(palette, &refs);
+        assert_eq!(c[3], palette.source(2), "the other filter keeps its colour");
+        for a in 0..c.len() {
+            for b in a + 1..c.len() {
+                assert_ne!(c[a], c[b], "series {a} and {b}: {c:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn one_sources_series_in_one_colour_take_the_patterns_in_turn() {
+    use attlab::model::{SeriesGroup, SeriesKey, SeriesSpec, q};
+    let spec =
+        |key: SeriesKey, source: usize| SeriesSpec::of(key, SeriesGroup::Rate).from_source(source);
+    let specs = [
+        spec(SeriesKey::truth(&q::RATE_X_DEG_S), 0),
+        spec(SeriesKey::truth(&q::RATE_Y_DEG_S), 0),
+        spec(SeriesKey::truth(&q::RATE_Z_DEG_S), 0),
+        spec(SeriesKey::new("kf", &q::RATE_X_DEG_S), 1),
+    ];
+    let white = DARK.source(0);
+    let shown = [(0, white), (1, white), (2, white), (3, DARK.source(1))];
+    let p = patterns(&DARK, &specs, &shown);
+    assert!(p[0] != p[1] && p[1] != p[2] && p[0] != p[2], "{p:?}");
+    assert_eq!(p[3], pattern(1), "a source's only series keeps its pattern");
+    // In colours of their own (a figure), the truth's series keep the truth's pattern.
+    let coloured = [(0, white), (1, DARK.others[0]), (2, DARK.others[1])];
+    assert!(
+        patterns(&DARK, &specs[..3], &coloured)
+            .iter()
+            .all(|s| *s == pattern(0))
+    );
+    // A filter's series coloured by position are solid.
+    let by_position = [(3, DARK.source(2)), (3, DARK.source(3))];
+    let solid = patterns(&DARK, &specs, &by_position);
+    assert!(solid.iter().all(|s| *s == LineStyle::Solid), "{solid:?}");
 }

@@ -8,7 +8,7 @@ use attlab::i18n::LegendParts;
 use attlab::model::{Figure, Lab, Outage, SeriesGroup, SeriesSpec};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
-use egui_plot::{Line, LineStyle, Plot};
+use egui_plot::Plot;
 
 pub use attlab::model::PlotTab as Tab;
 
@@ -38,7 +38,9 @@ impl PlotState {
 }
 
 /// Points per line on screen.
-const MAX_POINTS: usize = 1500;
+pub(super) const MAX_POINTS: usize = 1500;
+
+pub use super::series_lines::pieces;
 
 /// The group tabs a lab offers: every group that has series (recorded or not).
 pub fn groups(available: &[SeriesSpec]) -> Vec<SeriesGroup> {
@@ -77,6 +79,8 @@ pub struct PlotWords<'a> {
     pub reset: String,
     /// The reader's language, for the numbers on the axes.
     pub lang: attlab::i18n::Lang,
+    /// What a figure fitted to its steady part says of the seconds it leaves off the scale.
+    pub steady_note: Box<dyn Fn(f64) -> String + 'a>,
 }
 
 /// Draws the selected plot (over the whole run), the lab's outages shaded. Returns nothing:
@@ -96,32 +100,26 @@ pub fn show(
     let (tab, log, shown) = selection(rec, figures, state, hidden, colours);
     let full = ui.available_rect_before_wrap();
     // The legend never covers data: beside a wide plot, below a narrow one.
-    let (points, no_data) = points(rec, &shown, log);
-    let lines = super::legend::lines(rec, &shown, (log, state), outages, words, &no_data);
+    // A point (a bucket's least and greatest value) every two pixels of the area's width.
+    let pixels = (full.width() * ui.ctx().pixels_per_point()) as usize;
+    let (points, no_data) = points_up_to(rec, &shown, log, (pixels / 2).clamp(200, MAX_POINTS));
+    let patterns = palette::patterns(colours, rec.specs(), &shown);
+    let series = (&shown[..], &patterns[..]);
+    let lines = super::legend::lines(rec, series, (log, state), outages, words, &no_data);
     let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
     // brings back the whole run once the reader has zoomed or dragged.
     let reset_id = egui::Id::unique(("series_plot_reset", format!("{tab:?}")));
-    let plot = Plot::new(("series_plot", format!("{tab:?}")))
-        .x_axis_label(words.time_axis.clone())
-        .y_axis_label(fitting_title(
-            ui,
-            y_title(rec, &shown, log, words),
-            plot_rect.height(),
-        ))
-        .x_grid_spacer(super::ticks::x_marks)
-        .y_grid_spacer(super::ticks::y_marks)
-        .allow_scroll(false);
-    let mut plot = super::ticks::in_language(plot, words.lang);
-    if ui
-        .data_mut(|d| d.remove_temp::<bool>(reset_id))
-        .unwrap_or(false)
-    {
-        plot = plot.reset();
-    }
-    if let Some((lo, hi)) = flat_range(&points, log) {
-        plot = plot.include_y(lo).include_y(hi);
-    }
+    let plot = new_plot(
+        ui,
+        rec,
+        (tab, log, &shown),
+        plot_rect.height(),
+        words,
+        reset_id,
+    );
+    let steady = steady_fit(rec, figures, (tab, log, &shown), &points, state.show_bands);
+    let plot = fitted(plot, steady, &points, log);
     let bands = if state.show_outages {
         outages::bands(rec, outages)
     } else {
@@ -132,30 +130,134 @@ pub fn show(
             let shown_plot = plot.show(ui, |plot| {
                 wheel_zoom(plot);
                 outages::shade(plot, &bands, colours);
-                for ((i, color), pts) in shown.iter().zip(points) {
-                    let style = LineLook {
-                        color: *color,
-                        width: line_width,
-                        pattern: palette::pattern(rec.specs()[*i].source),
-                        log,
-                        bands: state.show_bands,
-                    };
-                    draw_series(plot, rec, (*i, pts), style, &words.legend);
-                }
-                !plot.auto_bounds().all()
+                let look = (line_width, log, state.show_bands);
+                let dense = draw_lines(plot, rec, (&shown, points, &patterns), look, words);
+                // Moved from where the figure opens (the steady fit keeps its y fixed).
+                let auto = plot.auto_bounds();
+                let moved = if steady.is_some() {
+                    !auto.x
+                } else {
+                    !auto.all()
+                };
+                (moved, dense)
             });
+            let (moved, dense) = shown_plot.inner;
+            for (pieces, look) in &dense {
+                super::dense::paint(ui.painter(), &shown_plot.transform, pieces, *look);
+            }
+
             outages::label(ui, &shown_plot.transform, &bands, &words.outages);
-            (shown_plot.response.rect, shown_plot.inner)
+            if let Some((t0, ..)) = steady.filter(|_| !moved) {
+                super::y_range::note(ui, shown_plot.response.rect, &(words.steady_note)(t0));
+            }
+            (shown_plot.response.rect, moved)
         })
         .inner;
     if moved {
         reset_button(ui, rect, reset_id, &words.reset);
     }
     ui.scope_builder(egui::UiBuilder::new().max_rect(legend_rect), |ui| {
-        super::legend::show(ui, rec, &lines, placed);
+        super::legend::show(ui, &lines, placed);
     });
     ui.advance_cursor_after_rect(full);
     rect
+}
+
+/// The plot of `tab` with its axis titles (the y title fitted to a plot `height` points
+/// tall), its ticks in the reader's language, and back at the whole run when its ⟲ was
+/// pressed in the last frame.
+fn new_plot<'a>(
+    ui: &Ui,
+    rec: &Recorder,
+    (tab, log, shown): (Tab, bool, &[(usize, Color32)]),
+    height: f32,
+    words: &PlotWords<'_>,
+    reset_id: egui::Id,
+) -> Plot<'a> {
+    let plot = Plot::new(("series_plot", format!("{tab:?}")))
+        .x_axis_label(words.time_axis.clone())
+        .y_axis_label(fitting_title(ui, y_title(rec, shown, log, words), height))
+        .x_grid_spacer(super::ticks::x_marks)
+        .y_grid_spacer(super::ticks::y_marks)
+        .allow_scroll(false);
+    let plot = super::ticks::in_language(plot, words.lang);
+    let reset = ui
+        .data_mut(|d| d.remove_temp::<bool>(reset_id))
+        .unwrap_or(false);
+    if reset { plot.reset() } else { plot }
+}
+
+/// `plot` with its value axis fitted to the `steady` part, or, where every value drawn is
+/// the same to rounding, to a readable range about it.
+fn fitted<'a>(
+    plot: Plot<'a>,
+    steady: Option<(f64, (f64, f64), f64)>,
+    points: &[Vec<[f64; 2]>],
+    log: bool,
+) -> Plot<'a> {
+    if let Some((_, (lo, hi), start)) = steady {
+        let plot = plot.auto_bounds([true, false]).default_y_bounds(lo, hi);
+        return if start.is_finite() {
+            plot.include_x(start)
+        } else {
+            plot
+        };
+    }
+    match super::y_range::flat(points, log) {
+        Some((lo, hi)) => plot.include_y(lo).include_y(hi),
+        None => plot,
+    }
+}
+
+/// A figure that starts with a transient fits its value axis to what follows it: the time
+/// it leaves off the scale, the range and where the run starts (so the x axis still shows
+/// the transient's seconds, its lines cut to the scale).
+fn steady_fit(
+    rec: &Recorder,
+    figures: &[Figure],
+    (tab, log, shown): (Tab, bool, &[(usize, Color32)]),
+    points: &[Vec<[f64; 2]>],
+    bands: bool,
+) -> Option<(f64, (f64, f64), f64)> {
+    let Tab::Figure(f) = tab else {
+        return None;
+    };
+    let t0 = figures[f].steady_after_s?;
+    let range = super::y_range::steady(rec, shown, log, t0, bands)?;
+    let start = (points.iter())
+        .filter_map(|p| p.first())
+        .map(|p| p[0])
+        .fold(f64::INFINITY, f64::min);
+    Some((t0, range, start))
+}
+
+/// Every shown series' line and band in the plot; returns the dense ones, for
+/// [`super::dense`] to paint over it, with their colours and width.
+#[allow(clippy::type_complexity)]
+fn draw_lines(
+    plot: &mut egui_plot::PlotUi<'_>,
+    rec: &Recorder,
+    (shown, points, patterns): (
+        &[(usize, Color32)],
+        Vec<Vec<[f64; 2]>>,
+        &[egui_plot::LineStyle],
+    ),
+    (width, log, bands): (f32, bool, bool),
+    words: &PlotWords<'_>,
+) -> Vec<(Vec<Vec<[f64; 2]>>, (Color32, f32))> {
+    let mut dense = Vec::new();
+    for (((i, color), pts), pattern) in shown.iter().zip(points).zip(patterns) {
+        let style = super::series_lines::LineLook {
+            color: *color,
+            width,
+            pattern: *pattern,
+            log,
+            bands,
+        };
+        let drawn = super::series_lines::draw_series(plot, rec, (*i, pts), style, &words.legend);
+        dense.extend(drawn.map(|pieces| (pieces, (*color, width))));
+    }
+    dense
 }
 
 /// What the selected tab draws: the tab (a figure the lab lacks falls back to the errors),
@@ -193,10 +295,22 @@ pub fn points(
     shown: &[(usize, Color32)],
     log: bool,
 ) -> (Vec<Vec<[f64; 2]>>, Vec<usize>) {
+    points_up_to(rec, shown, log, MAX_POINTS)
+}
+
+/// The same with at most about `max_points` points a series: a noisy line is drawn as a
+/// stroke from each bucket's least to its greatest value, and at two points a pixel paper
+/// 2's errors at the scale of their steady part had shaded their plot three times over.
+fn points_up_to(
+    rec: &Recorder,
+    shown: &[(usize, Color32)],
+    log: bool,
+    max_points: usize,
+) -> (Vec<Vec<[f64; 2]>>, Vec<usize>) {
     let drawable = |y: f64| y.is_finite() && (!log || y > 0.0);
     let points: Vec<Vec<[f64; 2]>> = shown
         .iter()
-        .map(|(i, _)| rec.plot_points(*i, MAX_POINTS))
+        .map(|(i, _)| rec.plot_points(*i, max_points))
         .collect();
     let no_data = shown
         .iter()
@@ -205,31 +319,6 @@ pub fn points(
         .map(|((i, _), _)| *i)
         .collect();
     (points, no_data)
-}
-
-/// A y range to show when every value drawn is the same to rounding (a lesson step paused
-/// at t = 0; log10 of two equal errors): egui_plot fits the data's own range, 10⁻¹⁶ wide,
-/// and its marks read "0.301029995663981". The value ± a tenth of it, at least ± 1, as
-/// egui_plot does for an exactly flat line. `None` when the values spread (or there are
-/// none).
-fn flat_range(points: &[Vec<[f64; 2]>], log: bool) -> Option<(f64, f64)> {
-    let shown = |y: f64| -> f64 { if log { y.log10() } else { y } };
-    let (lo, hi) = points
-        .iter()
-        .flatten()
-        .map(|p| shown(p[1]))
-        .filter(|y| y.is_finite())
-        .fold(
-            (f64::INFINITY, f64::NEG_INFINITY),
-            |(lo, hi): (f64, f64), y| (lo.min(y), hi.max(y)),
-        );
-    let scale = lo.abs().max(hi.abs()).max(1.0);
-    if lo > hi || hi - lo > 1e-9 * scale {
-        return None;
-    }
-    let centre = 0.5 * (lo + hi);
-    let pad = (0.1 * centre.abs()).max(1.0);
-    Some((centre - pad, centre + pad))
 }
 
 /// The "⟲" in the plot's top-right corner: the next frame shows the whole run again.
@@ -336,106 +425,9 @@ fn lines(rec: &Recorder, figures: &[Figure], tab: Tab, colours: &Palette) -> Vec
     }
 }
 
-/// How one series is drawn.
-#[derive(Clone, Copy)]
-struct LineLook {
-    color: Color32,
-    width: f32,
-    /// The source's line pattern.
-    pattern: LineStyle,
-    /// log10 of the values.
-    log: bool,
-    /// ±3σ bands where the series has one.
-    bands: bool,
-}
-
-/// Series `i` from its plot points, broken at its missing samples, with its ±3σ band from
-/// the variance series it names (never from its name).
-fn draw_series(
-    plot: &mut egui_plot::PlotUi<'_>,
-    rec: &Recorder,
-    (i, mut pts): (usize, Vec<[f64; 2]>),
-    look: LineLook,
-    legend: &dyn Fn(&SeriesSpec) -> LegendParts,
-) {
-    let spec = &rec.specs()[i];
-    let mut label = legend(spec).joined();
-    if look.log {
-        for p in &mut pts {
-            p[1] = if p[1] > 0.0 { p[1].log10() } else { f64::NAN };
-        }
-        label = format!("log10 {label}");
-    }
-    for piece in pieces(plot, &pts, look.pattern) {
-        plot.line(
-            Line::new(label.clone(), piece)
-                .color(look.color)
-                .width(look.width)
-                .style(look.pattern),
-        );
-    }
-    let band = spec.band.as_ref().filter(|_| look.bands && !look.log);
-    let Some((var, scale)) = band.and_then(|(name, scale)| rec.index_of(name).map(|v| (v, *scale)))
-    else {
-        return;
-    };
-    let sigma3 = |sign: f64| -> Vec<[f64; 2]> {
-        rec.plot_points(var, MAX_POINTS)
-            .into_iter()
-            .map(|p| [p[0], sign * 3.0 * p[1].max(0.0).sqrt() * scale])
-            .collect()
-    };
-    let name = format!("{} ±3σ", legend(spec).joined());
-    for sign in [1.0, -1.0] {
-        for piece in pieces(plot, &sigma3(sign), LineStyle::dashed_loose()) {
-            plot.line(
-                Line::new(name.clone(), piece)
-                    .color(look.color.gamma_multiply(0.6))
-                    .style(LineStyle::dashed_loose()),
-            );
-        }
-    }
-}
-
-/// The pieces of a series to draw: broken at its missing samples, a dashed or dotted one cut
-/// to what the plot shows, and each thinned to the plot's pixels (see [`super::clip`]).
-pub fn pieces(
-    plot: &egui_plot::PlotUi<'_>,
-    pts: &[[f64; 2]],
-    style: LineStyle,
-) -> Vec<Vec<[f64; 2]>> {
-    let pieces = if style == LineStyle::Solid {
-        Recorder::split_at_gaps(pts)
-    } else {
-        super::clip::clip_to_bounds(pts, &plot.plot_bounds())
-    };
-    let px = plot.transform().dvalue_dpos().map(f64::abs);
-    let thin = |piece| super::clip::thin_to_pixels(piece, px);
-    pieces.into_iter().map(thin).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_flat_run_gets_a_readable_range_and_a_spread_one_none() {
-        let two = |a: f64, b: f64| vec![vec![[0.0, a]], vec![[0.0, b]]];
-        // log10 of two equal errors of 2°, the second one ulp off.
-        let (lo, hi) = flat_range(&two(2.0, 2.0 + 4e-16), true).expect("flat");
-        assert!(
-            (lo + 0.69897).abs() < 1e-4 && (hi - 1.30103).abs() < 1e-4,
-            "{lo} {hi}"
-        );
-        assert_eq!(flat_range(&two(360.0, 360.0), false), Some((324.0, 396.0)));
-        assert_eq!(flat_range(&two(0.0, 0.0), false), Some((-1.0, 1.0)));
-        assert_eq!(flat_range(&two(0.0, 1e-6), false), None);
-        assert_eq!(flat_range(&two(2.0, 2.1), true), None);
-        assert_eq!(flat_range(&[], false), None);
-        assert_eq!(flat_range(&two(f64::NAN, f64::NAN), false), None);
-        // A log plot draws no value ≤ 0 and ignores it here too.
-        assert_eq!(flat_range(&two(0.0, 0.0), true), None);
-    }
 
     fn words() -> PlotWords<'static> {
         PlotWords {
@@ -450,6 +442,7 @@ mod tests {
             outages: Vec::new(),
             reset: String::new(),
             lang: attlab::i18n::Lang::En,
+            steady_note: Box::new(|_| String::new()),
         }
     }
 
