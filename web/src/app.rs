@@ -121,6 +121,11 @@ impl AttLabApp {
         self.capture.as_mut()
     }
 
+    /// Where the last frame drew the views and the plot (for tests of the layout).
+    pub fn regions(&self) -> &Regions {
+        &self.regions
+    }
+
     /// The last PNG saved: name, width, height and size in bytes.
     pub fn last_png(&self) -> Option<&(String, usize, usize, usize)> {
         self.last_png.as_ref()
@@ -162,8 +167,9 @@ impl AttLabApp {
             self.apply(c);
         }
         self.set_zoom_and_theme(ui.ctx());
-        // A phone or an upright tablet: the view and the plot on top, the controls in a sheet.
-        let narrow = panels::is_narrow(ui.ctx());
+        // A phone (upright or sideways) or an upright tablet: the phone's bar, one view
+        // and the plot, the controls in a sheet.
+        let narrow = panels::is_phone(ui.ctx());
         if narrow {
             panels::touch_style(ui);
         }
@@ -173,12 +179,7 @@ impl AttLabApp {
         panels::cycle_panel(ui.ctx(), &self.state, &mut commands);
         panels::link_problems(ui, &self.state, &mut commands);
         panels::status_line(ui, &self.state, &mut commands);
-        if narrow {
-            panels::narrow_sheet(ui, &self.state, &mut commands);
-            panels::narrow_bar(ui, &self.state, &mut commands);
-        } else {
-            panels::controls(ui, &self.state, &mut commands);
-        }
+        panels::controls_for_the_screen(ui, &self.state, &mut commands);
         panels::tiles(ui, &self.state);
         self.regions = Regions::default();
         panels::central(

@@ -60,6 +60,7 @@ close = Close
 
 ## The plots
 estimators = Estimators:
+estimators-menu = Estimators
 more-estimators = +{ $n } more…
 chip-hide-hint = { $name } — click to hide it everywhere
 chip-show-hint = { $name } — click to show it everywhere

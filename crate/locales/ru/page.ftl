@@ -59,6 +59,7 @@ close = Закрыть
 
 ## Графики
 estimators = Оценки:
+estimators-menu = Оценки
 more-estimators = ещё { $n }…
 chip-hide-hint = { $name } — нажмите, чтобы скрыть везде
 chip-show-hint = { $name } — нажмите, чтобы показать везде

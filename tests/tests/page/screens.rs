@@ -1,6 +1,7 @@
 //! The page on the screens it is used on: every lab in presenter mode (light theme) on a
-//! projector's 1280×720, on a laptop's 1366×768 (in English and in Russian), and on a 390×844
-//! phone (touch, stacked);
+//! projector's 1280×720, on a laptop's 1366×768 (in English and in Russian), on a 390×844
+//! phone (touch, stacked) and on the same phone held sideways, 844×390 (one view beside the
+//! plot);
 //! its plot a fair share of the window's height on each, a screenshot of each in
 //! `target/page-test/screens/` (the README shows them).
 
@@ -24,7 +25,7 @@ pub(crate) struct Screen {
 }
 
 /// The screens, as the issue that asked for them names them, and the laptop in Russian.
-pub(crate) const SCREENS: [Screen; 4] = [
+pub(crate) const SCREENS: [Screen; 5] = [
     Screen {
         name: "projector",
         size: (1280, 720),
@@ -58,6 +59,16 @@ pub(crate) const SCREENS: [Screen; 4] = [
         link: "",
         mobile: true,
         min_plot_share: 0.25,
+        tree: false,
+    },
+    // Sideways the phone's bar spans the top and one view stands beside the plot, which
+    // gets what a laptop's does.
+    Screen {
+        name: "sideways",
+        size: (844, 390),
+        link: "",
+        mobile: true,
+        min_plot_share: 0.40,
         tree: false,
     },
 ];

@@ -2,16 +2,15 @@
 //! plane or the lab's diagram; for a single-axis lab a dial and the phase portrait), the plot
 //! tabs and plots below. Reads the state, emits commands (tab choices); the widgets own their view.
 
+use super::trails::{Trails, trails_of};
 use super::{arg, tabs, tr, tr_with};
 use crate::export::Regions;
 use crate::render::palette::{self, Palette};
 use crate::render::{body3d, plots, riemann_sphere, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
-use attlab::math::{WzAttitude, WzChart};
-use attlab::model::{Quantity, SeriesKey, StateKind, TRUTH, ViewKind, q};
-use attlab::record::Recorder;
+use attlab::math::WzChart;
+use attlab::model::ViewKind;
 use egui::{Pos2, Rect, Ui, Vec2};
-use nalgebra::Vector3;
 use std::cell::OnceCell;
 
 /// Draws the central panel and notes in `regions` where each part went (for PNG export).
@@ -42,6 +41,11 @@ pub fn central(
                 return;
             }
             _ => {}
+        }
+        // A phone held sideways: one view on the left, the plots beside it.
+        if super::narrow::is_short(ui.ctx()) {
+            beside(ui, app, (view, regions, gpu_ready), full, commands);
+            return;
         }
         // The plots carry each paper's result: the views take what leaves the plot itself
         // (below the chips and the tab rows) at least 40 % of the window's height.
@@ -84,6 +88,42 @@ pub fn central(
     });
 }
 
+/// A short, wide screen (a phone held sideways): the view the bar's switcher picks on the
+/// left, [`SIDE_VIEW_SHARE`] of the width, and the plots on the right at full height.
+fn beside(
+    ui: &mut Ui,
+    app: &AppState,
+    (view, regions, gpu_ready): (&mut View, &mut Regions, bool),
+    full: Rect,
+    commands: &mut Vec<Command>,
+) {
+    let kinds = app.sim().lab().page().views;
+    let k = app.view().narrow_view.min(kinds.len().saturating_sub(1));
+    // With the controls' sheet open beside them, the plots alone: the sheet is what the
+    // reader is working with, the plot what it changes.
+    let share = if app.view().sheet_open {
+        0.0
+    } else {
+        SIDE_VIEW_SHARE
+    };
+    let w = (full.width() * share).round();
+    if let Some(kind) = kinds.get(k).filter(|_| w > 0.0) {
+        let rect = Rect::from_min_size(full.min, Vec2::new(w - 4.0, full.height()));
+        let trails = OnceCell::new();
+        draw_view(ui, app, view, *kind, rect, &trails, gpu_ready);
+        png_button(ui, app, k, rect, commands);
+        reset_button(ui, app, view, *kind, rect);
+        regions.views.push((k, rect));
+    }
+    let right = Rect::from_min_max(full.min + Vec2::new(w, 0.0), full.max);
+    ui.scope_builder(egui::UiBuilder::new().max_rect(right), |ui| {
+        draw_plots(ui, app, regions, commands);
+    });
+}
+
+/// The share of a sideways phone's width its one view takes.
+const SIDE_VIEW_SHARE: f32 = 0.38;
+
 /// The share of the window's height the plot itself gets at least.
 const PLOT_SHARE: f32 = 0.42;
 /// What of the plots' area is not the plot itself (the estimator chips, the tab rows, the
@@ -125,7 +165,7 @@ fn reset_button(ui: &mut Ui, app: &AppState, view: &mut View, kind: ViewKind, re
 /// A phone or a tablet: the narrow layout, or a screen a finger has touched (since, not
 /// only while: the hint must not change under a dragging finger).
 fn touch_screen(ui: &Ui) -> bool {
-    super::narrow::is_narrow(ui.ctx()) || ui.ctx().input(|i| i.has_touch_screen())
+    super::narrow::is_phone(ui.ctx()) || ui.ctx().input(|i| i.has_touch_screen())
 }
 
 /// A small "PNG" button in the bottom-right corner of view `k` while the pointer is over
@@ -151,7 +191,10 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
 /// The plot tabs and the selected plot; the tab row and the plot are the PNG export's area.
 fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut Vec<Command>) {
     let area = ui.available_rect_before_wrap();
-    tabs::estimator_legend(ui, app, commands);
+    // A phone held sideways has them in a menu on the tab row.
+    if !super::narrow::is_short(ui.ctx()) {
+        tabs::estimator_legend(ui, app, commands);
+    }
     regions.plots = Some(ui.available_rect_before_wrap());
     tabs::plot_tabs(ui, app, commands);
     regions.plot_area = Some(plots::show(
@@ -180,18 +223,6 @@ fn weight(kind: ViewKind) -> f32 {
         ViewKind::Dial => 24.0,
         ViewKind::PhasePortrait => 34.0,
     }
-}
-
-/// The sphere's and the w plane's trails with their ellipses, gathered on first use.
-type Trails = OnceCell<Vec<riemann_sphere::SphereTrack>>;
-
-/// The trails of `trails`, gathered if this is the frame's first view to need them.
-fn trails_of<'a>(trails: &'a Trails, app: &AppState, ui: &Ui) -> &'a [riemann_sphere::SphereTrack] {
-    trails.get_or_init(|| {
-        let mut tracks = tracks(app, palette::of(ui.visuals()));
-        attach_ellipses(app, &mut tracks);
-        tracks
-    })
 }
 
 /// Draws one of the lab's views, `kind`, into `rect`.
@@ -377,110 +408,4 @@ fn chart_caption(app: &AppState) -> String {
         lines.push(tr_with(app, "chart-w-rest", &[("n", north.into())]));
     }
     lines.join("\n")
-}
-
-/// The recent trail of every source with a vertical: truth, then each estimator.
-fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack> {
-    let rec = app.sim().recorder();
-    let truth = tr(app, "truth");
-    let mut names = vec![(TRUTH, truth)];
-    names.extend(
-        app.sim()
-            .estimators()
-            .iter()
-            .enumerate()
-            .map(|(i, e)| (e.id(), super::estimator_name(app, i))),
-    );
-    let mut out = Vec::new();
-    for (i, (src, label)) in names.iter().enumerate() {
-        if app.view().hidden.contains(&i) {
-            continue;
-        }
-        let col = |quantity: &'static Quantity| {
-            rec.index_of(&SeriesKey::new(src, quantity).name())
-                .map(|j| recent_tail(rec, j))
-        };
-        let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) = (
-            col(&q::K_X),
-            col(&q::K_Y),
-            col(&q::K_Z),
-            col(&q::U),
-            col(&q::V),
-        ) else {
-            continue;
-        };
-        let mut k_body = Vec::new();
-        let mut w = Vec::new();
-        for j in 0..kx.len() {
-            if kx[j].is_finite() {
-                k_body.push(Vector3::new(kx[j], ky[j], kz[j]));
-                w.push([u[j], v[j]]);
-            }
-        }
-        if k_body.is_empty() {
-            continue;
-        }
-        out.push(riemann_sphere::SphereTrack {
-            name: label.to_string(),
-            color: colours.source(i),
-            pattern: palette::pattern(i),
-            k_body,
-            w,
-            ellipse: None,
-        });
-    }
-    out
-}
-
-/// Rows of history drawn as trails on the sphere and the plane.
-const TRAIL_ROWS: usize = 3000;
-/// Points per trail after thinning.
-const TRAIL_POINTS: usize = 600;
-
-/// The last [`TRAIL_ROWS`] full-rate values of series `j`, thinned to [`TRAIL_POINTS`]
-/// (always keeping the newest).
-fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
-    rec.recent_tail(j, TRAIL_ROWS, TRAIL_POINTS)
-}
-
-/// 3σ ellipses of every estimator whose covariance holds (u, v), in its own chart, mapped
-/// point by point to the w plane and to the sphere (so it stays right in the flipped chart).
-/// The states are found by what the covariance says they are, not by names.
-fn attach_ellipses(app: &AppState, tracks: &mut [riemann_sphere::SphereTrack]) {
-    for (e, est) in app.sim().estimators().iter().zip(app.sim().estimates()) {
-        let (Some(wz), Some(cov)) = (est.attitude.wz(), e.covariance()) else {
-            continue;
-        };
-        let (Some(iu), Some(iv)) = (cov.index_of(StateKind::WzU), cov.index_of(StateKind::WzV))
-        else {
-            continue;
-        };
-        let p = nalgebra::Matrix2::new(
-            cov.get(iu, iu),
-            cov.get(iu, iv),
-            cov.get(iv, iu),
-            cov.get(iv, iv),
-        );
-        let Some(chol) = p.cholesky() else { continue };
-        let l = chol.l();
-        let ring: Vec<WzAttitude> = (0..64)
-            .map(|j| {
-                let a = f64::from(j) * std::f64::consts::TAU / 64.0;
-                let d = l * nalgebra::Vector2::new(a.cos(), a.sin()) * 3.0;
-                WzAttitude {
-                    u: wz.u + d.x,
-                    v: wz.v + d.y,
-                    ..wz
-                }
-            })
-            .collect();
-        let plane = ring
-            .iter()
-            .map(|p| p.w().map_or([f64::NAN, f64::NAN], |(u, v)| [u, v]))
-            .collect();
-        let sphere = ring.iter().map(WzAttitude::vertical_in_body).collect();
-        if let Some(t) = tracks.iter_mut().find(|t| t.name == e.label()) {
-            t.ellipse = Some((plane, sphere));
-        }
-    }
 }

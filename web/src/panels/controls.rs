@@ -5,7 +5,6 @@ use super::slider_keys::{self, Rail};
 use super::{arg, tr, tr_with};
 use crate::state::{AppState, Command, IoCommand, PngTarget, RunCommand, UrlCommand, ViewCommand};
 use attlab::i18n::{self, Lang};
-use attlab::labs;
 use attlab::model::{ParamKind, ParamSpec, Scale};
 use attlab::state::Theme;
 use egui::{RichText, Ui};
@@ -39,7 +38,7 @@ pub fn controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             } else {
                 ui.heading(tr(app, "app-title"));
             }
-            lab_picker(ui, app, commands);
+            super::lab_picker::lab_picker(ui, app, commands);
             ui.separator();
             run_controls(ui, app, commands);
             ui.separator();
@@ -78,31 +77,6 @@ pub(super) fn body(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     messages(ui, app, commands);
     ui.separator();
     explanation(ui, app);
-}
-
-pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
-    let current = app.sim().lab();
-    let lang = app.view().lang();
-    let title = |lab: &dyn attlab::model::Lab| {
-        i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title())
-    };
-    let combo = egui::ComboBox::from_id_salt("lab-picker").selected_text(title(current));
-    super::fit::labelled(ui, ("lab-picker", tr(app, "lab")), combo, |combo, ui| {
-        combo
-            .show_ui(ui, |ui| {
-                for lab in labs::all() {
-                    if ui
-                        .selectable_label(lab.id() == current.id(), title(*lab))
-                        .clicked()
-                        && lab.id() != current.id()
-                    {
-                        commands.push(Command::from(RunCommand::SelectLab(*lab)));
-                    }
-                }
-            })
-            .response
-    });
-    ui.label(RichText::new(current.paper()).small().italics());
 }
 
 fn run_controls(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {

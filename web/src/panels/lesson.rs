@@ -99,7 +99,9 @@ fn question(
             commands.push(LessonCommand::Answer(k + 1).into());
         }
     }
-    let seen = egui::Id::unique(("lesson why shown", app.sim().lab().id(), n));
+    // Per zoom: the first frame after presenter mode is chosen is laid out at the old one.
+    let zoom = ui.ctx().zoom_factor().to_bits();
+    let seen = egui::Id::unique(("lesson why shown", app.sim().lab().id(), n, zoom));
     if chosen.is_none() || !app.lesson_revealed() {
         ui.data_mut(|d| d.remove::<bool>(seen));
     }
@@ -116,11 +118,19 @@ fn question(
         let shows = tr_with(app, "lesson-shows", &[("answer", arg(answer))]);
         ui.label(RichText::new(shows).strong());
         let why = ui.label(word(app, Some(n), "why", q.why));
-        // Brought into view once, when the run first shows it: after an answer the why had
-        // stayed below the card's fold on a projector.
+        // Brought into view when the run first shows it (after an answer the why had stayed
+        // below the card's fold on a projector), frame after frame until it is seen; then
+        // the reader scrolls as they like.
         if !ui.data(|d| d.get_temp::<bool>(seen).unwrap_or(false)) {
-            why.scroll_to_me(Some(egui::Align::BOTTOM));
-            ui.data_mut(|d| d.insert_temp(seen, true));
+            if ui.clip_rect().contains_rect(why.rect) {
+                ui.data_mut(|d| d.insert_temp(seen, true));
+            } else {
+                why.scroll_to_me_animation(
+                    Some(egui::Align::BOTTOM),
+                    egui::style::ScrollAnimation::none(),
+                );
+                ui.ctx().request_repaint();
+            }
         }
     } else if let Some(t) = app.run().pause_at_s {
         let running = tr_with(app, "lesson-running", &[("t", num_arg(app, t))]);

@@ -7,6 +7,7 @@ mod controls;
 mod cycle;
 mod fit;
 mod keys;
+mod lab_picker;
 mod lab_tools;
 mod lesson;
 mod live;
@@ -18,6 +19,7 @@ mod sliders;
 mod sweeps;
 mod tabs;
 mod tiles;
+mod trails;
 
 pub use central::central;
 pub use controls::controls;
@@ -26,7 +28,7 @@ pub use cycle::{
 };
 pub use keys::{focus_ring, help_dialog, shortcuts, tabs};
 pub use narration::{Narration, describe as describe_run};
-pub use narrow::{bar as narrow_bar, is_narrow, sheet as narrow_sheet, touch_style};
+pub use narrow::{controls_for_the_screen, is_narrow, is_phone, is_short, touch_style};
 pub use share::share_dialog;
 pub use slider_keys::rail_position;
 pub use tiles::tiles;
@@ -176,6 +178,13 @@ pub fn link_problems(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Comma
 /// button that stops it), time, rates, frame time, recorder memory and estimator health.
 pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command>) {
     egui::Panel::bottom("status").show(ui, |ui| {
+        // A line of text, not a finger's row, unless it holds a button (a job's Stop, a
+        // trouble's menu): on a phone held sideways it had taken 53 of 390 points.
+        let buttons = app.run().job().is_some()
+            || (app.sim().statuses().iter()).any(|s| !matches!(s, EstimatorStatus::Ok));
+        if !buttons {
+            ui.spacing_mut().interact_size.y = ui.text_style_height(&egui::TextStyle::Monospace);
+        }
         if let Some(job) = app.run().job() {
             ui.horizontal(|ui| {
                 let done = job.progress();
@@ -201,7 +210,7 @@ pub fn status_line(ui: &mut egui::Ui, app: &AppState, commands: &mut Vec<Command
         }
         let colours = crate::render::palette::of(ui.visuals());
         ui.horizontal_wrapped(|ui| {
-            ui.monospace(stats_text(app, is_narrow(ui.ctx())));
+            ui.monospace(stats_text(app, is_phone(ui.ctx())));
             if app.run().stats.behind {
                 ui.colored_label(colours.warn, tr(app, "behind"));
             }

@@ -109,7 +109,12 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
     } else {
         figures.len()
     };
-    let budget = 2.0 * ui.available_width() - OPTIONS_WIDTH_PT;
+    // Two rows; one on a phone held sideways, whose height the plot needs, where the
+    // estimators' chips are a menu at the row's start.
+    let short = super::narrow::is_short(ui.ctx());
+    let rows = if short { 1.0 } else { 2.0 };
+    let chips = if short { CHIPS_MENU_PT } else { 0.0 };
+    let budget = rows * ui.available_width() - OPTIONS_WIDTH_PT - chips;
     let mut used = 0.0;
     let shown = tabs[..first]
         .iter()
@@ -122,6 +127,9 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
         commands.push(Command::from(ViewCommand::SelectTab(tab)));
     };
     ui.horizontal_wrapped(|ui| {
+        if short {
+            estimator_menu(ui, app, commands);
+        }
         for (tab, title) in &tabs[..shown] {
             if ui
                 .selectable_label(current == *tab, title.as_str())
@@ -133,6 +141,9 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
         let more = &tabs[shown..];
         if !more.is_empty() {
             let label = match more.iter().find(|(tab, _)| *tab == current) {
+                Some((_, title)) if short => {
+                    tr_with(app, "more-with", &[("title", arg(super::elide(title, 20)))])
+                }
                 Some((_, title)) => tr_with(app, "more-with", &[("title", arg(title))]),
                 None => tr(app, "more"),
             };
@@ -150,6 +161,23 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
         }
         ui.separator();
         tab_options(ui, app, commands);
+    });
+}
+
+/// Room the estimators' menu takes at the start of a sideways phone's tab row (points).
+const CHIPS_MENU_PT: f32 = 120.0;
+
+/// Every estimator's chip in one menu (a phone held sideways has no row to spare for them).
+fn estimator_menu(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
+    let n = app.sim().estimators().len();
+    if n == 0 {
+        return;
+    }
+    let label = egui::RichText::new(format!("● {}", tr(app, "estimators-menu"))).small();
+    ui.menu_button(label, |ui| {
+        for i in 0..n {
+            estimator_chip(ui, app, i, commands);
+        }
     });
 }
 

@@ -176,7 +176,8 @@ pub fn place(ui: &Ui, full: egui::Rect, lines: &[Line]) -> (egui::Rect, egui::Re
     let body = egui::TextStyle::Body.resolve(ui.style()).size;
     let gap = ui.spacing().item_spacing.y;
     let laid = |scale: f32, width: f32| layout(ui, lines, width, (body * scale, gap * scale));
-    let side = full.width() >= SIDE_LEGEND_MIN_PT;
+    // Beside a wide plot, or a short one (a phone held sideways), below a narrow one.
+    let side = full.width() >= SIDE_LEGEND_MIN_PT || full.width() >= SHORT_ASPECT * full.height();
     let room_y = if side {
         full.height()
     } else {
@@ -369,6 +370,9 @@ const MAX_COLUMN_PT: f32 = 380.0;
 
 /// A plot at least this wide (points) has its legend beside it.
 const SIDE_LEGEND_MIN_PT: f32 = 560.0;
+/// A plot's room this many times as wide as it is tall puts its legend beside it whatever
+/// its width: below, on a phone held sideways, it had left the plot 50 points tall.
+const SHORT_ASPECT: f32 = 1.5;
 
 /// The sizes tried between the body's type and [`SMALLEST`].
 const SHRINK_STEPS: usize = 6;

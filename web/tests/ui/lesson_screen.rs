@@ -93,3 +93,69 @@ fn a_step_opened_from_its_link_starts_its_sweep_and_ghosts_its_filter() {
         }
     }
 }
+
+/// A state run, as the page's frames run it, until the step's pause (at most `frames` frames
+/// of a quarter second each).
+fn run_to_pause(state: &mut AppState, frames: u64) {
+    let t0 = web_time::Instant::now();
+    for k in 0..frames {
+        if state.lesson_revealed() && !state.run().playing {
+            return;
+        }
+        let at = t0 + web_time::Duration::from_millis(250 * k);
+        state.apply(RunCommand::Advance(at).into());
+    }
+}
+
+#[test]
+fn on_a_projector_an_answered_step_keeps_its_why_and_next_in_view() {
+    // A projector's 1280×720 in presenter mode: the panel is 230 points at 1.5 times.
+    let screen = egui::vec2(1280.0, 720.0);
+    let mut problems = Vec::new();
+    for lab in labs::all() {
+        let lesson = lab.lesson().expect("every lab has a lesson");
+        for (i, step) in lesson.steps.iter().enumerate() {
+            let Some(q) = step.question else { continue };
+            let n = i + 1;
+            let letter = char::from(b'a' + q.answer as u8);
+            let link = format!(
+                "lesson={}&step={n}&answers={n}{letter}&presenter=1",
+                lab.id()
+            );
+            let mut state = AppState::from_fragment(&link);
+            run_to_pause(&mut state, 4000);
+            assert!(state.lesson_revealed(), "{link}: never reached its pause");
+            let mut h = Harness::builder()
+                .with_size(screen)
+                .with_context_setup(attlab_web::render::fonts::install)
+                .build_ui_state(
+                    |ui, app: &mut AttLabApp| app.frame(ui),
+                    AttLabApp::headless(state),
+                );
+            h.run_steps(6);
+            let window = h.ctx.content_rect();
+            let next = h.get_by_label(if n < lesson.steps.len() {
+                "Next ▶"
+            } else {
+                "◀ Back"
+            });
+            let rect = next.rect();
+            if !window.contains_rect(rect) {
+                problems.push(format!("{link}: Next at {rect:?}, the window {window:?}"));
+            }
+            // The why's first words are painted where its panel shows them.
+            let start: String = q.why.chars().take(24).collect();
+            let shown = (h.output().shapes.iter()).any(|c| match &c.shape {
+                egui::Shape::Text(t) if t.galley.text().starts_with(&start) => {
+                    let r = t.visual_bounding_rect();
+                    c.clip_rect.contains_rect(r) && window.contains_rect(r)
+                }
+                _ => false,
+            });
+            if !shown {
+                problems.push(format!("{link}: the why “{start}…” is out of view"));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{problems:#?}");
+}

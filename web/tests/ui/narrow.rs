@@ -3,11 +3,16 @@
 use super::*;
 
 fn phone(lab_id: &str) -> Harness<'static, AttLabApp> {
+    held(lab_id, egui::vec2(390.0, 844.0))
+}
+
+/// Lab `lab_id`'s page on a screen of `size`, paused.
+fn held(lab_id: &str, size: egui::Vec2) -> Harness<'static, AttLabApp> {
     let lab = labs::find(lab_id).expect("registered");
     let mut app = AttLabApp::with_state(lab, ParamValues::defaults(lab.params()), 1, 1.0);
     app.apply(RunCommand::SetPlaying(false).into());
     Harness::builder()
-        .with_size(egui::vec2(390.0, 844.0))
+        .with_size(size)
         .with_context_setup(attlab_web::render::fonts::install)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
@@ -85,4 +90,72 @@ fn a_phone_opened_on_a_question_step_shows_the_question_then_gives_the_page_to_t
     h.get_by_label("Lesson · step 3 of 6").click();
     h.run_steps(6);
     assert!(h.state().state.view().sheet_open);
+}
+
+#[test]
+fn a_phone_held_sideways_puts_one_view_beside_a_plot_of_at_least_two_fifths_its_height() {
+    // As on a laptop and a projector: the plot itself takes 40 % of the window's height.
+    const SHARE: f32 = 0.4;
+    for lab in labs::all() {
+        let mut h = held(lab.id(), egui::vec2(844.0, 390.0));
+        h.run();
+        let id = lab.id();
+        assert!(
+            h.query_all_by_role(Role::Slider).next().is_none(),
+            "{id}: sliders out"
+        );
+        let regions = h.state().regions();
+        let plot = regions.plot_area.expect("a plot");
+        assert!(
+            plot.height() >= SHARE * 390.0,
+            "{id}: the plot is {} pt tall",
+            plot.height()
+        );
+        assert_eq!(regions.views.len(), 1, "{id}: one view");
+        assert!(
+            regions.views[0].1.max.x <= plot.min.x,
+            "{id}: the view beside the plot"
+        );
+        // The controls open from the side, the plot still beside them (the view gives way).
+        h.get_by_label("Controls").click();
+        h.run();
+        assert!(
+            h.query_all_by_role(Role::Slider).next().is_some(),
+            "{id}: the sheet"
+        );
+        let plot = h.state().regions().plot_area.expect("a plot");
+        assert!(
+            plot.height() >= SHARE * 390.0,
+            "{id}: with the sheet {} pt",
+            plot.height()
+        );
+        assert!(
+            h.state().regions().views.is_empty(),
+            "{id}: the view gives way"
+        );
+    }
+}
+
+#[test]
+fn a_phone_starts_the_lesson_from_its_bar_and_opens_the_why_when_the_run_shows_it() {
+    let mut h = phone("p4");
+    h.run();
+    h.get_by_label("▶ Start the lesson").click();
+    h.run();
+    assert_eq!(h.state().state.lesson().map(|l| l.step), Some(1));
+    assert!(h.state().state.view().sheet_open, "the card is open");
+    // Step 3's question, answered: the sheet gives the page to the run, which opens it
+    // again at the pause, where the why is.
+    let mut state = attlab_web::state::AppState::from_fragment("lesson=p4&step=3");
+    state.apply(attlab_web::state::LessonCommand::Answer(2).into());
+    assert!(!state.view().sheet_open && state.run().playing);
+    let t0 = web_time::Instant::now();
+    for k in 0..400 {
+        state.apply(RunCommand::Advance(t0 + web_time::Duration::from_millis(250 * k)).into());
+    }
+    assert!(
+        state.lesson_revealed() && !state.run().playing,
+        "at the pause"
+    );
+    assert!(state.view().sheet_open, "the why is in view");
 }
