@@ -23,7 +23,7 @@ fn ui_pass(c: &mut Criterion) {
         }
         let mut h = Harness::builder()
             .with_size(egui::vec2(1280.0, 800.0))
-            .with_context_setup(attlab_web::render::fonts::install)
+            .with_context_setup(attlab_web::app::setup_context)
             .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);
         h.run();
         c.bench_function(&format!("{}/ui-pass", lab.id()), |b| b.iter(|| h.step()));

@@ -45,7 +45,7 @@ pub struct AttLabApp {
 impl AttLabApp {
     /// Creates the app, restoring lab, seed, speed and parameters from the URL fragment.
     pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
-        crate::render::fonts::install(&cc.egui_ctx);
+        setup_context(&cc.egui_ctx);
         // In the page, the controls are mirrored into the DOM for screen readers (the
         // desktop window has no mirror: eframe there would need its own AccessKit adapter).
         #[cfg(target_arch = "wasm32")]
@@ -219,8 +219,18 @@ impl AttLabApp {
         }
         let lang = self.state.view().lang();
         if self.lang_set != Some(lang) {
-            // A screen reader picks its voice by the page's language.
+            // A screen reader picks its voice by the page's language, and hears the
+            // mirror's words in it.
             platform::set_document_lang(lang.code());
+            let word = |id: &str| attlab::i18n::t(lang, id);
+            crate::a11y::Words::set(
+                ctx,
+                crate::a11y::Words {
+                    dot: word("a11y-dot"),
+                    double_dot: word("a11y-double-dot"),
+                    resize_panel: word("a11y-resize-panel"),
+                },
+            );
             self.lang_set = Some(lang);
         }
         let theme = self.state.view().theme();
@@ -351,6 +361,14 @@ impl AttLabApp {
             self.state.sim().t_s()
         )
     }
+}
+
+/// The page's fonts, and a press that counts as a click however long it is held: egui
+/// takes a press over 0.8 s for a long touch (a context menu, which the page has none of),
+/// and a lecturer's slow finger on a button had done nothing.
+pub fn setup_context(ctx: &egui::Context) {
+    crate::render::fonts::install(ctx);
+    ctx.options_mut(|o| o.input_options.max_click_duration = f64::INFINITY);
 }
 
 impl eframe::App for AttLabApp {

@@ -147,6 +147,12 @@ pub fn lab_summary_id(lab_id: &str) -> String {
     format!("lab-{lab_id}-summary")
 }
 
+/// The id of the line under a lab's title: the paper it reproduces, as a reader of the
+/// language cites it.
+pub fn lab_paper_id(lab_id: &str) -> String {
+    format!("lab-{lab_id}-paper")
+}
+
 /// The id of the label of a lab's parameter `key` in the catalogue.
 pub fn param_label_id(lab_id: &str, key: &str) -> String {
     format!("lab-{lab_id}-param-{key}")
@@ -226,6 +232,7 @@ pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static s
     let id = lab.id();
     let mut out = vec![
         (lab_title_id(id), lab.title()),
+        (lab_paper_id(id), lab.paper()),
         (lab_summary_id(id), lab.summary()),
     ];
     for spec in lab.params() {

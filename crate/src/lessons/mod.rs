@@ -114,6 +114,14 @@ fn step_problems(lab: &'static dyn Lab, step: &LessonStep) -> Vec<String> {
             return out;
         }
     };
+    for key in step.highlight {
+        let spec = lab.params().iter().find(|p| p.key == *key);
+        if spec.is_some_and(|s| !s.outside_run && !s.acts_in(&params)) {
+            out.push(format!(
+                "it points at `{key}`, which does not act in its run"
+            ));
+        }
+    }
     let sim = Simulation::new(lab, params, 1);
     out.extend(tab_problem(lab, &sim, step.tab));
     for id in step.show {

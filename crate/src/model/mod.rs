@@ -15,6 +15,7 @@ mod lesson;
 mod log;
 mod note;
 mod page;
+mod param_error;
 mod params;
 pub mod q;
 mod report;

@@ -1,8 +1,8 @@
 //! Lab parameters: the specification a slider is generated from, and validated values.
 
+pub use super::param_error::ParamError;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use thiserror::Error;
 
 /// How a slider maps its position to the value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -51,9 +51,13 @@ pub struct ParamSpec {
     /// True when a change only takes effect at the next reset (e.g. an initial condition).
     pub needs_reset: bool,
     /// Key of another parameter that must be non-zero for this one to act (e.g. the time of
-    /// an impulse acts only when the impulse has a size). The page greys the slider out
-    /// while it is zero, unless the parameter is also [`Self::outside_run`].
+    /// an impulse acts only when the impulse has a size), or one of [`Self::active_when`].
+    /// The page greys the slider out while it does not act, unless the parameter is also
+    /// [`Self::outside_run`].
     pub requires: Option<&'static str>,
+    /// The values of [`Self::requires`] with which this parameter acts (a choice's options:
+    /// the tumble's rate acts in the tumbling motion only); empty: any non-zero value.
+    pub active_when: &'static [f64],
     /// True when the parameter shapes only what is shown or exported beside the run (whose
     /// angles a paper's output file holds, a note under a slider), not the run itself. With
     /// [`Self::requires`], it acts on the run too while that parameter is non-zero (paper
@@ -83,6 +87,7 @@ impl ParamSpec {
             help: "",
             needs_reset: false,
             requires: None,
+            active_when: &[],
             outside_run: false,
         }
     }
@@ -117,6 +122,35 @@ impl ParamSpec {
             requires: Some(key),
             ..self
         }
+    }
+
+    /// Acts only while parameter `key` (a choice) has one of `values`.
+    pub const fn requires_one_of(self, key: &'static str, values: &'static [f64]) -> Self {
+        Self {
+            requires: Some(key),
+            active_when: values,
+            ..self
+        }
+    }
+
+    /// Whether this parameter acts on a run of `params` (what it requires, if anything, is
+    /// on).
+    pub fn acts_in(&self, params: &ParamValues) -> bool {
+        self.requires.is_none_or(|key| {
+            let v = params.get(key);
+            if self.active_when.is_empty() {
+                v != 0.0
+            } else {
+                self.active_when.contains(&v)
+            }
+        })
+    }
+
+    /// A value of the parameter it requires with which this one acts (none for a parameter
+    /// that requires none): the first of [`Self::active_when`], else `dep_max`.
+    pub fn acting_value(&self, dep_max: f64) -> Option<f64> {
+        self.requires?;
+        Some(self.active_when.first().copied().unwrap_or(dep_max))
     }
 
     /// Shapes only what is shown or exported beside the run, not the run.
@@ -184,71 +218,6 @@ impl ParamSpec {
             _ => Ok(value),
         }
     }
-}
-
-/// What was wrong with a parameter given by a user (slider, `--set`, URL).
-#[derive(Clone, Debug, Error, PartialEq)]
-pub enum ParamError {
-    /// No parameter of that name in this lab.
-    #[error("unknown parameter `{key}` (this lab has: {known})")]
-    Unknown {
-        /// The key given.
-        key: String,
-        /// The lab's keys, comma separated.
-        known: String,
-    },
-    /// The text is not a number.
-    #[error("parameter `{key}`: `{text}` is not a number")]
-    NotANumber {
-        /// Parameter key.
-        key: String,
-        /// Text given.
-        text: String,
-    },
-    /// NaN or infinite.
-    #[error("parameter `{key}` must be a finite number")]
-    NotFinite {
-        /// Parameter key.
-        key: String,
-    },
-    /// Outside the allowed range.
-    #[error("parameter `{key}` = {value} is outside {min} … {max} {unit}")]
-    OutOfRange {
-        /// Parameter key.
-        key: String,
-        /// Value given.
-        value: f64,
-        /// Smallest allowed.
-        min: f64,
-        /// Largest allowed.
-        max: f64,
-        /// Unit of the range.
-        unit: &'static str,
-    },
-    /// A fractional value for an integer, toggle or choice.
-    #[error("parameter `{key}` must be a whole number, got {value}")]
-    NotInteger {
-        /// Parameter key.
-        key: String,
-        /// Value given.
-        value: f64,
-    },
-    /// A choice given by a name that matches no option, or several.
-    #[error("parameter `{key}`: `{text}` names no single option (options: {options})")]
-    NoSuchOption {
-        /// Parameter key.
-        key: String,
-        /// Text given.
-        text: String,
-        /// The options with their indexes.
-        options: String,
-    },
-    /// `key=value` expected.
-    #[error("`{text}` is not of the form key=value")]
-    Malformed {
-        /// Text given.
-        text: String,
-    },
 }
 
 /// Validated values of every parameter of one lab, by key.

@@ -41,7 +41,8 @@ fn a_live_parameter_change_acts_without_restart() {
                 // else the parameter needs to act: the 5-DOF body's mass acts once it is
                 // tilted), else from `dep` at its largest.
                 let dep_spec = lab.params().iter().find(|s| s.key == dep).expect("exists");
-                p.set(lab.params(), dep, dep_spec.max).unwrap();
+                let on = spec.acting_value(dep_spec.max).expect("it requires one");
+                p.set(lab.params(), dep, on).unwrap();
                 let turns_on = |preset: &&attlab::model::Preset| {
                     preset.values.iter().any(|(k, v)| *k == dep && *v != 0.0)
                 };
@@ -65,6 +66,68 @@ fn a_live_parameter_change_acts_without_restart() {
             assert!(shows, "{}: changing {} had no effect", lab.id(), spec.key);
         }
     }
+}
+
+/// A parameter that requires another (the page greys its slider out) changes nothing in
+/// the run while that one does not let it act, at either end of its range: built with it
+/// (it may apply at Reset only) or moved while the run goes on. The sliders of the motions
+/// a choice does not select (paper 5's rate in its still case, paper 3's tumble rate in
+/// the paper's motion) had stayed live.
+#[test]
+fn a_parameter_greyed_out_changes_nothing_in_the_run() {
+    let mut checked = 0;
+    for lab in labs::all() {
+        for spec in lab
+            .params()
+            .iter()
+            .filter(|s| s.requires.is_some() && !s.outside_run)
+        {
+            let mut p = ParamValues::defaults(lab.params());
+            let dep = spec.requires.expect("filtered");
+            let dep_spec = lab.params().iter().find(|s| s.key == dep).expect("exists");
+            let off = [0.0, dep_spec.min, dep_spec.max, 1.0, 2.0, 3.0]
+                .into_iter()
+                .find(|v| {
+                    let mut q = p.clone();
+                    q.set(lab.params(), dep, *v).is_ok() && !spec.acts_in(&q)
+                });
+            let Some(off) = off else { continue };
+            p.set(lab.params(), dep, off).unwrap();
+            // Every series, 500 steps, built with the value at each end.
+            let rows = |v: f64| {
+                let mut q = p.clone();
+                q.set(lab.params(), spec.key, v).unwrap();
+                let mut sim = run(*lab, q, 1, 0);
+                (0..500)
+                    .map(|_| {
+                        sim.step();
+                        sim.last_row().to_vec()
+                    })
+                    .collect::<Vec<_>>()
+            };
+            let (lo, hi) = (rows(spec.min), rows(spec.max));
+            let same = lo.iter().zip(&hi).all(|(a, b)| same_bits(a, b));
+            assert!(
+                same,
+                "{}: {} changed the run while greyed out",
+                lab.id(),
+                spec.key
+            );
+            for v in [spec.min, spec.max] {
+                assert!(
+                    !live_change_shows(*lab, &p, spec.key, v),
+                    "{}: {} moved live changed the run while greyed out",
+                    lab.id(),
+                    spec.key
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(
+        checked >= 8,
+        "only {checked} greyed-out parameters were checked"
+    );
 }
 
 /// A parameter marked as shaping only what is shown or exported beside the run (a note, an

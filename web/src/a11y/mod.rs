@@ -81,7 +81,7 @@ pub struct MirrorNode {
 /// without a name of their own are not mirrored (their children are kept, under the nearest
 /// mirrored ancestor), so the page holds one element per control and per text. `zoom` is
 /// egui's points per CSS pixel (larger in presenter mode).
-pub fn plan(update: &TreeUpdate, zoom: f32) -> Vec<MirrorNode> {
+pub fn plan(update: &TreeUpdate, zoom: f32, words: &Words) -> Vec<MirrorNode> {
     let nodes: HashMap<NodeId, &accesskit::Node> =
         update.nodes.iter().map(|(id, n)| (*id, n)).collect();
     let Some(root) = update.tree.as_ref().map(|t| t.root) else {
@@ -97,7 +97,7 @@ pub fn plan(update: &TreeUpdate, zoom: f32) -> Vec<MirrorNode> {
             continue;
         }
         let mirrored = (id != root)
-            .then(|| mirror_node(id, node, parent, &nodes, update.focus, zoom))
+            .then(|| mirror_node(id, node, parent, (&nodes, words), update.focus, zoom))
             .flatten();
         let next_parent = mirrored.as_ref().map_or(parent, |m| Some(m.id));
         if let Some(m) = mirrored {
@@ -115,19 +115,19 @@ fn mirror_node(
     id: NodeId,
     node: &accesskit::Node,
     parent: Option<u64>,
-    nodes: &HashMap<NodeId, &accesskit::Node>,
+    (nodes, words): (&HashMap<NodeId, &accesskit::Node>, &Words),
     focus: NodeId,
     zoom: f32,
 ) -> Option<MirrorNode> {
     let role = node.role();
-    let name = name_of(node, nodes);
+    let name = words.spoken(&name_of(node, nodes));
     let element = match role {
         Role::Slider => Element::Range,
         Role::Label => Element::Text,
         _ => Element::Div,
     };
     let aria = aria_role(role);
-    let text = node.value().map(str::to_string);
+    let text = node.value().map(|v| words.spoken(v));
     let worth_keeping = !aria.is_empty() || text.is_some() || element != Element::Div;
     if !worth_keeping || (roles::is_container(role) && name.is_empty()) {
         return None;
@@ -157,6 +157,64 @@ fn mirror_node(
         focused: id == focus,
         rect_css,
     })
+}
+
+/// What the mirror says in the reader's language where egui's tree has English of its own
+/// or marks a screen reader drops: the combining dot and double dot of φ̇, φ̈, ω̇ (the
+/// mirror had read "P_φ̇φ̇" as "P_φφ").
+#[derive(Clone, Debug, PartialEq)]
+pub struct Words {
+    /// Said after a letter with a dot above (U+0307): "dot".
+    pub dot: String,
+    /// Said after a letter with two dots above (U+0308): "double dot".
+    pub double_dot: String,
+    /// egui's name of a panel's resize handle, "Resize panel", in the reader's language.
+    pub resize_panel: String,
+}
+
+impl Default for Words {
+    fn default() -> Self {
+        Self {
+            dot: "dot".into(),
+            double_dot: "double dot".into(),
+            resize_panel: "Resize panel".into(),
+        }
+    }
+}
+
+impl Words {
+    /// `text` as a screen reader should say it.
+    pub fn spoken(&self, text: &str) -> String {
+        if text == "Resize panel" {
+            return self.resize_panel.clone();
+        }
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            match c {
+                '\u{0307}' => out.push_str(&format!(" {} ", self.dot)),
+                '\u{0308}' => out.push_str(&format!(" {} ", self.double_dot)),
+                c => out.push(c),
+            }
+        }
+        out.split(' ')
+            .filter(|w| !w.is_empty())
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// Keeps `words` for the mirror to use from the next frame (the app sets them from its
+    /// catalogue each frame).
+    pub fn set(ctx: &egui::Context, words: Self) {
+        ctx.data_mut(|d| d.insert_temp(Self::id(), words));
+    }
+
+    fn get(ctx: &egui::Context) -> Self {
+        ctx.data(|d| d.get_temp(Self::id())).unwrap_or_default()
+    }
+
+    fn id() -> egui::Id {
+        egui::Id::unique("attlab mirror words")
+    }
 }
 
 /// A node's accessible name: its label, else the texts of the nodes it is labelled by.
@@ -240,7 +298,7 @@ impl egui::Plugin for Mirror {
         let Some(update) = output.platform_output.accesskit_update.as_ref() else {
             return;
         };
-        let planned = plan(update, ctx.zoom_factor());
+        let planned = plan(update, ctx.zoom_factor(), &Words::get(ctx));
         #[cfg(target_arch = "wasm32")]
         dom::sync(&planned, &self.requests, ctx);
         if let Ok(mut last) = self.last.lock() {
@@ -261,6 +319,20 @@ pub fn describe(text: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_dot_above_is_said_and_egui_s_english_is_the_readers() {
+        let words = Words {
+            dot: "с точкой".into(),
+            double_dot: "с двумя точками".into(),
+            resize_panel: "Изменить ширину панели".into(),
+        };
+        assert_eq!(words.spoken("c = P_φ̇φ̇"), "c = P_φ с точкой φ с точкой");
+        assert_eq!(words.spoken("φ̈ = 0"), "φ с двумя точками = 0");
+        assert_eq!(words.spoken("Resize panel"), "Изменить ширину панели");
+        assert_eq!(Words::default().spoken("ω̇ (rad/s²)"), "ω dot (rad/s²)");
+        assert_eq!(words.spoken("Gyro σ"), "Gyro σ");
+    }
 
     #[test]
     fn numbers_read_like_the_slider_shows_them() {

@@ -13,7 +13,13 @@ pub(super) fn lab_picker(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command
     super::fit::labelled(ui, ("lab-picker", tr(app, "lab")), combo, |combo, ui| {
         choose_lab(combo, ui, app, commands)
     });
-    ui.label(RichText::new(app.sim().lab().paper()).small().italics());
+    let lab = app.sim().lab();
+    let paper = i18n::lab_text(
+        app.view().lang(),
+        &i18n::lab_paper_id(lab.id()),
+        lab.paper(),
+    );
+    ui.label(RichText::new(paper).small().italics());
 }
 
 /// The lab picker alone, a fifth of the row wide (a phone held sideways, in its bar).

@@ -129,6 +129,26 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         outages: outage_words,
         lang: app.view().lang(),
         steady_note: Box::new(move |s| tr_with(app, "plot-steady-note", &[("s", num_arg(app, s))])),
+        unit_noun: Box::new(move |unit| {
+            // A unit's word: `axis-of-deg`, `axis-of-deg-s` (its letters and digits, dashed).
+            let key: String = unit
+                .chars()
+                .map(|c| match c {
+                    '²' => '2',
+                    c if c.is_ascii_alphanumeric() => c,
+                    _ => '-',
+                })
+                .collect();
+            let id = format!("axis-of-{key}");
+            tr(
+                app,
+                if i18n::has(app.view().lang(), &id) {
+                    &id
+                } else {
+                    "axis-value"
+                },
+            )
+        }),
     }
 }
 

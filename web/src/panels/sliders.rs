@@ -25,11 +25,7 @@ pub(super) fn slider_rows(
         }
         let value = app.sim().params().get(spec.key);
         let locked = app.view().locks(spec.key);
-        let active = !locked
-            && (spec.outside_run
-                || spec
-                    .requires
-                    .is_none_or(|k| app.sim().params().get(k) != 0.0));
+        let active = !locked && (spec.outside_run || spec.acts_in(app.sim().params()));
         let row = |ui: &mut Ui| {
             let widget = |ui: &mut Ui| {
                 ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))

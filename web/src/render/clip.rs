@@ -102,6 +102,25 @@ pub fn upper_envelope(points: &[[f64; 2]], px: f64) -> Vec<[f64; 2]> {
     out
 }
 
+/// `points` of an angle in degrees broken where it wraps: between two points more than
+/// [`WRAP_DEG`] apart goes a NaN, so the line does not cross the plot from +180° to −180°
+/// (a roll through ±180° had been drawn as vertical lines).
+pub fn break_at_wraps(points: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(points.len());
+    for p in points {
+        if let Some(last) = out.last()
+            && (p[1] - last[1]).abs() > WRAP_DEG
+        {
+            out.push([0.5 * (p[0] + last[0]), f64::NAN]);
+        }
+        out.push(p);
+    }
+    out
+}
+
+/// A jump of an angle between two points that can only be its wrap (degrees).
+pub const WRAP_DEG: f64 = 270.0;
+
 fn inside(p: [f64; 2], lo: [f64; 2], hi: [f64; 2]) -> bool {
     (0..2).all(|k| p[k] >= lo[k] && p[k] <= hi[k])
 }
@@ -204,6 +223,25 @@ mod tests {
         assert!(top[2][0].is_nan());
         assert_eq!(top[3], [2.2, 1.0]);
         assert_eq!(upper_envelope(&saw, 0.0).len(), saw.len());
+    }
+
+    #[test]
+    fn an_angle_is_broken_where_it_wraps_and_nowhere_else() {
+        let roll = vec![
+            [0.0, 170.0],
+            [1.0, 179.0],
+            [2.0, -179.0],
+            [3.0, -170.0],
+            [4.0, 100.0],
+        ];
+        let broken = break_at_wraps(roll);
+        assert_eq!(broken.len(), 6, "{broken:?}");
+        assert!(broken[2][1].is_nan() && broken[2][0] == 1.5);
+        // A twist of 360° that does not wrap (paper 1's angle) is left whole.
+        let twist: Vec<[f64; 2]> = (0..10)
+            .map(|k| [f64::from(k), 360.0 - 40.0 * f64::from(k)])
+            .collect();
+        assert_eq!(break_at_wraps(twist.clone()), twist);
     }
 
     #[test]

@@ -79,6 +79,9 @@ pub struct PlotWords<'a> {
     pub reset: String,
     /// The reader's language, for the numbers on the axes.
     pub lang: attlab::i18n::Lang,
+    /// What series of one unit measure when their groups differ ("angle" for `deg`,
+    /// "value" for a unit without a word).
+    pub unit_noun: Box<dyn Fn(&str) -> String + 'a>,
     /// What a figure fitted to its steady part says of the seconds it leaves off the scale.
     pub steady_note: Box<dyn Fn(f64) -> String + 'a>,
 }
@@ -361,20 +364,22 @@ fn y_title(
     let Some(first) = specs().next() else {
         return [String::new(), String::new()];
     };
+    // What the series measure: their group's noun, else what their one unit measures
+    // ("angle" for degrees), else "value" (a lone "[°]" or "[–]" had said nothing).
     let noun = specs()
         .all(|s| s.group == first.group)
         .then(|| (words.group_axis)(first.group))
-        .flatten();
+        .flatten()
+        .unwrap_or_else(|| (words.unit_noun)(first.unit));
     let [full, short] = if !specs().all(|s| s.unit == first.unit) {
         [words.mixed_units.clone(), String::new()]
     } else {
-        let unit = match first.unit {
-            "" => "[–]".to_string(),
-            unit => format!("[{}]", (words.unit)(unit)),
-        };
-        match noun {
-            Some(noun) => [format!("{noun} {unit}"), unit],
-            None => [unit.clone(), unit],
+        match first.unit {
+            "" => [noun, String::new()],
+            unit => {
+                let unit = format!("[{}]", (words.unit)(unit));
+                [format!("{noun} {unit}"), unit]
+            }
         }
     };
     [full, short].map(|t| match (log, t.is_empty()) {
@@ -443,6 +448,7 @@ mod tests {
             reset: String::new(),
             lang: attlab::i18n::Lang::En,
             steady_note: Box::new(|_| String::new()),
+            unit_noun: Box::new(|u| format!("noun-of-{u}")),
         }
     }
 
@@ -466,14 +472,15 @@ mod tests {
         let full = |shown: &[usize], log| title(shown, log)[0].clone();
         assert_eq!(full(&[0, 1], false), "axis-error [°]");
         assert_eq!(full(&[2], false), "axis-rate [°/s]");
-        assert_eq!(full(&[4], true), "log10 axis-covariance [–]");
-        // A lab's own series, or two groups with one unit: the unit alone.
-        assert_eq!(full(&[3], false), "[°]");
-        assert_eq!(full(&[0, 3], false), "[°]");
+        // Without a unit, the noun alone (no "[–]").
+        assert_eq!(full(&[4], true), "log10 axis-covariance");
+        // A lab's own series, or two groups with one unit: what the unit measures.
+        assert_eq!(full(&[3], false), "noun-of-deg [°]");
+        assert_eq!(full(&[0, 3], false), "noun-of-deg [°]");
         assert_eq!(full(&[0, 2], true), "log10 mixed");
         // Without the words, for a short plot: the unit, or log10 alone.
         assert_eq!(title(&[0, 1], false)[1], "[°]");
-        assert_eq!(title(&[4], true)[1], "log10 [–]");
+        assert_eq!(title(&[4], true)[1], "log10");
         assert_eq!(title(&[0, 2], true)[1], "log10");
         assert_eq!(title(&[0, 2], false)[1], "");
         assert_eq!(title(&[], false), ["", ""]);

@@ -40,6 +40,10 @@ pub(super) fn draw_series(
         }
         label = format!("log10 {label}");
     }
+    // An angle wraps at ±180°: break the line there rather than cross the plot.
+    if spec.unit == "deg" && !look.log {
+        pts = super::clip::break_at_wraps(pts);
+    }
     let px = plot.transform().dvalue_dpos().map(f64::abs);
     let pieces = pieces(plot, &pts, look.pattern);
     let dense = look.pattern == LineStyle::Solid && super::dense::is_dense(&pts, px);

@@ -79,6 +79,9 @@ impl AppState {
                 self.lesson = None;
                 self.run.pause_at_s = None;
                 self.view.hidden.clear();
+                // The lab goes on from the last step's run (a question step had left it
+                // paused at t = 0, its plot empty).
+                self.run.playing = true;
             }
         }
     }

@@ -127,15 +127,62 @@ fn shown(lang: Lang, spec: &ParamSpec, v: f64) -> String {
         .to_string()
 }
 
-/// The lab's parameter whose key is nearest to `key` (an edit distance of at most a third of
-/// its length), if any.
+/// The lab's parameter whose key, or whose label spelled as a key, is nearest to `key` (an
+/// edit distance of at most a third of its length), if any: `gyro_sigma_deg_s` is paper
+/// 2's "Gyro σ" (`gyro_noise_deg_s`), which the keys alone had taken for "Gyro bias"
+/// (`gyro_bias_deg_s`, one letter nearer).
 fn nearest<'a>(lab: &'a dyn Lab, key: &str) -> Option<&'a ParamSpec> {
     let (best, distance) = lab
         .params()
         .iter()
-        .map(|s| (s, strsim::levenshtein(s.key, key)))
+        .map(|s| {
+            let by_key = strsim::levenshtein(s.key, key);
+            (s, by_key.min(strsim::levenshtein(&spelled(s), key)))
+        })
         .min_by_key(|(_, d)| *d)?;
     (distance <= (key.chars().count() / 3).max(2)).then_some(best)
+}
+
+/// A parameter's English label spelled as a key would be, with its key's unit at the end:
+/// "Gyro σ" of `gyro_noise_deg_s` is `gyro_sigma_deg_s`.
+fn spelled(spec: &ParamSpec) -> String {
+    let mut words: Vec<String> = Vec::new();
+    for word in spec.label.split(|c: char| !c.is_alphanumeric()) {
+        let word: String = word.chars().map(greek).collect::<String>().to_lowercase();
+        if !word.is_empty() {
+            words.push(word);
+        }
+    }
+    // The key's unit: its words after the last that is not a unit's.
+    let units = [
+        "deg", "s", "rad", "hz", "nt", "m", "mm", "kg", "m2", "g", "pct", "sqrt",
+    ];
+    let tail: Vec<&str> = (spec.key.rsplit('_'))
+        .take_while(|w| units.contains(w))
+        .collect();
+    words.extend(tail.into_iter().rev().map(str::to_string));
+    words.join("_")
+}
+
+/// A Greek letter's name, as a key spells it (others as they are).
+fn greek(c: char) -> String {
+    let name = match c {
+        'σ' => "sigma",
+        'γ' => "gamma",
+        'ω' => "omega",
+        'θ' => "theta",
+        'ϑ' => "theta",
+        'φ' => "phi",
+        'ψ' => "psi",
+        'ε' => "eps",
+        'α' => "alpha",
+        'λ' => "lambda",
+        'Δ' => "delta",
+        'ζ' => "zeta",
+        'τ' => "tau",
+        _ => return c.to_string(),
+    };
+    name.to_string()
 }
 
 #[cfg(test)]
@@ -165,6 +212,24 @@ mod tests {
             !p.iter()
                 .any(|m| m.contains("_deg_s=") && m.contains("this lab has"))
         );
+    }
+
+    #[test]
+    fn a_key_spelled_from_a_label_names_that_slider() {
+        let p = problems("lab=p2&gyro_sigma_deg_s=1e9");
+        assert_eq!(p.len(), 1, "{p:?}");
+        assert!(
+            p[0].contains("Gyro σ") && !p[0].contains("Gyro bias"),
+            "{}",
+            p[0]
+        );
+        let lab = attlab::labs::find("p2").unwrap();
+        let noise = lab
+            .params()
+            .iter()
+            .find(|s| s.key == "gyro_noise_deg_s")
+            .unwrap();
+        assert_eq!(spelled(noise), "gyro_sigma_deg_s");
     }
 
     #[test]

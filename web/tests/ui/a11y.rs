@@ -16,7 +16,7 @@ fn mirrored(lab_id: &str) -> (Harness<'static, AttLabApp>, Requests, LastPlan) {
     let h = Harness::builder()
         .with_size(egui::vec2(1400.0, 900.0))
         .with_context_setup(move |ctx| {
-            attlab_web::render::fonts::install(ctx);
+            attlab_web::app::setup_context(ctx);
             *slot.borrow_mut() = Some(Mirror::install(ctx));
         })
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);

@@ -92,7 +92,7 @@ fn the_views_words_and_orbit_inset_do_not_cover_one_another() {
                 let ghost_caption = scene.captions.0[1].clone();
                 let mut harness = Harness::builder()
                     .with_size(Vec2::new(w, h))
-                    .with_context_setup(attlab_web::render::fonts::install)
+                    .with_context_setup(attlab_web::app::setup_context)
                     .build_ui(move |ui| {
                         let rect = ui.ctx().content_rect();
                         body3d::show(ui, rect, &mut OrbitCamera::default(), &scene, true);

@@ -31,7 +31,7 @@ pub(super) fn window(
     let mut h = Harness::builder()
         .with_size(pixels)
         .with_context_setup(move |ctx| {
-            attlab_web::render::fonts::install(ctx);
+            attlab_web::app::setup_context(ctx);
             ctx.set_zoom_factor(zoom);
         })
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);

@@ -43,7 +43,7 @@ fn every_tile_a_step_names_is_on_the_laptop_screen_with_its_number() {
             }
             let mut h = Harness::builder()
                 .with_size(LAPTOP)
-                .with_context_setup(attlab_web::render::fonts::install)
+                .with_context_setup(attlab_web::app::setup_context)
                 .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app);
             h.run_steps(4);
             let texts = painted_at(&h);
@@ -127,7 +127,7 @@ fn on_a_projector_an_answered_step_keeps_its_why_and_next_in_view() {
             assert!(state.lesson_revealed(), "{link}: never reached its pause");
             let mut h = Harness::builder()
                 .with_size(screen)
-                .with_context_setup(attlab_web::render::fonts::install)
+                .with_context_setup(attlab_web::app::setup_context)
                 .build_ui_state(
                     |ui, app: &mut AttLabApp| app.frame(ui),
                     AttLabApp::headless(state),

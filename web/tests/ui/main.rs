@@ -43,7 +43,7 @@ fn harness(lab_id: &str) -> Harness<'static, AttLabApp> {
     // refuses to draw tofu), so a missing symbol in any label is caught here.
     Harness::builder()
         .with_size(egui::vec2(1400.0, 900.0))
-        .with_context_setup(attlab_web::render::fonts::install)
+        .with_context_setup(attlab_web::app::setup_context)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 

@@ -13,7 +13,7 @@ fn held(lab_id: &str, size: egui::Vec2) -> Harness<'static, AttLabApp> {
     app.apply(RunCommand::SetPlaying(false).into());
     Harness::builder()
         .with_size(size)
-        .with_context_setup(attlab_web::render::fonts::install)
+        .with_context_setup(attlab_web::app::setup_context)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 
@@ -60,7 +60,7 @@ fn a_phone_opened_on_a_question_step_shows_the_question_then_gives_the_page_to_t
     let state = attlab_web::state::AppState::from_fragment("lesson=p4&step=3");
     let mut h = Harness::builder()
         .with_size(egui::vec2(390.0, 844.0))
-        .with_context_setup(attlab_web::render::fonts::install)
+        .with_context_setup(attlab_web::app::setup_context)
         .build_ui_state(
             |ui, app: &mut AttLabApp| app.frame(ui),
             AttLabApp::headless(state),
@@ -158,4 +158,33 @@ fn a_phone_starts_the_lesson_from_its_bar_and_opens_the_why_when_the_run_shows_i
         "at the pause"
     );
     assert!(state.view().sheet_open, "the why is in view");
+}
+
+#[test]
+fn a_slow_finger_on_a_button_still_presses_it() {
+    let mut h = phone("p4");
+    h.run();
+    let at = h.get_by_label("Controls").rect().center();
+    h.event(egui::Event::PointerMoved(at));
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    // A second and a half held (egui's frames are 1/60 s apart in the harness).
+    for _ in 0..90 {
+        h.step();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    assert!(
+        h.state().state.view().sheet_open,
+        "held 1.5 s, the press did nothing"
+    );
 }

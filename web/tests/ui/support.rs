@@ -21,7 +21,7 @@ pub(super) fn harness_for(state: attlab_web::state::AppState) -> Harness<'static
     app.apply(RunCommand::SetPlaying(false).into());
     Harness::builder()
         .with_size(egui::vec2(1400.0, 900.0))
-        .with_context_setup(attlab_web::render::fonts::install)
+        .with_context_setup(attlab_web::app::setup_context)
         .build_ui_state(|ui, app: &mut AttLabApp| app.frame(ui), app)
 }
 

@@ -233,7 +233,8 @@ fn lab_listing(lang: Lang) -> String {
         let word = |msg: &str, english: &str| i18n::lab_text(lang, msg, english);
         let title = word(&i18n::lab_title_id(id), lab.title());
         let paper = i18n::t(lang, "cli-paper");
-        let _ = writeln!(out, "{id} — {title}\n  {paper}: {}", lab.paper());
+        let cited = word(&i18n::lab_paper_id(id), lab.paper());
+        let _ = writeln!(out, "{id} — {title}\n  {paper}: {cited}");
         for (i, p) in lab.presets().iter().enumerate() {
             let name = word(&i18n::preset_id(id, i), p.name);
             let help = word(&i18n::preset_help_id(id, i), p.help);

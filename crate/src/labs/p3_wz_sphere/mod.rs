@@ -55,18 +55,29 @@ fn bias_pattern(index: usize) -> Vector3<f64> {
     }
 }
 
+/// The motions (`profile`) each slider of the motion acts in (see [`motion_of`]): the
+/// paper's alone, every prescribed one (pitch acts in the coning and the tumble too), those
+/// that turn in yaw, the tumble alone.
+const PAPER_MOTION: &[f64] = &[0.0];
+const PRESCRIBED: &[f64] = &[0.0, 1.0, 2.0];
+const TURNING_IN_YAW: &[f64] = &[0.0, 2.0];
+const TUMBLE: &[f64] = &[2.0];
+
 const PARAMS: &[ParamSpec] = &[
     ParamSpec::choice("profile", "Motion", PROFILES, 0)
         .on_reset()
         .help("Which truth motion (applies at Reset)."),
     ParamSpec::real("roll_amp_deg", "Roll amplitude A_γ", "°", 0.0, 90.0, 25.0)
         .on_reset()
+        .requires_one_of("profile", PAPER_MOTION)
         .help("Paper: 25°."),
     ParamSpec::real("pitch_amp_deg", "Pitch amplitude A_ϑ", "°", 0.0, 89.0, 30.0)
         .on_reset()
+        .requires_one_of("profile", PRESCRIBED)
         .help("Paper: 30°; also the cone half-angle of the coning motion."),
     ParamSpec::real("yaw_rate_deg_s", "Yaw rate ω_ψ", "°/s", -20.0, 20.0, 1.0)
         .on_reset()
+        .requires_one_of("profile", TURNING_IN_YAW)
         .help("Paper: 1 °/s."),
     ParamSpec::real(
         "pitch_freq_rad_s",
@@ -78,6 +89,7 @@ const PARAMS: &[ParamSpec] = &[
     )
     .log()
     .on_reset()
+    .requires_one_of("profile", PRESCRIBED)
     .help("Paper: 0.05 rad/s."),
     ParamSpec::real(
         "roll_freq_rad_s",
@@ -89,6 +101,7 @@ const PARAMS: &[ParamSpec] = &[
     )
     .log()
     .on_reset()
+    .requires_one_of("profile", PAPER_MOTION)
     .help("Paper: 0.05 rad/s."),
     ParamSpec::real(
         "tumble_rate_deg_s",
@@ -100,6 +113,7 @@ const PARAMS: &[ParamSpec] = &[
     )
     .log()
     .on_reset()
+    .requires_one_of("profile", TUMBLE)
     .help("Roll rate of the slow tumble."),
     ParamSpec::real("gyro_bias_deg_s", "Gyro bias", "°/s", 0.0, 2.0, 0.1)
         .log()

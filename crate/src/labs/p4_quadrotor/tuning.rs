@@ -86,7 +86,7 @@ const GAMMAS: &[f64] = &[
 /// The lab's sweeps.
 pub const SWEEPS: &[SweepSpec] = &[
     SweepSpec::new(
-        "γ sweep: Table 1 (MSE, t_tr, J) over 5 seeds, 8 s with one step",
+        "γ: Table 1 (MSE, t_tr, J) over 5 seeds, 8 s with one step",
         roll_keys::GAMMA,
         GAMMAS,
         8.0,

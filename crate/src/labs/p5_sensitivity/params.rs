@@ -47,8 +47,8 @@ const SEQUENCE_NAMES: &[&str] = &[
 
 pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::choice("profile", "Motion", PROFILES, 0).on_reset().help("The paper's experiment holds the attitude still: the correction p steers the estimate to the reference."),
-    ParamSpec::real("rate_deg_s", "Rate", "°/s", 0.0, 60.0, 10.0).on_reset().help("Size of the constant or harmonic rate (axis (1, 2, 3)/√14)."),
-    ParamSpec::real("rate_freq_rad_s", "Harmonic frequency", "rad/s", 0.01, 5.0, 0.5).log().on_reset(),
+    ParamSpec::real("rate_deg_s", "Rate", "°/s", 0.0, 60.0, 10.0).on_reset().requires_one_of("profile", &[1.0, 2.0]).help("Size of the constant or harmonic rate (axis (1, 2, 3)/√14)."),
+    ParamSpec::real("rate_freq_rad_s", "Harmonic frequency", "rad/s", 0.01, 5.0, 0.5).log().on_reset().requires_one_of("profile", &[2.0]),
     ParamSpec::choice("sequence", "Angle sequence", SEQUENCE_NAMES, 0).on_reset().help("Krylov angles are z-y′-x″ (the digest's assumption); the others for comparison."),
     ParamSpec::real("init_1_rad", "Initial angle 1", "rad", -3.0, 3.0, 0.5).on_reset().help("Paper: (0.5, 0.7, 0.2)."),
     ParamSpec::real("init_2_rad", "Initial angle 2", "rad", -1.5, 1.5, 0.7).on_reset(),
