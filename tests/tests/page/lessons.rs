@@ -86,8 +86,41 @@ pub(crate) fn lesson_problems(session: &Session<'_>, base: &str) -> Vec<String> 
             &format!("screens/lesson-{id}.png"),
         ));
     }
+    problems.extend(steady_problems_at_laptop(session, base));
     if let Err(e) = session.set_viewport(None, false) {
         problems.push(format!("cannot end the emulation: {e}"));
     }
+    problems
+}
+
+/// Paper 2's first plot on a laptop once its filters have settled: scaled to the steady
+/// error and its band, not to the first second (`screens/laptop-p2-steady.png`).
+fn steady_problems_at_laptop(session: &Session<'_>, base: &str) -> Vec<String> {
+    const SETTLED_S: f64 = 60.0;
+    let tag = "p2's steady error on a laptop";
+    if let Err(e) = session.set_viewport(Some((1366, 768)), false) {
+        return vec![format!("{tag}: cannot emulate a laptop: {e}")];
+    }
+    if let Err(e) = session.open(&format!("{base}#lab=p2&speed=100&lang=en")) {
+        return vec![format!("{tag}: navigate failed: {e}")];
+    }
+    let mut problems = status_problems(&wait_for_frames(session));
+    let start = Instant::now();
+    let mut t = 0.0;
+    while start.elapsed() < PAUSE_TIMEOUT && t < SETTLED_S {
+        if let Ok(Value::String(text)) = session.execute(STATUS_SCRIPT) {
+            let status: Value = serde_json::from_str(&text).unwrap_or(Value::Null);
+            t = status["tS"].as_f64().unwrap_or(0.0);
+        }
+        sleep(Duration::from_millis(250));
+    }
+    if t < SETTLED_S {
+        problems.push(format!("{tag}: the run reached only {t:.1} s"));
+    }
+    problems.extend(console_and_screenshot(
+        session,
+        tag,
+        "screens/laptop-p2-steady.png",
+    ));
     problems
 }

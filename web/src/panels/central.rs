@@ -308,7 +308,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
         if let Some(angle) = est.angle_rad {
             shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
-                name: super::elide(&super::estimator_name(app, i), single_axis::DIAL_NAME),
+                name: super::estimator_cut(app, i, single_axis::DIAL_NAME),
                 color: colours.source(i + 1),
                 pattern: palette::pattern(i + 1),
                 angle_rad: angle,
@@ -355,16 +355,17 @@ fn draw_body(
         orbit: extras.orbit,
         // No wheel or double click on a touch screen (the ⟲ button resets a turned view):
         // a hint of one line leaves the body more of a phone's short view.
+        // In presenter mode the room is the body's: the lecturer knows how to turn it, and
+        // the hint had been printed over a body 60 px tall on a projector.
         captions: (
             top,
-            tr(
-                app,
-                if touch_screen(ui) {
-                    "body-hint-touch"
-                } else {
-                    "body-hint"
-                },
-            ),
+            if app.view().presenter {
+                String::new()
+            } else if touch_screen(ui) {
+                tr(app, "body-hint-touch")
+            } else {
+                tr(app, "body-hint")
+            },
         ),
         words: body3d::SceneWords {
             vectors: extras

@@ -76,7 +76,48 @@ pub(crate) fn estimator_name(app: &AppState, i: usize) -> String {
 /// The same, cut to [`SHORT_NAME`] characters with "…" where a view has little room (a
 /// chip, a dial's readout, a caption); the whole name is in the legend and on hover.
 pub(crate) fn estimator_short(app: &AppState, i: usize) -> String {
-    elide(&estimator_name(app, i), SHORT_NAME)
+    estimator_cut(app, i, SHORT_NAME)
+}
+
+/// Estimator `i`'s name cut to `max` characters so that no two of the lab's read alike.
+pub(crate) fn estimator_cut(app: &AppState, i: usize, max: usize) -> String {
+    let names: Vec<String> = (0..app.sim().estimators().len())
+        .map(|k| estimator_name(app, k))
+        .collect();
+    distinct_cuts(&names, max).swap_remove(i)
+}
+
+/// `names` cut to `max` characters (see [`elide`]), except that names whose cuts would read
+/// alike drop the words they share at their start ("…[θ, ω, b]", "…fed u_v + u₀"): paper
+/// 4's two "Beyond the paper: KF …" filters had read the same on their chips and on the
+/// dial.
+pub(crate) fn distinct_cuts(names: &[String], max: usize) -> Vec<String> {
+    let cut: Vec<String> = names.iter().map(|n| elide(n, max)).collect();
+    (0..names.len())
+        .map(|i| {
+            let alike: Vec<&String> = (0..names.len())
+                .filter(|j| *j != i && cut[*j] == cut[i])
+                .map(|j| &names[j])
+                .collect();
+            if alike.is_empty() {
+                return cut[i].clone();
+            }
+            // The characters every alike name shares at its start, back to a word's start
+            // where there is one ("Beyond the paper: KF " of both KF filters).
+            let chars: Vec<char> = names[i].chars().collect();
+            let common = (0..chars.len())
+                .take_while(|k| alike.iter().all(|o| o.chars().nth(*k) == Some(chars[*k])))
+                .count();
+            let word = chars[..common]
+                .iter()
+                .rposition(|c| *c == ' ')
+                .map_or(0, |k| k + 1);
+            let from = if word > 0 { word } else { common };
+            let rest: String = chars[from.min(chars.len())..].iter().collect();
+            let rest = rest.trim_start();
+            elide(&format!("…{rest}"), max)
+        })
+        .collect()
 }
 
 /// The longest name a chip or a dial shows whole.
@@ -330,5 +371,51 @@ fn stats_text(app: &AppState, narrow: bool) -> String {
                 ("series", rec.specs().len().into()),
             ],
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At a chip's and at the dial's width, no two of a lab's estimators read alike, in
+    /// either language.
+    #[test]
+    fn every_labs_estimators_read_apart_on_their_chips_and_the_dial() {
+        for lab in attlab::labs::all() {
+            for lang in attlab::i18n::Lang::ALL {
+                let link = format!("lab={}&lang={}", lab.id(), lang.code());
+                let app = AppState::from_fragment(&link);
+                let names: Vec<String> = (0..app.sim().estimators().len())
+                    .map(|i| estimator_name(&app, i))
+                    .collect();
+                let dial = lab.page().views.contains(&attlab::model::ViewKind::Dial);
+                let dial = dial.then_some(crate::render::single_axis::DIAL_NAME);
+                for max in std::iter::once(SHORT_NAME).chain(dial) {
+                    let cuts = distinct_cuts(&names, max);
+                    for (a, x) in cuts.iter().enumerate() {
+                        for (b, y) in cuts.iter().enumerate().skip(a + 1) {
+                            assert!(
+                                x != y || names[a] == names[b],
+                                "{link}: “{}” and “{}” both read “{x}” at {max}",
+                                names[a],
+                                names[b]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn names_that_would_read_alike_lose_the_words_they_share() {
+        let names = [
+            "Beyond the paper: KF [θ, ω, b]".to_string(),
+            "Beyond the paper: KF fed u_v + u₀".to_string(),
+            "Complementary filter".to_string(),
+        ];
+        let cuts = distinct_cuts(&names, 14);
+        assert_eq!(cuts, ["…[θ, ω, b]", "…fed u_v + u₀", "Complementary…"]);
     }
 }

@@ -17,6 +17,39 @@ pub mod single_axis;
 pub mod ticks;
 pub mod y_range;
 
+/// The corner of a small plot's legend: the one whose quarter of the data's extent holds
+/// the fewest of `points` (the phase portrait's and the w plane's legends had sat on their
+/// trails in the default top-right corner, which it stays on a tie).
+pub(crate) fn emptiest_corner<'a>(
+    points: impl Iterator<Item = &'a [f64; 2]> + Clone,
+) -> egui_plot::Corner {
+    use egui_plot::Corner;
+    let finite = points.filter(|p| p[0].is_finite() && p[1].is_finite());
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in finite.clone() {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+    let mut count = [0usize; 4];
+    for p in finite {
+        let (right, top) = (p[0] > mid[0], p[1] > mid[1]);
+        count[usize::from(right) + 2 * usize::from(!top)] += 1;
+    }
+    // Top right first: egui_plot's own corner, kept on a tie.
+    [
+        (1, Corner::RightTop),
+        (0, Corner::LeftTop),
+        (3, Corner::RightBottom),
+        (2, Corner::LeftBottom),
+    ]
+    .into_iter()
+    .min_by_key(|(k, _)| count[*k])
+    .map_or(Corner::RightTop, |(_, c)| c)
+}
+
 /// `text` laid out on one line, cut with "…" to `max_width` where it is wider (a view's
 /// title, an outage's label): the one way the renderer fits a label into its room.
 pub(crate) fn one_line(
@@ -53,6 +86,22 @@ pub(crate) fn rows_within(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_legend_goes_to_the_corner_the_data_leaves_empty() {
+        use egui_plot::Corner;
+        // A trail along the top and down the right: the bottom left is empty.
+        let trail = [
+            [0.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 0.0],
+            [0.9, 0.9],
+            [0.6, 0.95],
+            [1.0, 0.4],
+        ];
+        assert_eq!(super::emptiest_corner(trail.iter()), Corner::LeftBottom);
+        assert_eq!(super::emptiest_corner([].iter()), Corner::RightTop);
+    }
+
     /// The last character of a laid-out text.
     fn last_char(galley: &egui::Galley) -> Option<char> {
         galley

@@ -195,19 +195,18 @@ pub fn pattern(source_index: usize) -> LineStyle {
 /// source's, except where one source draws several series in one colour (a group tab's x,
 /// y and z of the truth, which had been three identical white lines), which then take the
 /// patterns in turn by their order, so the legend tells them apart; and an estimator's
-/// series that a figure colours by position (its x, y, z) are solid, their colours telling
-/// them apart (dashed, paper 2's noisy errors at the scale of their steady part had drawn a
+/// series that a figure colours by position (its x, y, z, in colours that differ) are
+/// solid, their colours telling them apart (dashed, paper 2's noisy errors at the scale of their steady part had drawn a
 /// dash every few pixels, 221 000 triangles a frame).
-pub fn patterns(
-    palette: &Palette,
-    specs: &[attlab::model::SeriesSpec],
-    shown: &[(usize, Color32)],
-) -> Vec<LineStyle> {
+pub fn patterns(specs: &[attlab::model::SeriesSpec], shown: &[(usize, Color32)]) -> Vec<LineStyle> {
     let source = |k: usize| specs[shown[k].0].source;
     let same = |a: usize, b: usize| source(a) == source(b) && shown[a].1 == shown[b].1;
     (0..shown.len())
         .map(|k| {
-            if source(k) > 0 && shown[k].1 != palette.source(source(k)) {
+            // Told apart by colour: the source's series in this plot differ in colour.
+            let by_colour =
+                (0..shown.len()).any(|j| source(j) == source(k) && shown[j].1 != shown[k].1);
+            if source(k) > 0 && by_colour {
                 return LineStyle::Solid;
             }
             let alike = (0..shown.len()).filter(|j| same(*j, k)).count();

@@ -106,7 +106,7 @@ pub fn show(
     // A point (a bucket's least and greatest value) every two pixels of the area's width.
     let pixels = (full.width() * ui.ctx().pixels_per_point()) as usize;
     let (points, no_data) = points_up_to(rec, &shown, log, (pixels / 2).clamp(200, MAX_POINTS));
-    let patterns = palette::patterns(colours, rec.specs(), &shown);
+    let patterns = palette::patterns(rec.specs(), &shown);
     let series = (&shown[..], &patterns[..]);
     let lines = super::legend::lines(rec, series, (log, state), outages, words, &no_data);
     let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);

@@ -317,10 +317,12 @@ pub fn show_plane(ui: &mut Ui, tracks: &[SphereTrack], lang: Lang) {
     let mut plane = Plot::new("w_plane").data_aspect(1.0);
     // A legend of many sources would hide the plane: the estimator chips give the colours.
     if tracks.len() <= ROOM_FOR_LEGEND.0 && ui.available_height() >= ROOM_FOR_LEGEND.1 {
+        let corner = super::emptiest_corner(tracks.iter().flat_map(|t| t.w.iter()));
         plane = plane.legend(
             Legend::default()
                 .text_style(egui::TextStyle::Small)
-                .background_alpha(0.6),
+                .background_alpha(0.6)
+                .position(corner),
         );
     }
     super::ticks::in_language(plane, lang)

@@ -92,7 +92,8 @@ fn draw_band(
     // The band's greatest 3σ in each pixel column: between updates P grows and at each
     // update it drops, a sawtooth that, drawn whole at a steady part's scale, had shaded
     // the window four times over in vertical strokes.
-    let px = plot.transform().dvalue_dpos()[0].abs();
+    // Columns of a few pixels: a bucket's least and greatest P fall a pixel or two apart.
+    let px = ENVELOPE_PX * plot.transform().dvalue_dpos()[0].abs();
     let sigma3: Vec<[f64; 2]> = (rec.plot_points(var, points.max(2)).into_iter())
         .map(|p| [p[0], 3.0 * p[1].max(0.0).sqrt() * scale])
         .collect();
@@ -130,3 +131,6 @@ pub fn pieces(
     let thin = |piece| super::clip::thin_to_pixels(piece, px);
     pieces.into_iter().map(thin).collect()
 }
+
+/// The width of a band's envelope columns (pixels).
+const ENVELOPE_PX: f64 = 4.0;

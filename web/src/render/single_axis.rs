@@ -77,7 +77,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], (title, lang): (&st
     let colours = super::palette::of(ui.visuals());
     painter.rect_filled(rect, 4.0, colours.view_bg);
     view_title(&painter, rect, title, colours.ink);
-    let (center, radius, readouts, row) = dial_layout(rect, sources.len());
+    let (center, radius, readouts, row, read) = dial_or_readouts(rect, sources.len());
     painter.circle_stroke(center, radius, Stroke::new(1.5, colours.ink_dim));
     for k in 0..36 {
         let a = f64::from(k) * 10f64.to_radians();
@@ -129,7 +129,7 @@ pub fn dial(ui: &mut Ui, rect: Rect, sources: &[AxisSource], (title, lang): (&st
         );
     }
     painter.circle_filled(center, 4.0, colours.ink);
-    for (k, s) in sources.iter().enumerate() {
+    for (k, s) in sources.iter().enumerate().filter(|_| read) {
         let at = readouts + Vec2::new(0.0, row * k as f32);
         // The number first, so a long name is what a narrow view cuts, never the angle.
         let text = if s.angle_rad.is_finite() {
@@ -162,6 +162,26 @@ const READOUT_W_PT: f32 = 125.0;
 pub const DIAL_NAME: usize = 8;
 /// Height of the dial's title (points).
 const DIAL_TITLE_PT: f32 = 24.0;
+
+/// The dial's layout with its `n` readouts, or without them where they would leave it a
+/// radius under [`SMALL_DIAL_PT`] (a projector's short top row had drawn a dial 30 points
+/// across over five lines of numbers): the needles then speak alone, the numbers being the
+/// lesson's tiles. The last value says whether the readouts are drawn.
+fn dial_or_readouts(rect: Rect, n: usize) -> (Pos2, f32, Pos2, f32, bool) {
+    let (center, radius, at, row) = dial_layout(rect, n);
+    if radius >= SMALL_DIAL_PT {
+        return (center, radius, at, row, true);
+    }
+    let (c, r, at0, row0) = dial_layout(rect, 0);
+    if r > radius {
+        (c, r, at0, row0, false)
+    } else {
+        (center, radius, at, row, true)
+    }
+}
+
+/// A dial smaller than this (radius, points) gives its readouts' room to the needles.
+const SMALL_DIAL_PT: f32 = 36.0;
 
 /// Where the dial goes in `rect` with `n` readouts: its centre and radius, the top left of
 /// the readouts and their line height. A wide, low rect (a projector's short top row) puts
@@ -218,7 +238,10 @@ pub fn phase_portrait(
         let mut portrait = Plot::new("phase_portrait").height((rect.height() - 24.0).max(60.0));
         let (most, tall) = super::riemann_sphere::ROOM_FOR_LEGEND;
         if sources.len() <= most && rect.height() >= tall {
-            portrait = portrait.legend(Legend::default().text_style(egui::TextStyle::Small));
+            let shown_trails = (trails.trails.iter().zip(shown)).filter(|(_, v)| **v);
+            let corner = super::emptiest_corner(shown_trails.flat_map(|((_, t), _)| t.iter()));
+            let legend = Legend::default().text_style(egui::TextStyle::Small);
+            portrait = portrait.legend(legend.position(corner));
         }
         super::ticks::in_language(portrait, lang)
             .x_axis_label(angle_axis)
@@ -311,6 +334,21 @@ mod tests {
             );
             assert!(row >= 10.0, "{tag}: lines {row} pt apart");
         }
+    }
+
+    #[test]
+    fn a_short_dial_gives_its_readouts_room_to_the_needles() {
+        // A projector's top row in presenter mode: about 190 × 170 points.
+        let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(190.0, 170.0));
+        let (_, with, ..) = dial_layout(rect, 5);
+        let (_, radius, _, _, read) = dial_or_readouts(rect, 5);
+        assert!(
+            with < SMALL_DIAL_PT && !read && radius > 2.0 * with,
+            "{with} → {radius}"
+        );
+        // A laptop's: the readouts stay.
+        let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(300.0, 420.0));
+        assert!(dial_or_readouts(rect, 5).4);
     }
 
     #[test]

@@ -68,7 +68,7 @@ pub(super) fn legend_texts(app: &AppState) -> Vec<String> {
     let words = panels::plot_words(app);
     let outages = panels::outages(app);
     let (_, no_data) = plots::points(sim.recorder(), &shown, log);
-    let patterns = palette::patterns(colours, sim.recorder().specs(), &shown);
+    let patterns = palette::patterns(sim.recorder().specs(), &shown);
     legend::lines(
         sim.recorder(),
         (&shown, &patterns),
