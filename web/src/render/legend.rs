@@ -14,7 +14,7 @@ use attlab::i18n::LegendParts;
 use attlab::model::Outage;
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
-use egui_plot::LineStyle;
+use egui_plot::{LineStyle, MarkerShape};
 
 /// One line of a legend.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -82,9 +82,12 @@ pub fn rows(legends: &[LegendParts]) -> Vec<Row> {
 /// outage's shading (its position among the outages) with its words.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Line {
-    /// A heading or a series' entry; an entry's series (index into the recorder), colour
-    /// and line pattern.
-    Series(Row, Option<(usize, Color32, LineStyle)>),
+    /// A heading or a series' entry; an entry's series (index into the recorder), colour,
+    /// line pattern and marker.
+    Series(
+        Row,
+        Option<(usize, Color32, LineStyle, Option<MarkerShape>)>,
+    ),
     /// The ±3σ bands, with their words.
     Bands(String),
     /// Outage `k` and its words.
@@ -131,8 +134,10 @@ pub fn lines(
         .map(|mut row| {
             let series = match &mut row {
                 Row::Entry { index, text, .. } => {
-                    let series = (shown.get(*index).copied())
-                        .map(|(i, colour)| (i, colour, patterns[*index]));
+                    let series = (shown.get(*index).copied()).map(|(i, colour)| {
+                        let marker = palette::marker(rec.specs()[i].source);
+                        (i, colour, patterns[*index], marker)
+                    });
                     if series.is_some_and(|(i, ..)| no_data.contains(&i)) {
                         let none = if log {
                             &words.no_positive
@@ -260,12 +265,21 @@ pub fn show(ui: &mut Ui, lines: &[Line], placed: Placed) {
                     SWATCH_PT,
                 );
                 match line {
-                    Line::Series(_, Some((_, color, pattern))) => {
+                    Line::Series(_, Some((_, color, pattern, marker))) => {
                         let y = mark.center().y;
                         let stroke = egui::Stroke::new(2.5, *color);
                         let pattern = *pattern;
                         let ends = vec![egui::pos2(mark.min.x, y), egui::pos2(mark.max.x, y)];
                         palette::styled_polyline(ui.painter(), ends, stroke, pattern);
+                        if let Some(shape) = marker {
+                            let radius = super::series_lines::MARKER_RADIUS;
+                            palette::paint_marker(
+                                ui.painter(),
+                                mark.center(),
+                                radius,
+                                (*shape, *color),
+                            );
+                        }
                     }
                     Line::Bands(_) => {
                         let y = mark.center().y;

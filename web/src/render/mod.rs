@@ -2,6 +2,7 @@
 //! portrait, and the plots.
 
 pub mod body3d;
+mod body_captions;
 pub mod clip;
 pub mod dense;
 pub mod fonts;

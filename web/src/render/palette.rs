@@ -220,6 +220,59 @@ pub fn patterns(specs: &[attlab::model::SeriesSpec], shown: &[(usize, Color32)])
         .collect()
 }
 
+/// The marker a plot puts along the line of a source past the palette's first round of
+/// colours (the eighth estimator on), by round: a third channel besides colour and
+/// pattern, which a noisy line on a log plot hides (paper 2's sixteen filters of "every
+/// filter" had shown in about five colours with dashes no one could see).
+pub fn marker(source_index: usize) -> Option<egui_plot::MarkerShape> {
+    use egui_plot::MarkerShape;
+    let round = source_index.checked_sub(1)? / ESTIMATOR_COLOURS;
+    const ROUNDS: [MarkerShape; 4] = [
+        MarkerShape::Circle,
+        MarkerShape::Square,
+        MarkerShape::Diamond,
+        MarkerShape::Up,
+    ];
+    round.checked_sub(1).map(|r| ROUNDS[r % ROUNDS.len()])
+}
+
+/// Paints `shape` `radius` points about `center` in `colour` (a legend's swatch).
+pub fn paint_marker(
+    painter: &egui::Painter,
+    center: egui::Pos2,
+    radius: f32,
+    (shape, colour): (egui_plot::MarkerShape, Color32),
+) {
+    use egui_plot::MarkerShape;
+    let r = radius;
+    let at = |dx: f32, dy: f32| center + egui::vec2(dx, dy);
+    let polygon =
+        |points: Vec<egui::Pos2>| egui::Shape::convex_polygon(points, colour, egui::Stroke::NONE);
+    match shape {
+        MarkerShape::Square => {
+            painter.rect_filled(
+                egui::Rect::from_center_size(center, egui::vec2(1.8 * r, 1.8 * r)),
+                0.0,
+                colour,
+            );
+        }
+        MarkerShape::Diamond => {
+            painter.add(polygon(vec![
+                at(0.0, -r),
+                at(r, 0.0),
+                at(0.0, r),
+                at(-r, 0.0),
+            ]));
+        }
+        MarkerShape::Up => {
+            painter.add(polygon(vec![at(0.0, -r), at(r, 0.8 * r), at(-r, 0.8 * r)]));
+        }
+        _ => {
+            painter.circle_filled(center, r, colour);
+        }
+    }
+}
+
 /// Draws `points` as one polyline in `style` with `stroke` (the views' trails use the
 /// plots' patterns).
 pub fn styled_polyline(

@@ -159,14 +159,19 @@ fn the_focus_ring_stands_out_from_panels_controls_and_views() {
 }
 
 #[test]
-fn sixteen_filters_get_sixteen_looks() {
-    let looks: Vec<(Color32, LineStyle)> =
-        (0..SOURCES).map(|s| (DARK.source(s), pattern(s))).collect();
+fn thirty_filters_get_thirty_looks() {
+    // Paper 2's thirty: colour, pattern and, from the eighth, a marker.
+    let looks: Vec<(Color32, LineStyle, Option<egui_plot::MarkerShape>)> = (0..=30)
+        .map(|s| (DARK.source(s), pattern(s), marker(s)))
+        .collect();
     for (i, a) in looks.iter().enumerate() {
         for b in &looks[i + 1..] {
             assert_ne!(a, b);
         }
     }
+    // The first round of colours keeps its lines bare; the next ones differ by marker.
+    assert!((0..=7).all(|s| marker(s).is_none()));
+    assert!(marker(8).is_some() && marker(8) != marker(15) && marker(15) != marker(22));
 }
 
 #[test]

@@ -61,8 +61,37 @@ pub(super) fn draw_series(
                 .style(look.pattern),
         );
     }
+    if let Some(shape) = super::palette::marker(spec.source) {
+        let px = plot.transform().dvalue_dpos()[0].abs();
+        let along = markers_along(&pts, MARKER_EVERY_PX * px);
+        let points = egui_plot::Points::new(label.clone(), along)
+            .shape(shape)
+            .radius(MARKER_RADIUS)
+            .filled(true)
+            .color(look.color);
+        plot.points(points);
+    }
     draw_band(plot, rec, (spec, pts.len()), look, legend);
     dense.then_some(pieces)
+}
+
+/// Pixels between two markers along a line.
+const MARKER_EVERY_PX: f64 = 70.0;
+/// A marker's radius (points).
+pub(super) const MARKER_RADIUS: f32 = 3.5;
+
+/// The first finite point of `pts` in each stretch `every` wide along x.
+fn markers_along(pts: &[[f64; 2]], every: f64) -> Vec<[f64; 2]> {
+    if !(every.is_finite() && every > 0.0) {
+        return Vec::new();
+    }
+    let mut out: Vec<[f64; 2]> = Vec::new();
+    for p in pts.iter().filter(|p| p[0].is_finite() && p[1].is_finite()) {
+        if out.last().is_none_or(|last| p[0] - last[0] >= every) {
+            out.push(*p);
+        }
+    }
+    out
 }
 
 /// The first, lowest, highest and last points of `piece`: what a plot's bounds need of it.

@@ -131,11 +131,13 @@ impl AppState {
                 .map(|i| i + 1)
                 .collect()
         };
-        // The 3D ghost shows the first filter the step discusses that has an attitude (it
-        // had stayed on the lab's first filter while a step was about another).
+        // The 3D ghost shows the filter the step is about, the first of its tiles' or of the
+        // filters it shows that has an attitude (it had stayed on the lab's first filter
+        // while a step was about another).
         let estimates = self.sim.estimates();
-        if let Some(i) = (step.show.iter())
-            .filter_map(|id| ids.iter().position(|e| e == id))
+        let about = (step.tiles.iter().map(|t| t.source)).chain(step.show.iter().copied());
+        if let Some(i) = about
+            .filter_map(|id| ids.iter().position(|e| *e == id))
             .find(|i| estimates.get(*i).is_some_and(|e| e.quaternion().is_some()))
         {
             self.view.ghost_index = i;

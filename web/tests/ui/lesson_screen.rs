@@ -81,7 +81,8 @@ fn a_step_opened_from_its_link_starts_its_sweep_and_ghosts_its_filter() {
             let sweep = state.run().sweep.as_ref().map(|(k, _)| *k);
             assert_eq!(sweep, step.sweep, "{link}: the step's sweep");
             let ghost = state.sim().estimators()[state.view().ghost_index].id();
-            let with_attitude: Vec<&str> = (step.show.iter().copied())
+            let about = (step.tiles.iter().map(|t| t.source)).chain(step.show.iter().copied());
+            let with_attitude: Vec<&str> = about
                 .filter(|id| {
                     let k = state.sim().estimators().iter().position(|e| e.id() == *id);
                     k.is_some_and(|k| state.sim().estimates()[k].quaternion().is_some())
