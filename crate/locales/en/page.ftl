@@ -239,6 +239,7 @@ sweep-max-axis = log10 max |value|
 sweep-objective-axis = objective
 sweep-argmin = argmin of { $name } over this sweep's { $n } values: { $at }
 sweep-argmin-marker = argmin { $name }
+sweep-cell-range = { $value }: the median of { $n } runs, which range from { $lo } to { $hi }
 sweep-heat-needs = A heat map needs at least two positive values on each axis.
 sweep-heat-colour = colour: log10 { $name }, from { $lo } (dark) to { $hi } (bright). Optimum: { $at } ({ $name } = { $best }).
 sweep-heat-filling = colour: log10 { $name }; cells fill in as the sweep runs.

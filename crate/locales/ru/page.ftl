@@ -253,6 +253,7 @@ sweep-max-axis = log10 max |значение|
 sweep-objective-axis = критерий
 sweep-argmin = минимум { $name } по { $n } значениям этого перебора: { $at }
 sweep-argmin-marker = минимум { $name }
+sweep-cell-range = { $value }: медиана { $n } прогонов, разброс от { $lo } до { $hi }
 sweep-heat-needs = Для тепловой карты нужно хотя бы по два положительных значения по каждой оси.
 sweep-heat-colour = цвет: log10 { $name }, от { $lo } (тёмный) до { $hi } (яркий). Оптимум: { $at } ({ $name } = { $best }).
 sweep-heat-filling = цвет: log10 { $name }; клетки заполняются по ходу перебора.

@@ -141,6 +141,8 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
             .map(|i| i + 1)
     };
     crate::render::ticks::in_language(Plot::new(("diagram_plot", d.title)), app.view().lang())
+        // The wheel scrolls the panel; it had panned a plot that passed under the pointer.
+        .allow_scroll(false)
         .height(height)
         .data_aspect(1.0)
         .include_x(-1.2)

@@ -105,13 +105,21 @@ impl Line {
     }
 }
 
+/// A plot's shown series (index into the recorder, colour), each one's line pattern and
+/// each one's marker.
+pub type Looks<'a> = (
+    &'a [(usize, Color32)],
+    &'a [LineStyle],
+    &'a [Option<MarkerShape>],
+);
+
 /// The lines of the legend of `shown` series (index into `rec`, colour), in order: the
 /// series grouped by [`rows`] (an entry of a series in `no_data` says it has no values),
 /// then the ±3σ bands where a drawn series has one, then each outage where they are
 /// shaded.
 pub fn lines(
     rec: &Recorder,
-    (shown, patterns): (&[(usize, Color32)], &[LineStyle]),
+    (shown, patterns, markers): Looks<'_>,
     (log, state): (bool, &PlotState),
     outages: &[Outage],
     words: &PlotWords<'_>,
@@ -134,10 +142,8 @@ pub fn lines(
         .map(|mut row| {
             let series = match &mut row {
                 Row::Entry { index, text, .. } => {
-                    let series = (shown.get(*index).copied()).map(|(i, colour)| {
-                        let marker = palette::marker(rec.specs()[i].source);
-                        (i, colour, patterns[*index], marker)
-                    });
+                    let series = (shown.get(*index).copied())
+                        .map(|(i, colour)| (i, colour, patterns[*index], markers[*index]));
                     if series.is_some_and(|(i, ..)| no_data.contains(&i)) {
                         let none = if log {
                             &words.no_positive

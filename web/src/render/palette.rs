@@ -236,6 +236,24 @@ pub fn marker(source_index: usize) -> Option<egui_plot::MarkerShape> {
     round.checked_sub(1).map(|r| ROUNDS[r % ROUNDS.len()])
 }
 
+/// The marker of each of a plot's `shown` series (index into `specs`, colour): its
+/// source's [`marker`] where another source in the plot draws in the same colour, none
+/// where colour already tells it apart (a figure's x, y and z of the eighth filter, in
+/// three colours of their own, had carried the markers meant for the sixteen-filter plot).
+pub fn markers(
+    specs: &[attlab::model::SeriesSpec],
+    shown: &[(usize, Color32)],
+) -> Vec<Option<egui_plot::MarkerShape>> {
+    let source = |k: usize| specs[shown[k].0].source;
+    (0..shown.len())
+        .map(|k| {
+            let shared =
+                (0..shown.len()).any(|j| source(j) != source(k) && shown[j].1 == shown[k].1);
+            marker(source(k)).filter(|_| shared)
+        })
+        .collect()
+}
+
 /// Paints `shape` `radius` points about `center` in `colour` (a legend's swatch).
 pub fn paint_marker(
     painter: &egui::Painter,

@@ -175,6 +175,27 @@ fn thirty_filters_get_thirty_looks() {
 }
 
 #[test]
+fn a_marker_where_two_sources_share_a_colour_only() {
+    use attlab::model::{SeriesGroup, SeriesKey, SeriesSpec, q};
+    let spec = |source: usize| {
+        SeriesSpec::of(SeriesKey::new("kf", &q::RATE_X_DEG_S), SeriesGroup::Rate)
+            .from_source(source)
+    };
+    let specs = [spec(1), spec(8), spec(8), spec(8)];
+    // Sources 1 and 8 in one plot take the same colour: 8 gets its marker.
+    let both = [(0, DARK.source(1)), (1, DARK.source(8))];
+    assert_eq!(DARK.source(1), DARK.source(8));
+    assert_eq!(markers(&specs, &both), vec![None, marker(8)]);
+    // Source 8's x, y and z alone, coloured by position: colour tells them apart.
+    let alone = [
+        (1, DARK.source(8)),
+        (2, DARK.others[0]),
+        (3, DARK.others[1]),
+    ];
+    assert!(markers(&specs, &alone).iter().all(Option::is_none));
+}
+
+#[test]
 fn the_simulation_is_the_published_one() {
     // Pure red as a protanope sees it (Machado et al.'s matrix, first column): dark olive.
     let l = lab([0.152286, 0.114503, -0.003882]);

@@ -107,7 +107,8 @@ pub fn show(
     let pixels = (full.width() * ui.ctx().pixels_per_point()) as usize;
     let (points, no_data) = points_up_to(rec, &shown, log, (pixels / 2).clamp(200, MAX_POINTS));
     let patterns = palette::patterns(rec.specs(), &shown);
-    let series = (&shown[..], &patterns[..]);
+    let markers = palette::markers(rec.specs(), &shown);
+    let series = (&shown[..], &patterns[..], &markers[..]);
     let lines = super::legend::lines(rec, series, (log, state), outages, words, &no_data);
     let (plot_rect, legend_rect, placed) = super::legend::place(ui, full, &lines);
     // The wheel zooms about the pointer (it panned the data out of view); a visible button
@@ -134,7 +135,8 @@ pub fn show(
                 wheel_zoom(plot);
                 outages::shade(plot, &bands, colours);
                 let look = (line_width, log, state.show_bands);
-                let dense = draw_lines(plot, rec, (&shown, points, &patterns), look, words);
+                let drawn = (&shown[..], points, &patterns[..], &markers[..]);
+                let dense = draw_lines(plot, rec, drawn, look, words);
                 // Moved from where the figure opens (the steady fit keeps its y fixed).
                 let auto = plot.auto_bounds();
                 let moved = if steady.is_some() {
@@ -240,20 +242,23 @@ fn steady_fit(
 fn draw_lines(
     plot: &mut egui_plot::PlotUi<'_>,
     rec: &Recorder,
-    (shown, points, patterns): (
+    (shown, points, patterns, markers): (
         &[(usize, Color32)],
         Vec<Vec<[f64; 2]>>,
         &[egui_plot::LineStyle],
+        &[Option<egui_plot::MarkerShape>],
     ),
     (width, log, bands): (f32, bool, bool),
     words: &PlotWords<'_>,
 ) -> Vec<(Vec<Vec<[f64; 2]>>, (Color32, f32))> {
     let mut dense = Vec::new();
-    for (((i, color), pts), pattern) in shown.iter().zip(points).zip(patterns) {
+    let looks = patterns.iter().zip(markers);
+    for (((i, color), pts), (pattern, marker)) in shown.iter().zip(points).zip(looks) {
         let style = super::series_lines::LineLook {
             color: *color,
             width,
             pattern: *pattern,
+            marker: *marker,
             log,
             bands,
         };

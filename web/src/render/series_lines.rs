@@ -15,6 +15,8 @@ pub(super) struct LineLook {
     pub(super) width: f32,
     /// The source's line pattern.
     pub(super) pattern: LineStyle,
+    /// The marker along the line where colour and pattern do not tell it apart.
+    pub(super) marker: Option<egui_plot::MarkerShape>,
     /// log10 of the values.
     pub(super) log: bool,
     /// ±3σ bands where the series has one.
@@ -61,7 +63,7 @@ pub(super) fn draw_series(
                 .style(look.pattern),
         );
     }
-    if let Some(shape) = super::palette::marker(spec.source) {
+    if let Some(shape) = look.marker {
         let px = plot.transform().dvalue_dpos()[0].abs();
         let along = markers_along(&pts, MARKER_EVERY_PX * px);
         let points = egui_plot::Points::new(label.clone(), along)

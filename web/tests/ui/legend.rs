@@ -69,9 +69,10 @@ pub(super) fn legend_texts(app: &AppState) -> Vec<String> {
     let outages = panels::outages(app);
     let (_, no_data) = plots::points(sim.recorder(), &shown, log);
     let patterns = palette::patterns(sim.recorder().specs(), &shown);
+    let markers = palette::markers(sim.recorder().specs(), &shown);
     legend::lines(
         sim.recorder(),
-        (&shown, &patterns),
+        (&shown, &patterns, &markers),
         (log, plot),
         &outages,
         &words,

@@ -31,6 +31,7 @@ mod shader;
 mod side_panel;
 mod status;
 mod support;
+mod sweep_table;
 mod teacher;
 
 use support::{harness_for, harness_from_link, painted};

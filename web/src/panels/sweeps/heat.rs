@@ -77,6 +77,8 @@ pub(super) fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         .overlay
         .map_or_else(Vec::new, |f| f(app.sim().params()));
     crate::render::ticks::in_language(Plot::new(("sweep_heat", i)), app.view().lang())
+        // The wheel scrolls the panel; it had panned a plot that passed under the pointer.
+        .allow_scroll(false)
         .height(260.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))

@@ -4,16 +4,18 @@
 //! with the lab's lines over it and the optimum marked (paper 4's Q landscape).
 
 mod heat;
+mod table;
 mod words;
 
 use super::{arg, lab_word, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::analysis::sweep::{Sweep, SweepPoint};
 use attlab::i18n;
-use attlab::model::{SweepSpec, fmt_sig};
+use attlab::model::SweepSpec;
 use egui::{RichText, Ui};
 use egui_plot::{Legend, Line, Plot, Points};
 use heat::heat_map;
+use table::score_table;
 use words::Words;
 
 /// The lab's sweeps.
@@ -207,6 +209,8 @@ fn rms_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         }
     }
     crate::render::ticks::in_language(Plot::new(("sweep", i)), app.view().lang())
+        // The wheel scrolls the panel; it had panned a plot that passed under the pointer.
+        .allow_scroll(false)
         .height(170.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))
@@ -229,6 +233,8 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let spec = s.spec();
     let w = Words::of(app, s, i);
     crate::render::ticks::in_language(Plot::new(("sweep_objectives", i)), app.view().lang())
+        // The wheel scrolls the panel; it had panned a plot that passed under the pointer.
+        .allow_scroll(false)
         .height(190.0)
         .legend(Legend::default().text_style(egui::TextStyle::Small))
         .x_axis_label(w.log_axis(spec.key))
@@ -271,58 +277,4 @@ fn argmins(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
             ui.label(RichText::new(tr_with(app, "sweep-argmin", &args)).strong());
         }
     }
-}
-
-/// One row per value: the median scores (with their range over the seeds) and objectives;
-/// each objective's argmin in bold.
-fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
-    let colours = crate::render::palette::of(ui.visuals());
-    let Some(scoring) = s.scoring() else { return };
-    let spec = s.spec();
-    let w = Words::of(app, s, i);
-    let lang = app.view().lang();
-    let cell = |x: f64| {
-        if x.is_finite() {
-            i18n::number(lang, &fmt_sig(x))
-        } else {
-            "—".into()
-        }
-    };
-    egui::ScrollArea::horizontal()
-        .id_salt(("sweep_table_scroll", i))
-        .show(ui, |ui| {
-            egui::Grid::new(("sweep_table", i))
-                .striped(true)
-                .show(ui, |ui| {
-                    ui.label(RichText::new(w.param(spec.key)).small().strong());
-                    for (j, n) in scoring.names.iter().enumerate() {
-                        ui.label(RichText::new(w.score(j, n)).small().strong());
-                    }
-                    for (j, (n, _)) in scoring.objectives.iter().enumerate() {
-                        ui.label(RichText::new(w.objective(j, n)).small().strong());
-                    }
-                    ui.end_row();
-                    for p in &s.points {
-                        ui.label(RichText::new(cell(p.value)).small().monospace());
-                        for (v, r) in p.scores.iter().zip(&p.score_range) {
-                            let text = if p.runs > 1 && r[0].is_finite() {
-                                format!("{} [{}–{}]", cell(*v), cell(r[0]), cell(r[1]))
-                            } else {
-                                cell(*v)
-                            };
-                            ui.label(RichText::new(text).small().monospace());
-                        }
-                        for (k, j) in p.objectives.iter().enumerate() {
-                            let best = s.argmin(k).is_some_and(|b| std::ptr::eq(b, p));
-                            let text = RichText::new(cell(*j)).small().monospace();
-                            ui.label(if best {
-                                text.strong().color(colours.source(k + 1))
-                            } else {
-                                text
-                            });
-                        }
-                        ui.end_row();
-                    }
-                });
-        });
 }
