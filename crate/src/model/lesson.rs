@@ -269,46 +269,20 @@ impl Quote {
         self.holding(Holds::AtMost)
     }
 
-    const fn holding(self, holds: Holds) -> Self {
-        match self.source {
-            QuoteSource::Run {
-                with,
-                reading,
-                scale,
-                ..
-            } => Self {
-                shown: self.shown,
-                source: QuoteSource::Run {
-                    with,
-                    reading,
-                    holds,
-                    scale,
-                },
-            },
-            _ => self,
+    const fn holding(mut self, holds: Holds) -> Self {
+        if let QuoteSource::Run { holds: h, .. } = &mut self.source {
+            *h = holds;
         }
+        self
     }
 
     /// The same, the reading multiplied by `scale` into the words' unit (a degree reading
     /// written in radians: π/180).
-    pub const fn scaled(self, scale: f64) -> Self {
-        match self.source {
-            QuoteSource::Run {
-                with,
-                reading,
-                holds,
-                ..
-            } => Self {
-                shown: self.shown,
-                source: QuoteSource::Run {
-                    with,
-                    reading,
-                    holds,
-                    scale,
-                },
-            },
-            _ => self,
+    pub const fn scaled(mut self, scale: f64) -> Self {
+        if let QuoteSource::Run { scale: s, .. } = &mut self.source {
+            *s = scale;
         }
+        self
     }
 }
 

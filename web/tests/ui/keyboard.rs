@@ -135,13 +135,7 @@ fn the_wheel_zooms_the_plot_and_a_visible_button_resets_it() {
     h.hover_at(over_plot);
     h.run();
     for _ in 0..3 {
-        h.event(egui::Event::MouseWheel {
-            unit: egui::MouseWheelUnit::Point,
-            delta: egui::vec2(0.0, 60.0),
-            phase: egui::TouchPhase::Move,
-            source: egui::MouseWheelSource::Unknown,
-            modifiers: Modifiers::NONE,
-        });
+        support::wheel(&mut h, 60.0);
         h.run();
     }
     h.get_by_label("⟲").click();

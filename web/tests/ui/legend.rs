@@ -83,26 +83,10 @@ pub(super) fn legend_texts(app: &AppState) -> Vec<String> {
     .collect()
 }
 
-/// Every text painted whole inside its clip rectangle, with that rectangle.
-fn whole_texts(h: &Harness<'_, AttLabApp>) -> Vec<(Rect, String)> {
-    (h.output().shapes.iter())
-        .filter_map(|c| match &c.shape {
-            Shape::Text(t)
-                if c.clip_rect
-                    .expand(0.5)
-                    .contains_rect(t.visual_bounding_rect()) =>
-            {
-                Some((c.clip_rect, t.galley.text().to_owned()))
-            }
-            _ => None,
-        })
-        .collect()
-}
-
 /// The legend's clip rectangle (the one its first line is painted whole in that leaves
 /// the fewest lines out) and the lines not painted whole inside it.
 fn lines_not_shown(h: &Harness<'_, AttLabApp>, lines: &[String]) -> (Option<Rect>, Vec<String>) {
-    let whole = whole_texts(h);
+    let whole = support::whole_texts(h);
     let missing_in = |clip: Rect| -> Vec<String> {
         (lines.iter())
             .filter(|l| !whole.iter().any(|(c, t)| *c == clip && t == *l))
@@ -131,15 +115,12 @@ fn last_line_reached(h: &mut Harness<'_, AttLabApp>, clip: Rect, lines: &[String
     h.hover_at(egui::pos2(left + 4.0, clip.center().y));
     h.run();
     for _ in 0..10 {
-        h.event(egui::Event::MouseWheel {
-            unit: egui::MouseWheelUnit::Point,
-            delta: egui::vec2(0.0, -40.0),
-            phase: egui::TouchPhase::Move,
-            source: egui::MouseWheelSource::Unknown,
-            modifiers: egui::Modifiers::NONE,
-        });
+        support::wheel(h, -40.0);
         h.run_steps(2);
-        if whole_texts(h).iter().any(|(c, t)| *c == clip && t == last) {
+        if support::whole_texts(h)
+            .iter()
+            .any(|(c, t)| *c == clip && t == last)
+        {
             return true;
         }
     }

@@ -95,16 +95,7 @@ fn moving_a_slider_changes_the_parameter_live() {
     for _ in 0..5 {
         h.state_mut().apply(RunCommand::StepOnce.into());
     }
-    let (target_node, target_tree) = h
-        .get_by_role_and_label(Role::Slider, "Gyro noise σ")
-        .accesskit_node()
-        .locate();
-    h.event(egui::Event::AccessKitActionRequest(ActionRequest {
-        action: Action::SetValue,
-        target_node,
-        target_tree,
-        data: Some(ActionData::NumericValue(0.5)),
-    }));
+    support::set_slider_by_accesskit(&mut h, "Gyro noise σ", 0.5);
     h.run();
     let sim = &h.state().state.sim();
     assert_eq!(sim.params().get("gyro_noise_deg_s"), 0.5);
@@ -327,16 +318,7 @@ fn a_reset_only_slider_waits_for_reset_and_says_so() {
         h.state_mut().apply(RunCommand::StepOnce.into());
     }
     let dt_s = h.state().state.sim().dt_s();
-    let (target_node, target_tree) = h
-        .get_by_role_and_label(Role::Slider, "Gyro output rate")
-        .accesskit_node()
-        .locate();
-    h.event(egui::Event::AccessKitActionRequest(ActionRequest {
-        action: Action::SetValue,
-        target_node,
-        target_tree,
-        data: Some(ActionData::NumericValue(300.0)),
-    }));
+    support::set_slider_by_accesskit(&mut h, "Gyro output rate", 300.0);
     h.run();
     let sim = &h.state().state.sim();
     assert_eq!(sim.params().get("input_rate_hz"), 300.0);

@@ -4,22 +4,6 @@
 
 use super::*;
 
-/// Every text of the last frame painted whole inside its clip rectangle.
-fn whole(h: &Harness<'_, AttLabApp>) -> Vec<String> {
-    (h.output().shapes.iter())
-        .filter_map(|c| match &c.shape {
-            egui::Shape::Text(t)
-                if c.clip_rect
-                    .expand(0.5)
-                    .contains_rect(t.visual_bounding_rect()) =>
-            {
-                Some(t.galley.text().to_owned())
-            }
-            _ => None,
-        })
-        .collect()
-}
-
 #[test]
 fn the_gamma_sweeps_table_fits_the_side_panel() {
     let mut h = harness("p4");
@@ -59,17 +43,14 @@ fn the_gamma_sweeps_table_fits_the_side_panel() {
         if header_y(&h) < 500.0 {
             break;
         }
-        h.event(egui::Event::MouseWheel {
-            unit: egui::MouseWheelUnit::Point,
-            delta: egui::vec2(0.0, -60.0),
-            phase: egui::TouchPhase::Move,
-            source: egui::MouseWheelSource::Unknown,
-            modifiers: egui::Modifiers::NONE,
-        });
+        support::wheel(&mut h, -60.0);
         h.run_steps(2);
     }
     h.run_steps(3);
-    let shown = whole(&h);
+    let shown: Vec<String> = support::whole_texts(&h)
+        .into_iter()
+        .map(|(_, t)| t)
+        .collect();
     let cut: Vec<&String> = headers.iter().filter(|t| !shown.contains(t)).collect();
     assert!(cut.is_empty(), "headers cut or missing: {cut:?}");
     // The objectives' last row, its value and each objective, whole.

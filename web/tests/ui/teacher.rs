@@ -102,13 +102,7 @@ fn a_locked_slider_is_disabled_with_a_padlock_and_refuses_the_screen_readers_val
         slider.accesskit_node().is_disabled(),
         "the locked slider is enabled"
     );
-    let (target_node, target_tree) = slider.accesskit_node().locate();
-    h.event(egui::Event::AccessKitActionRequest(ActionRequest {
-        action: Action::SetValue,
-        target_node,
-        target_tree,
-        data: Some(ActionData::NumericValue(0.2)),
-    }));
+    support::set_slider_by_accesskit(&mut h, label, 0.2);
     h.run();
     assert_eq!(h.state().state.sim().params().get("gamma"), 2e-3);
     // One padlock, which says why (to a screen reader, and on hover).
