@@ -12,7 +12,7 @@ use egui_plot::PlotTransform;
 const ZIGZAG: f64 = 6.0;
 
 /// Whether `points` (plot coordinates), at `px` plot units per pixel in x and y, zigzag:
-/// their path on screen is more than [`ZIGZAG`] times as long as it is wide.
+/// their path on screen is more than `ZIGZAG` (six) times as long as it is wide.
 pub fn is_dense(points: &[[f64; 2]], px: [f64; 2]) -> bool {
     if !px.iter().all(|p| p.is_finite() && *p > 0.0) || points.len() < 3 {
         return false;
