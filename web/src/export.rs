@@ -333,8 +333,12 @@ mod tests {
 
     #[test]
     fn a_plots_capture_visits_every_tab_then_restores() {
-        let tabs = vec![PlotTab::Figure(0), PlotTab::Figure(1), PlotTab::Figure(2)];
-        let mut cap = Capture::new(PngTarget::Plots, tabs.clone(), PlotTab::Figure(1));
+        let tabs = vec![
+            PlotTab::Figure("a"),
+            PlotTab::Figure("b"),
+            PlotTab::Figure("c"),
+        ];
+        let mut cap = Capture::new(PngTarget::Plots, tabs.clone(), PlotTab::Figure("b"));
         let ctx = egui::Context::default();
         let regions = Regions {
             views: vec![],
@@ -360,7 +364,7 @@ mod tests {
             }
         };
         assert_eq!(seen, tabs);
-        assert_eq!(cap.restore_tab(), PlotTab::Figure(1));
+        assert_eq!(cap.restore_tab(), PlotTab::Figure("b"));
         let png = result.expect("a picture");
         // Three 10×4 crops (1 pixel per point) with two gaps.
         assert_eq!((png.width, png.height), (10, 3 * 4 + 2 * GAP_PX));
@@ -368,7 +372,7 @@ mod tests {
 
     #[test]
     fn a_renderer_without_screenshots_ends_the_capture_with_a_message() {
-        let mut cap = Capture::new(PngTarget::View(0), vec![], PlotTab::Figure(0));
+        let mut cap = Capture::new(PngTarget::View(0), vec![], PlotTab::Figure("a"));
         let ctx = egui::Context::default();
         let regions = Regions::default();
         let mut outcome = None;

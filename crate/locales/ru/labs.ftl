@@ -271,76 +271,76 @@ lab-p5-param-output_method-option-4 = без коррекции
 
 # lab-<id>-preset-<n> — название готового набора.
 
-lab-p1-preset-0 = VG-910D
-lab-p1-preset-1 = ADIS16100
-lab-p1-preset-2 = T ≈ 578 с
-lab-p1-preset-3 = прежняя настройка
-lab-p1-preset-4 = качающееся тело (5 степеней)
-lab-p2-preset-0 = без ошибки модели
-lab-p2-preset-1 = ошибка модели 400 нТл
-lab-p2-preset-2 = звёздный датчик ослеплён
-lab-p2-preset-3 = орбита полдень–полночь (длинная тень)
-lab-p2-preset-4 = орбита рассвет–закат (без тени)
-lab-p2-preset-5 = Солнце ∥ поле
-lab-p2-preset-6 = гироскоп + один вектор (уход)
-lab-p2-preset-7 = датчики на 10 Гц
-lab-p2-preset-8 = постоянный коэффициент усиления (§3.3)
-lab-p2-preset-9 = рис. 7: смещение как поворот поля
-lab-p4-preset-0 = γ = 2·10⁻³: лучшее из четырёх значений статьи
-lab-p4-preset-1 = γ = 10⁻⁵: смещение, медленно
-lab-p4-preset-2 = γ = 0,2: шумно
-lab-p4-preset-3 = квадрокоптер, асимметрия 15 %
-lab-p4-preset-4 = быстрое движение обманывает акселерометр
-lab-p4-preset-5 = толчок на 6 с
-lab-p4-preset-6 = некалиброванный гироскоп (смещение 5 °/с)
-lab-p5-preset-0 = случай статьи, Δt = 1,17
-lab-p5-preset-1 = смещение гироскопа 2 °/с
-lab-p5-preset-2 = опорная ориентация потеряна на 20–50 с
+lab-p1-preset-vg-910d = VG-910D
+lab-p1-preset-adis16100 = ADIS16100
+lab-p1-preset-period-578 = T ≈ 578 с
+lab-p1-preset-earlier-setting = прежняя настройка
+lab-p1-preset-rocking-body = качающееся тело (5 степеней)
+lab-p2-preset-no-model-error = без ошибки модели
+lab-p2-preset-model-error-400 = ошибка модели 400 нТл
+lab-p2-preset-star-tracker-blinded = звёздный датчик ослеплён
+lab-p2-preset-noon-midnight = орбита полдень–полночь (длинная тень)
+lab-p2-preset-dawn-dusk = орбита рассвет–закат (без тени)
+lab-p2-preset-sun-along-field = Солнце ∥ поле
+lab-p2-preset-gyro-one-vector = гироскоп + один вектор (уход)
+lab-p2-preset-sensors-10hz = датчики на 10 Гц
+lab-p2-preset-constant-gain = постоянный коэффициент усиления (§3.3)
+lab-p2-preset-fig7-field-turn = рис. 7: смещение как поворот поля
+lab-p4-preset-gamma-best = γ = 2·10⁻³: лучшее из четырёх значений статьи
+lab-p4-preset-gamma-small = γ = 10⁻⁵: смещение, медленно
+lab-p4-preset-gamma-large = γ = 0,2: шумно
+lab-p4-preset-asymmetric = квадрокоптер, асимметрия 15 %
+lab-p4-preset-fast-motion = быстрое движение обманывает акселерометр
+lab-p4-preset-push = толчок на 6 с
+lab-p4-preset-uncalibrated-gyro = некалиброванный гироскоп (смещение 5 °/с)
+lab-p5-preset-paper-case = случай статьи, Δt = 1,17
+lab-p5-preset-gyro-bias = смещение гироскопа 2 °/с
+lab-p5-preset-reference-lost = опорная ориентация потеряна на 20–50 с
 
 # lab-<id>-figure-<n> — вкладка графика, повторяющая рисунок статьи или показывающая своё.
 
-lab-free-rotation-figure-0 = Ориентация (рыскание, тангаж, крен)
-lab-free-rotation-figure-1 = Ошибки ориентации (связанные оси)
-lab-free-rotation-figure-2 = Энергия и кинетический момент (истина)
-lab-p1-figure-0 = Угол
-lab-p1-figure-1 = Угловая скорость
-lab-p1-figure-2 = Ошибка угла относительно φ_int (статья)
-lab-p1-figure-3 = Ошибка угла относительно истины
-lab-p1-figure-4 = Ошибка скорости относительно истины
-lab-p1-figure-5 = Ошибка скорости относительно датчика
-lab-p1-figure-6 = P: a = P_φφ, c = P_φ̇φ̇ (log10)
-lab-p1-figure-7 = P: b = P_φφ̇
-lab-p2-figure-0 = Ошибки ориентации ЗД+ДУС (рис. 4)
-lab-p2-figure-1 = Ошибки скорости ЗД+ДУС (рис. 5)
-lab-p2-figure-2 = Ошибка ориентации каждого фильтра
-lab-p2-figure-3 = Смещение гироскопа: истина и оценки (рис. 6)
-lab-p2-figure-4 = Смещение магнитометра: истина и оценка (рис. 7)
-lab-p2-figure-5 = Оценки возмущения против истинного (рис. 8, табл. 4)
-lab-p2-figure-6 = Согласованность: NEES ориентации (χ²₃: 95 % в 0,22…9,35)
-lab-p2-figure-7 = Диагональ P, ЗД+ДУС и Маг+СД+ДУС (log; ориентация рад², скорость рад²/с²)
-lab-p2-figure-8 = NIS на каждом обновлении
-lab-p2-figure-9 = Отказы: тень, Солнце видно, звёздный датчик
-lab-p2-figure-10 = Кинетический момент маховиков
-lab-p2-figure-12 = Смещение магнитометра как поворот поля: истина и оценка (рис. 7)
-lab-p2-figure-11 = Постоянный коэффициент усиления против своего расширенного фильтра Калмана (§3.3, табл. 5)
-lab-p3-figure-0 = Рис. 4: u, v
-lab-p3-figure-1 = Рис. 4: z
-lab-p3-figure-2 = Рис. 5: рыскание, тангаж, крен
-lab-p3-figure-3 = Рис. 8: v, vᵃ
-lab-p3-figure-4 = Рис. 10: HPF(v), LPF(vᵃ), vᵏ
-lab-p3-figure-5 = Ошибки наклона
-lab-p3-figure-6 = Дисперсии фильтра Калмана (log10)
-lab-p4-figure-0 = Крен: истина, уставка, угол по акселерометру и оценки
-lab-p4-figure-1 = Ошибка крена каждого фильтра
-lab-p4-figure-2 = Ошибка скорости каждого фильтра
-lab-p4-figure-3 = Управление: u_v, интегральная u₀ и u₀, нужная для зависания
-lab-p4-figure-4 = Гироскоп: показание и истина
-lab-p4-figure-5 = Фильтр со смещением (сверх статьи): оценка смещения гироскопа
-lab-p5-figure-0 = Ошибка ориентации (все методы)
-lab-p5-figure-1 = Углы метода (9) и опорные
-lab-p5-figure-2 = Поправка p (9)
-lab-p5-figure-3 = Поправка p (вариант)
-lab-p5-figure-4 = Число обусловленности UᵀQU
-lab-p5-figure-5 = Сингулярные числа UᵀQU (9)
-lab-p5-figure-6 = Длина шага s метода (11)
-lab-p5-figure-7 = Получено опорных ориентаций
+lab-free-rotation-figure-attitude = Ориентация (рыскание, тангаж, крен)
+lab-free-rotation-figure-errors = Ошибки ориентации (связанные оси)
+lab-free-rotation-figure-energy-momentum = Энергия и кинетический момент (истина)
+lab-p1-figure-angle = Угол
+lab-p1-figure-rate = Угловая скорость
+lab-p1-figure-angle-error-vs-int = Ошибка угла относительно φ_int (статья)
+lab-p1-figure-angle-error = Ошибка угла относительно истины
+lab-p1-figure-rate-error = Ошибка скорости относительно истины
+lab-p1-figure-rate-error-vs-sensor = Ошибка скорости относительно датчика
+lab-p1-figure-p-diagonal = P: a = P_φφ, c = P_φ̇φ̇ (log10)
+lab-p1-figure-p-cross = P: b = P_φφ̇
+lab-p2-figure-fig4-attitude = Ошибки ориентации ЗД+ДУС (рис. 4)
+lab-p2-figure-fig5-rate = Ошибки скорости ЗД+ДУС (рис. 5)
+lab-p2-figure-every-filter = Ошибка ориентации каждого фильтра
+lab-p2-figure-fig6-gyro-bias = Смещение гироскопа: истина и оценки (рис. 6)
+lab-p2-figure-fig7-mag-bias = Смещение магнитометра: истина и оценка (рис. 7)
+lab-p2-figure-fig8-disturbance = Оценки возмущения против истинного (рис. 8, табл. 4)
+lab-p2-figure-nees = Согласованность: NEES ориентации (χ²₃: 95 % в 0,22…9,35)
+lab-p2-figure-p-diagonal = Диагональ P, ЗД+ДУС и Маг+СД+ДУС (log; ориентация рад², скорость рад²/с²)
+lab-p2-figure-nis = NIS на каждом обновлении
+lab-p2-figure-outages = Отказы: тень, Солнце видно, звёздный датчик
+lab-p2-figure-wheel-momentum = Кинетический момент маховиков
+lab-p2-figure-fig7-field-turn = Смещение магнитометра как поворот поля: истина и оценка (рис. 7)
+lab-p2-figure-constant-gain = Постоянный коэффициент усиления против своего расширенного фильтра Калмана (§3.3, табл. 5)
+lab-p3-figure-fig4-uv = Рис. 4: u, v
+lab-p3-figure-fig4-z = Рис. 4: z
+lab-p3-figure-fig5-angles = Рис. 5: рыскание, тангаж, крен
+lab-p3-figure-fig8-v = Рис. 8: v, vᵃ
+lab-p3-figure-fig10-filters = Рис. 10: HPF(v), LPF(vᵃ), vᵏ
+lab-p3-figure-tilt-errors = Ошибки наклона
+lab-p3-figure-kf-variances = Дисперсии фильтра Калмана (log10)
+lab-p4-figure-roll = Крен: истина, уставка, угол по акселерометру и оценки
+lab-p4-figure-roll-error = Ошибка крена каждого фильтра
+lab-p4-figure-rate-error = Ошибка скорости каждого фильтра
+lab-p4-figure-control = Управление: u_v, интегральная u₀ и u₀, нужная для зависания
+lab-p4-figure-gyro = Гироскоп: показание и истина
+lab-p4-figure-bias-kf = Фильтр со смещением (сверх статьи): оценка смещения гироскопа
+lab-p5-figure-error = Ошибка ориентации (все методы)
+lab-p5-figure-angles = Углы метода (9) и опорные
+lab-p5-figure-correction-9 = Поправка p (9)
+lab-p5-figure-correction-variant = Поправка p (вариант)
+lab-p5-figure-condition = Число обусловленности UᵀQU
+lab-p5-figure-singular-values = Сингулярные числа UᵀQU (9)
+lab-p5-figure-step-size = Длина шага s метода (11)
+lab-p5-figure-references = Получено опорных ориентаций

@@ -163,14 +163,14 @@ pub fn param_option_id(lab_id: &str, key: &str, index: usize) -> String {
     format!("lab-{lab_id}-param-{key}-option-{index}")
 }
 
-/// The id of the title of a lab's figure (plot tab) `index` in the catalogue.
-pub fn figure_id(lab_id: &str, index: usize) -> String {
-    format!("lab-{lab_id}-figure-{index}")
+/// The id of the title of a lab's figure (plot tab) `figure` (its id) in the catalogue.
+pub fn figure_id(lab_id: &str, figure: &str) -> String {
+    format!("lab-{lab_id}-figure-{figure}")
 }
 
-/// The id of the name of a lab's preset `index` in the catalogue.
-pub fn preset_id(lab_id: &str, index: usize) -> String {
-    format!("lab-{lab_id}-preset-{index}")
+/// The id of the name of a lab's preset `preset` (its id) in the catalogue.
+pub fn preset_id(lab_id: &str, preset: &str) -> String {
+    format!("lab-{lab_id}-preset-{preset}")
 }
 
 /// The id of the hover help of a lab's parameter `key`.
@@ -178,25 +178,26 @@ pub fn param_help_id(lab_id: &str, key: &str) -> String {
     format!("lab-{lab_id}-param-{key}-help")
 }
 
-/// The id of the hover help of a lab's preset `index`.
-pub fn preset_help_id(lab_id: &str, index: usize) -> String {
-    format!("lab-{lab_id}-preset-{index}-help")
+/// The id of the hover help of a lab's preset `preset` (its id).
+pub fn preset_help_id(lab_id: &str, preset: &str) -> String {
+    format!("lab-{lab_id}-preset-{preset}-help")
 }
 
-/// The id of the label of a lab's outage `index` (the plots' shading).
-pub fn outage_id(lab_id: &str, index: usize) -> String {
-    format!("lab-{lab_id}-outage-{index}")
+/// The id of the label of a lab's outage `outage` (its id; the plots' shading).
+pub fn outage_id(lab_id: &str, outage: &str) -> String {
+    format!("lab-{lab_id}-outage-{outage}")
 }
 
-/// The id of a word of a lab's sweep `index`: `part` is `title`, `help`, `score-<j>`,
-/// `objective-<j>`, `log-help`, `log-score-<j>` or `log-objective-<j>`.
-pub fn sweep_id(lab_id: &str, index: usize, part: &str) -> String {
-    format!("lab-{lab_id}-sweep-{index}-{part}")
+/// The id of a word of a lab's sweep `sweep` (its id): `part` is `title`, `help`,
+/// `score-<j>`, `objective-<j>`, `log-help`, `log-score-<j>` or `log-objective-<j>` (j the
+/// place of a score in what the sweep's scoring function returns, which fixes it).
+pub fn sweep_id(lab_id: &str, sweep: &str, part: &str) -> String {
+    format!("lab-{lab_id}-sweep-{sweep}-{part}")
 }
 
-/// The id of the title of a lab's diagram `index`.
-pub fn diagram_id(lab_id: &str, index: usize) -> String {
-    format!("lab-{lab_id}-diagram-{index}")
+/// The id of the title of a lab's diagram `diagram` (its id).
+pub fn diagram_id(lab_id: &str, diagram: &str) -> String {
+    format!("lab-{lab_id}-diagram-{diagram}")
 }
 
 /// The id of the title of a lab's live accuracy table.
@@ -238,22 +239,22 @@ pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static s
     for spec in lab.params() {
         out.extend(param_words(id, spec));
     }
-    for (i, preset) in lab.presets().iter().enumerate() {
-        out.push((preset_id(id, i), preset.name));
-        out.push((preset_help_id(id, i), preset.help));
+    for preset in lab.presets() {
+        out.push((preset_id(id, preset.id), preset.name));
+        out.push((preset_help_id(id, preset.id), preset.help));
     }
     let page = lab.page();
-    for (i, figure) in page.figures.iter().enumerate() {
-        out.push((figure_id(id, i), figure.title));
+    for figure in page.figures {
+        out.push((figure_id(id, figure.id), figure.title));
     }
-    for (i, outage) in page.outages.iter().enumerate() {
-        out.push((outage_id(id, i), outage.label));
+    for outage in page.outages {
+        out.push((outage_id(id, outage.id), outage.label));
     }
-    for (i, sweep) in lab.sweeps().iter().enumerate() {
-        out.extend(sweep_words(id, i, sweep, &defaults(lab)));
+    for sweep in lab.sweeps() {
+        out.extend(sweep_words(id, sweep, &defaults(lab)));
     }
-    for (i, d) in page.diagrams(&defaults(lab)).iter().enumerate() {
-        out.push((diagram_id(id, i), d.title));
+    for d in page.diagrams(&defaults(lab)) {
+        out.push((diagram_id(id, d.id), d.title));
     }
     if let Some(table) = lab.accuracy_table() {
         out.push((accuracy_title_id(id), table.title));
@@ -280,9 +281,10 @@ pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static s
     out
 }
 
-/// The id of a lesson's word: its title (`step` `None`, `part` `title`) or a part of step
-/// `step` (1-based): `title`, `text`, `ask`, `why` or `answer-<k>` (k 1-based).
-pub fn lesson_id(lab_id: &str, step: Option<usize>, part: &str) -> String {
+/// The id of a lesson's word: its title (`step` `None`, `part` `title`) or a part of the
+/// step with id `step`: `title`, `text`, `ask`, `why` or `answer-<k>` (k 1-based: the
+/// answers' order is the question's, which its `answer` index names).
+pub fn lesson_id(lab_id: &str, step: Option<&str>, part: &str) -> String {
     match step {
         Some(n) => format!("lesson-{lab_id}-{n}-{part}"),
         None => format!("lesson-{lab_id}-{part}"),
@@ -292,8 +294,8 @@ pub fn lesson_id(lab_id: &str, step: Option<usize>, part: &str) -> String {
 /// A lesson's words: its title, each step's title and text, and each question's words.
 fn lesson_words(lab_id: &str, lesson: &crate::model::Lesson) -> Vec<(String, &'static str)> {
     let mut out = vec![(lesson_id(lab_id, None, "title"), lesson.title)];
-    for (i, step) in lesson.steps.iter().enumerate() {
-        let n = Some(i + 1);
+    for step in lesson.steps {
+        let n = Some(step.id);
         out.push((lesson_id(lab_id, n, "title"), step.title));
         out.push((lesson_id(lab_id, n, "text"), step.text));
         if let Some(q) = &step.question {
@@ -326,28 +328,33 @@ fn defaults(lab: &dyn crate::model::Lab) -> crate::model::ParamValues {
     crate::model::ParamValues::defaults(lab.params())
 }
 
-/// The words of a lab's sweep `i`.
+/// The words of a lab's sweep.
 fn sweep_words(
     lab_id: &str,
-    i: usize,
     sweep: &crate::model::SweepSpec,
     defaults: &crate::model::ParamValues,
 ) -> Vec<(String, &'static str)> {
-    let mut out = vec![(sweep_id(lab_id, i, "title"), sweep.title)];
+    let mut out = vec![(sweep_id(lab_id, sweep.id, "title"), sweep.title)];
     if let Some(overlay) = sweep.scoring.and_then(|s| s.overlay) {
         for (k, (name, _)) in overlay(defaults).iter().enumerate() {
-            out.push((sweep_id(lab_id, i, &format!("overlay-{k}")), *name));
+            out.push((sweep_id(lab_id, sweep.id, &format!("overlay-{k}")), *name));
         }
     }
     for (prefix, scoring) in [("", sweep.scoring), ("log-", sweep.log_scoring)] {
         let Some(scoring) = scoring else { continue };
-        out.push((sweep_id(lab_id, i, &format!("{prefix}help")), scoring.help));
+        out.push((
+            sweep_id(lab_id, sweep.id, &format!("{prefix}help")),
+            scoring.help,
+        ));
         for (j, name) in scoring.names.iter().enumerate() {
-            out.push((sweep_id(lab_id, i, &format!("{prefix}score-{j}")), *name));
+            out.push((
+                sweep_id(lab_id, sweep.id, &format!("{prefix}score-{j}")),
+                *name,
+            ));
         }
         for (j, (name, _)) in scoring.objectives.iter().enumerate() {
             out.push((
-                sweep_id(lab_id, i, &format!("{prefix}objective-{j}")),
+                sweep_id(lab_id, sweep.id, &format!("{prefix}objective-{j}")),
                 *name,
             ));
         }
@@ -427,5 +434,7 @@ fn format(lang: Lang, id: &str, args: Option<&FluentArgs<'_>>) -> String {
     id.to_string()
 }
 
+#[cfg(test)]
+mod id_tests;
 #[cfg(test)]
 mod tests;

@@ -21,9 +21,7 @@ pub fn step_params(lab: &dyn Lab, step: &LessonStep) -> Result<ParamValues, Stri
     let mut params = ParamValues::defaults(specs);
     if let Some(name) = step.preset {
         let preset = lab
-            .presets()
-            .iter()
-            .find(|p| p.name == name)
+            .preset(name)
             .ok_or_else(|| format!("no preset `{name}` in {}", lab.id()))?;
         for (key, value) in preset.values {
             params
@@ -141,10 +139,10 @@ fn step_problems(lab: &'static dyn Lab, step: &LessonStep) -> Vec<String> {
             out.push(format!("speed {speed} outside {lo}–{hi}"));
         }
     }
-    if let Some(i) = step.sweep
-        && i >= lab.sweeps().len()
+    if let Some(id) = step.sweep
+        && lab.sweep_index(id).is_none()
     {
-        out.push(format!("sweep {i}, but the lab has {}", lab.sweeps().len()));
+        out.push(format!("sweep `{id}`, but the lab has no sweep of that id"));
     }
     if step.pause_at_s.is_some_and(|t| !(t > 0.0 && t.is_finite())) {
         out.push("its pause time is not a positive time".into());
@@ -155,11 +153,11 @@ fn step_problems(lab: &'static dyn Lab, step: &LessonStep) -> Vec<String> {
 /// Whether the step's tab exists in `lab` and has something to draw.
 fn tab_problem(lab: &dyn Lab, sim: &Simulation, tab: Option<PlotTab>) -> Option<String> {
     match tab? {
-        PlotTab::Figure(i) if i >= lab.page().figures.len() => Some(format!(
-            "tab Figure({i}), but the lab has {} figures",
-            lab.page().figures.len()
-        )),
-        PlotTab::Figure(_) => None,
+        PlotTab::Figure(id) => lab
+            .page()
+            .figure(id)
+            .is_none()
+            .then(|| format!("tab Figure(\"{id}\"), but the lab has no figure of that id")),
         PlotTab::Group(SeriesGroup::Time) => Some("the time axis is not a tab".into()),
         PlotTab::Group(g) => (!sim.available_specs().iter().any(|s| s.group == g))
             .then(|| format!("tab {g:?} has no series in this lab")),
@@ -184,7 +182,7 @@ mod tests {
         let lab = crate::labs::all()[0];
         let bad = LessonStep {
             set: &[("no_such_slider", 1.0)],
-            ..LessonStep::new("Bad", "One sentence only")
+            ..LessonStep::new("bad", "Bad", "One sentence only")
         };
         let found = step_problems(lab, &bad);
         assert!(found.iter().any(|p| p.contains("sentences")), "{found:?}");
@@ -193,9 +191,9 @@ mod tests {
             "{found:?}"
         );
         let bad_tab = LessonStep {
-            tab: Some(PlotTab::Figure(99)),
+            tab: Some(PlotTab::Figure("no-such-figure")),
             show: &["nobody"],
-            ..LessonStep::new("Bad", "Two. Sentences.")
+            ..LessonStep::new("bad", "Bad", "Two. Sentences.")
         };
         let found = step_problems(lab, &bad_tab);
         assert_eq!(found.len(), 2, "{found:?}");
@@ -224,7 +222,7 @@ mod tests {
             .par_iter()
             .flat_map_iter(|(lab, n, step)| {
                 let params = step_params(*lab, step).expect("a good step");
-                quotes::step_quote_problems(*lab, *n, step, &params)
+                quotes::step_quote_problems(*lab, step, &params)
                     .into_iter()
                     .map(move |p| format!("{} step {n}: {p}", lab.id()))
             })
@@ -248,8 +246,8 @@ mod tests {
                 continue;
             };
             let step = LessonStep {
-                preset: Some(preset.name),
-                ..LessonStep::new("x", "x. y.")
+                preset: Some(preset.id),
+                ..LessonStep::new("x", "x", "x. y.")
             };
             let p = step_params(*lab, &step).unwrap();
             assert_eq!(p.get(key), preset.values[0].1, "{}", lab.id());

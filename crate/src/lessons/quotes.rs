@@ -82,9 +82,9 @@ fn english_words(step: &LessonStep) -> String {
     words.join(" ")
 }
 
-/// The step's Russian words, as the catalogue has them (`n` 1-based).
-fn russian_words(lab: &dyn Lab, n: usize, step: &LessonStep) -> String {
-    let id = |part: &str| i18n::lesson_id(lab.id(), Some(n), part);
+/// The step's Russian words, as the catalogue has them.
+fn russian_words(lab: &dyn Lab, step: &LessonStep) -> String {
+    let id = |part: &str| i18n::lesson_id(lab.id(), Some(step.id), part);
     let mut words = vec![i18n::lab_text(Lang::Ru, &id("text"), step.text)];
     if let Some(q) = &step.question {
         words.push(i18n::lab_text(Lang::Ru, &id("ask"), q.ask));
@@ -100,16 +100,15 @@ fn russian_words(lab: &dyn Lab, n: usize, step: &LessonStep) -> String {
     words.join(" ")
 }
 
-/// What is wrong with the quotes of step `n` (1-based) of `lab`, whose parameters are
-/// `params`: one line each (none for a step whose words hold).
+/// What is wrong with the quotes of `step` of `lab`, whose parameters are `params`: one
+/// line each (none for a step whose words hold).
 pub fn step_quote_problems(
     lab: &'static dyn Lab,
-    n: usize,
     step: &LessonStep,
     params: &ParamValues,
 ) -> Vec<String> {
     let english = english_words(step);
-    let russian = russian_words(lab, n, step);
+    let russian = russian_words(lab, step);
     let mut out = Vec::new();
     for quote in step.quotes {
         if !english.contains(quote.shown) {

@@ -138,6 +138,8 @@ impl LabRun {
 /// and the CLI as `--preset NAME`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Preset {
+    /// Stable id within the lab (`gamma-small`): its messages and a lesson step name it.
+    pub id: &'static str,
     /// Button label.
     pub name: &'static str,
     /// What it stands for.
@@ -271,6 +273,10 @@ impl dyn Lab + '_ {
     pub fn presets(&self) -> &'static [Preset] {
         self.spec().presets
     }
+    /// The preset with id `id`.
+    pub fn preset(&self, id: &str) -> Option<&'static Preset> {
+        self.presets().iter().find(|p| p.id == id)
+    }
     /// [`LabSpec::default_duration_s`].
     pub fn default_duration_s(&self) -> f64 {
         self.spec().default_duration_s
@@ -289,6 +295,10 @@ impl dyn Lab + '_ {
     /// The study's sweeps (none without a study).
     pub fn sweeps(&self) -> &'static [SweepSpec] {
         self.study().map_or(&[], |s| s.sweeps())
+    }
+    /// The place of the sweep with id `id` among the lab's sweeps.
+    pub fn sweep_index(&self, id: &str) -> Option<usize> {
+        self.sweeps().iter().position(|s| s.id == id)
     }
     /// The study's timings (none without a study).
     #[cfg(feature = "study")]

@@ -23,11 +23,14 @@ pub struct Lesson {
 /// One step of a lesson.
 #[derive(Clone, Copy, Debug)]
 pub struct LessonStep {
+    /// Stable id within the lesson (`small-gamma`): its messages name it; a link and the
+    /// page number steps by their place.
+    pub id: &'static str,
     /// A heading of a few words.
     pub title: &'static str,
     /// 2–5 sentences in the paper's notation, with its equation and figure numbers.
     pub text: &'static str,
-    /// A preset of the lab applied on top of its defaults, by name.
+    /// A preset of the lab applied on top of its defaults, by its id.
     pub preset: Option<&'static str>,
     /// Parameter values set on top of the defaults and the preset.
     pub set: &'static [(&'static str, f64)],
@@ -48,8 +51,8 @@ pub struct LessonStep {
     /// The terms of the filter's cycle the step talks about (highlighted in the page's
     /// step-through panel, which the step opens when it names any).
     pub terms: &'static [CycleTerm],
-    /// The lab's sweep (by index in its study's sweeps) the step starts in the background.
-    pub sweep: Option<usize>,
+    /// The lab's sweep (by its id) the step starts in the background.
+    pub sweep: Option<&'static str>,
     /// Every number the step's words quote, and where it comes from: a test reads each one
     /// off the run the step opens (or the run it names), so the words hold for the screen.
     pub quotes: &'static [Quote],
@@ -78,9 +81,10 @@ pub enum CycleTerm {
 
 impl LessonStep {
     /// A step with a title and a text and nothing else set: the base that steps in a lab's
-    /// lesson file update (`..LessonStep::new("…", "…")`).
-    pub const fn new(title: &'static str, text: &'static str) -> Self {
+    /// lesson file update (`..LessonStep::new("id", "…", "…")`).
+    pub const fn new(id: &'static str, title: &'static str, text: &'static str) -> Self {
         Self {
+            id,
             title,
             text,
             preset: None,

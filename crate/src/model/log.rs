@@ -13,6 +13,7 @@ pub const LOGGED_SAMPLE: Quantity = Quantity::new("log_sample", "logged sample a
 
 /// What a replay's plots shade: the steps without a logged sample.
 pub const REPLAY_GAPS: Outage = Outage {
+    id: "replay-gaps",
     series: SeriesKey::sensors(&LOGGED_SAMPLE),
     out_when: 0.0,
     label: "no logged sample (a gap or a restart of the log's clock)",

@@ -57,6 +57,9 @@ pub enum BodyShape {
 /// A named set of series plotted together, e.g. a figure of the paper.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Figure {
+    /// Stable id within the lab (`fig8-v`): its messages, a lesson's tab and the page's
+    /// tab name it, never its position.
+    pub id: &'static str,
     /// Tab title, e.g. "Fig. 8: v and vᵃ".
     pub title: &'static str,
     /// The series drawn in it.
@@ -70,8 +73,9 @@ pub struct Figure {
 
 impl Figure {
     /// A figure on a linear axis.
-    pub const fn new(title: &'static str, series: &'static [SeriesKey]) -> Self {
+    pub const fn new(id: &'static str, title: &'static str, series: &'static [SeriesKey]) -> Self {
         Self {
+            id,
             title,
             series,
             log: false,
@@ -98,6 +102,8 @@ impl Figure {
 /// `out_when` (e.g. paper 2's eclipse, or the star tracker unavailable).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Outage {
+    /// Stable id within the lab (`star-tracker-out`): its label's message names it.
+    pub id: &'static str,
     /// The 0/1 series.
     pub series: SeriesKey,
     /// Its value during the outage.
@@ -156,6 +162,8 @@ pub const SINGLE_AXIS_VIEWS: &[ViewKind] =
 /// A small x–y diagram a lab draws beside its plots (e.g. eigenvalues on the unit circle).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
+    /// Stable id within the lab (`eigenvalues`): its title's message names it.
+    pub id: &'static str,
     /// Title in words (a catalogue translates it: `lab-<id>-diagram-<index>`).
     pub title: &'static str,
     /// What the title adds in the paper's notation: each setting's symbol, value and unit
@@ -222,6 +230,11 @@ impl Page {
         log_format: None,
         example_log: None,
     };
+
+    /// The figure with id `id`.
+    pub fn figure(&self, id: &str) -> Option<&'static Figure> {
+        self.figures.iter().find(|f| f.id == id)
+    }
 
     /// The diagrams for `params` (none if the lab draws none).
     pub fn diagrams(&self, params: &ParamValues) -> Vec<Diagram> {

@@ -9,6 +9,8 @@ use super::params::{ParamError, ParamValues};
 pub struct SweepSpec {
     /// Title for the panel.
     pub title: &'static str,
+    /// Stable id within the lab (`gamma`): its messages and a lesson step name it.
+    pub id: &'static str,
     /// Parameter swept.
     pub key: &'static str,
     /// Values, in order.
@@ -36,6 +38,7 @@ pub struct SweepSpec {
 impl SweepSpec {
     /// A one-parameter sweep of `key` over `values`, one seed, RMS of `series` only.
     pub const fn new(
+        id: &'static str,
         title: &'static str,
         key: &'static str,
         values: &'static [f64],
@@ -43,6 +46,7 @@ impl SweepSpec {
         series: &'static [SeriesKey],
     ) -> Self {
         Self {
+            id,
             title,
             key,
             values,

@@ -82,11 +82,12 @@ impl SimOptions {
 
 /// The tab a lab opens on: its first figure, or the errors when it has none.
 pub fn default_tab(lab: &dyn Lab) -> PlotTab {
-    if lab.page().figures.is_empty() {
-        PlotTab::Group(SeriesGroup::Error)
-    } else {
-        PlotTab::Figure(0)
-    }
+    lab.page()
+        .figures
+        .first()
+        .map_or(PlotTab::Group(SeriesGroup::Error), |f| {
+            PlotTab::Figure(f.id)
+        })
 }
 
 /// The column layout of `run` for `options.selection` (with the series `lab`'s figures

@@ -32,8 +32,9 @@ impl Selection {
     pub fn for_tab(lab: &dyn Lab, available: &[SeriesSpec], tab: PlotTab) -> Self {
         let figures = lab.page().figures;
         let mut names: Vec<String> = match tab {
-            PlotTab::Figure(i) => figures
-                .get(i)
+            PlotTab::Figure(id) => figures
+                .iter()
+                .find(|f| f.id == id)
                 .map(|f| f.series.iter().map(|s| s.to_string()).collect())
                 .unwrap_or_default(),
             PlotTab::Group(g) => available

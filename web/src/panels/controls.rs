@@ -203,8 +203,8 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         return;
     }
     let lab = app.sim().lab().id();
-    let names: Vec<String> = (presets.iter().enumerate())
-        .map(|(i, p)| i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, i), p.name))
+    let names: Vec<String> = (presets.iter())
+        .map(|p| i18n::lab_text(app.view().lang(), &i18n::preset_id(lab, p.id), p.name))
         .collect();
     // Wrapped into rows where every name fits a row, else one under another: in wrapped
     // rows, a preset whose name took two lines left a row as tall as its own under the
@@ -214,11 +214,11 @@ fn presets(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         (names.iter()).any(|n| super::fit::text_width(ui, n, egui::TextStyle::Button) > room);
     let buttons = |ui: &mut Ui| {
         ui.label(tr(app, "presets"));
-        for (i, (preset, name)) in presets.iter().zip(names).enumerate() {
-            let help = super::lab_word(app, &i18n::preset_help_id(lab, i), preset.help);
+        for (preset, name) in presets.iter().zip(names) {
+            let help = super::lab_word(app, &i18n::preset_help_id(lab, preset.id), preset.help);
             let hint = tr_with(app, "preset-hint", &[("help", arg(help))]);
             if ui.button(name).on_hover_text(hint).clicked() {
-                commands.push(Command::from(RunCommand::ApplyPreset(i)));
+                commands.push(Command::from(RunCommand::ApplyPreset(preset.id)));
             }
         }
     };

@@ -191,7 +191,7 @@ pub fn help_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comma
 
 /// Every tab in the order the tab row shows them: the lab's figures, then the groups.
 pub fn tabs(app: &AppState) -> Vec<PlotTab> {
-    let figures = (0..app.sim().lab().page().figures.len()).map(PlotTab::Figure);
+    let figures = (app.sim().lab().page().figures.iter()).map(|f| PlotTab::Figure(f.id));
     let groups = plots::groups(app.sim().available_specs())
         .into_iter()
         .map(PlotTab::Group);

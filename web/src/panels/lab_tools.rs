@@ -130,7 +130,7 @@ fn table_tabs(ui: &mut Ui, app: &AppState, rows: &[AccuracyRow]) -> Option<u8> {
 /// circle), filling `ui`, with its title above; a point of an estimator in its colour.
 pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
     let colours = crate::render::palette::of(ui.visuals());
-    ui.label(egui::RichText::new(diagram_heading(app, 0, d)).small());
+    ui.label(egui::RichText::new(diagram_heading(app, d)).small());
     // The legend goes below the diagram, so it covers no point.
     let row = ui.text_style_height(&egui::TextStyle::Small) + ui.spacing().item_spacing.y;
     let legend_h = row * (d.points.len() as f32 / 2.0).ceil().max(1.0);
@@ -190,8 +190,8 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
 
 /// A diagram's title in the reader's language, with its detail in the paper's notation (its
 /// numbers and units in the reader's words: "Δt = 1 с; ε = 0,1").
-pub fn diagram_heading(app: &AppState, index: usize, d: &attlab::model::Diagram) -> String {
-    let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), index), d.title);
+pub fn diagram_heading(app: &AppState, d: &attlab::model::Diagram) -> String {
+    let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), d.id), d.title);
     if d.detail.is_empty() {
         title
     } else {

@@ -8,9 +8,12 @@ use attlab::i18n::lesson_id;
 use attlab::model::{Lesson, Question};
 use egui::{RichText, Ui};
 
-/// The lesson's word `part` of step `n` (or of the lesson, `n` = `None`).
+/// The lesson's word `part` of step number `n` (or of the lesson, `n` = `None`), by the
+/// step's id.
 fn word(app: &AppState, n: Option<usize>, part: &str, english: &str) -> String {
-    lab_word(app, &lesson_id(app.sim().lab().id(), n, part), english)
+    let lab = app.sim().lab();
+    let step = n.and_then(|n| lab.lesson()?.step(n)).map(|s| s.id);
+    lab_word(app, &lesson_id(lab.id(), step, part), english)
 }
 
 /// "Start the lesson" when the lab has one and none is open; the card when one is.
@@ -46,7 +49,7 @@ pub(super) fn card(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
             if let Some(q) = &step.question {
                 question(ui, app, q, state.step, state.answer(state.step), commands);
             }
-            if let Some(i) = step.sweep {
+            if let Some(i) = step.sweep.and_then(|id| app.sim().lab().sweep_index(id)) {
                 ui.add_space(4.0);
                 super::sweeps::in_lesson(ui, app, i, commands);
             }

@@ -149,8 +149,7 @@ pub fn plot_words(app: &AppState) -> crate::render::plots::PlotWords<'_> {
         .page()
         .outages
         .iter()
-        .enumerate()
-        .map(|(k, o)| lab_word(app, &i18n::outage_id(lab.id(), k), o.label))
+        .map(|o| lab_word(app, &i18n::outage_id(lab.id(), o.id), o.label))
         .collect();
     if app.sim().replay_log().is_some() {
         outage_words.push(tr(app, "replay-gaps"));

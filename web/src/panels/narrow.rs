@@ -149,7 +149,7 @@ fn view_title(app: &AppState, kind: ViewKind) -> String {
     if kind == ViewKind::WPlane
         && let Some(d) = app.sim().lab().page().diagrams(app.sim().params()).first()
     {
-        return super::lab_tools::diagram_heading(app, 0, d);
+        return super::lab_tools::diagram_heading(app, d);
     }
     tr(app, kind.message())
 }

@@ -91,10 +91,9 @@ pub(super) fn plot_tabs(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>
     let (lang, lab) = (app.view().lang(), app.sim().lab().id());
     let mut tabs: Vec<(plots::Tab, String)> = figures
         .iter()
-        .enumerate()
-        .map(|(i, f)| {
-            let title = i18n::lab_text(lang, &i18n::figure_id(lab, i), f.title);
-            (plots::Tab::Figure(i), title)
+        .map(|f| {
+            let title = i18n::lab_text(lang, &i18n::figure_id(lab, f.id), f.title);
+            (plots::Tab::Figure(f.id), title)
         })
         .collect();
     tabs.extend(

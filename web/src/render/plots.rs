@@ -227,7 +227,7 @@ fn steady_fit(
     let Tab::Figure(f) = tab else {
         return None;
     };
-    let t0 = figures[f].steady_after_s?;
+    let t0 = figures.iter().find(|x| x.id == f)?.steady_after_s?;
     let range = super::y_range::steady(rec, shown, log, t0, bands)?;
     let start = (points.iter())
         .filter_map(|p| p.first())
@@ -277,12 +277,13 @@ pub fn selection(
     hidden: &[usize],
     colours: &Palette,
 ) -> (Tab, bool, Vec<(usize, Color32)>) {
+    let figure = |id: &str| figures.iter().find(|f| f.id == id);
     let tab = match state.tab {
-        Tab::Figure(i) if i >= figures.len() => Tab::Group(SeriesGroup::Error),
+        Tab::Figure(id) if figure(id).is_none() => Tab::Group(SeriesGroup::Error),
         t => t,
     };
     let log = match tab {
-        Tab::Figure(f) => figures[f].log,
+        Tab::Figure(id) => figure(id).is_some_and(|f| f.log),
         Tab::Group(g) => state.log_covariance && g == SeriesGroup::Covariance,
     };
     let shown = lines(rec, figures, tab, colours)
@@ -413,9 +414,9 @@ fn fitting_title(ui: &egui::Ui, titles: [String; 2], height: f32) -> String {
 /// position.
 fn lines(rec: &Recorder, figures: &[Figure], tab: Tab, colours: &Palette) -> Vec<(usize, Color32)> {
     match tab {
-        Tab::Figure(f) => {
-            let idx: Vec<usize> = figures[f]
-                .series
+        Tab::Figure(id) => {
+            let series = (figures.iter().find(|f| f.id == id)).map_or(&[][..], |f| f.series);
+            let idx: Vec<usize> = series
                 .iter()
                 .filter_map(|n| rec.index_of(&n.name()))
                 .collect();

@@ -273,16 +273,17 @@ impl AppState {
                 .map(|s| s.header())
         };
         let (title, columns, log) = match self.view.plots.tab {
-            PlotTab::Figure(f) if f < lab.page().figures.len() => {
-                let fig = &lab.page().figures[f];
-                let cols = fig
-                    .series
-                    .iter()
-                    .filter_map(|n| header(&n.name()))
-                    .collect();
-                (fig.title.to_string(), cols, fig.log)
-            }
-            PlotTab::Figure(_) => (String::new(), Vec::new(), false),
+            PlotTab::Figure(f) => match lab.page().figure(f) {
+                Some(fig) => {
+                    let cols = fig
+                        .series
+                        .iter()
+                        .filter_map(|n| header(&n.name()))
+                        .collect();
+                    (fig.title.to_string(), cols, fig.log)
+                }
+                None => (String::new(), Vec::new(), false),
+            },
             PlotTab::Group(g) => (
                 g.title().to_string(),
                 available

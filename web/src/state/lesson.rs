@@ -104,7 +104,7 @@ impl AppState {
         self.say_locked(&held);
         self.lesson = Some(LessonState { step: n, answers });
         self.restart_with(params, step);
-        if let Some(i) = step.sweep {
+        if let Some(i) = step.sweep.and_then(|id| self.sim.lab().sweep_index(id)) {
             self.apply_run(super::RunCommand::RunSweep(i));
         }
     }
@@ -202,7 +202,7 @@ impl AppState {
         }
         self.show_step(step);
         // As walked to: the step's sweep starts too (its text reports what it finds).
-        if let Some(i) = step.sweep {
+        if let Some(i) = step.sweep.and_then(|id| self.sim.lab().sweep_index(id)) {
             self.apply_run(super::RunCommand::RunSweep(i));
         }
     }

@@ -109,8 +109,8 @@ pub enum RunCommand {
     SelectLab(&'static dyn Lab),
     /// Change one parameter.
     SetParam(&'static str, f64),
-    /// Apply the lab's preset with this index.
-    ApplyPreset(usize),
+    /// Apply the lab's preset with this id.
+    ApplyPreset(&'static str),
     /// All parameters back to their defaults.
     RestoreDefaults,
     /// Run or pause.
@@ -272,9 +272,9 @@ impl AppState {
         self.say("msg-locked-kept", &[("names", names.join(", ").into())]);
     }
 
-    fn apply_preset(&mut self, i: usize) {
+    fn apply_preset(&mut self, id: &str) {
         let lab = self.sim.lab();
-        let Some(preset) = lab.presets().get(i) else {
+        let Some(preset) = lab.preset(id) else {
             return;
         };
         let (locked, free): (Vec<_>, Vec<_>) =
@@ -287,7 +287,7 @@ impl AppState {
             .map(|(k, _)| *k)
             .collect();
         let waiting = self.sim.pending_reset();
-        let id = attlab::i18n::preset_id(lab.id(), i);
+        let id = attlab::i18n::preset_id(lab.id(), preset.id);
         let name = attlab::i18n::lab_text(self.view.lang(), &id, preset.name);
         let message = if waiting.is_empty() {
             "msg-preset-applied"

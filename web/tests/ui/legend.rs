@@ -177,7 +177,7 @@ fn the_legend_of_every_figure_fits_a_projector() {
                 (850.0..860.0).contains(&zoomed),
                 "{fragment}: {zoomed} points wide"
             );
-            for f in 0..lab.page().figures.len() {
+            for f in lab.page().figures.iter().map(|f| f.id) {
                 select(&mut h, PlotTab::Figure(f));
                 let lines = legend_texts(&h.state().state);
                 assert!(!lines.is_empty(), "{fragment}, figure {f}: an empty legend");

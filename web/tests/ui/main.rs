@@ -352,7 +352,8 @@ fn every_labs_legend_shows_human_labels_with_units() {
         let tab = attlab::sim::default_tab(*lab);
         let sim = &h.state().state.sim();
         let shown: Vec<&attlab::model::SeriesSpec> = match tab {
-            attlab::model::PlotTab::Figure(i) => lab.page().figures[i]
+            attlab::model::PlotTab::Figure(id) => (lab.page().figure(id))
+                .expect("the default tab is a figure of the lab")
                 .series
                 .iter()
                 .filter_map(|n| sim.specs().iter().find(|s| n.is(&s.name)))

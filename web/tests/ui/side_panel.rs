@@ -155,10 +155,10 @@ fn presets_stand_without_gaps_between_their_rows() {
             let h = whole_panel(&fragment, size, false);
             let lang = h.state().state.view().lang();
             let spacing = h.ctx.global_style().spacing.item_spacing.y;
-            let mut rects: Vec<egui::Rect> = (0..lab.presets().len())
-                .map(|i| {
-                    let id = attlab::i18n::preset_id(lab.id(), i);
-                    let name = attlab::i18n::lab_text(lang, &id, lab.presets()[i].name);
+            let mut rects: Vec<egui::Rect> = (lab.presets().iter())
+                .map(|p| {
+                    let id = attlab::i18n::preset_id(lab.id(), p.id);
+                    let name = attlab::i18n::lab_text(lang, &id, p.name);
                     h.get_by_label(&name).rect()
                 })
                 .collect();

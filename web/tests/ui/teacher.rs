@@ -12,8 +12,8 @@ use egui::{Key, Modifiers};
 /// "defaults", and each step of the lesson.
 fn every_way_round(state: &mut AppState, lab: &dyn Lab) -> Vec<(String, ParamValues)> {
     let mut seen = Vec::new();
-    for (i, preset) in lab.presets().iter().enumerate() {
-        state.apply(RunCommand::ApplyPreset(i).into());
+    for preset in lab.presets() {
+        state.apply(RunCommand::ApplyPreset(preset.id).into());
         seen.push((
             format!("preset “{}”", preset.name),
             state.sim().params().clone(),
@@ -57,13 +57,8 @@ fn one_locked_control_holds_while_the_others_follow_the_presets_and_steps() {
     }
     assert!(others_moved, "no preset or step moved an unlocked control");
     // The preset "γ = 0.2: noisy" from the issue: γ stays, and the link still says so.
-    let noisy = lab
-        .presets()
-        .iter()
-        .position(|p| p.name == "γ = 0.2: noisy")
-        .unwrap();
     state.apply(LessonCommand::Close.into());
-    state.apply(RunCommand::ApplyPreset(noisy).into());
+    state.apply(RunCommand::ApplyPreset("gamma-large").into());
     assert_eq!(state.sim().params().get("gamma"), 0.05);
     assert!(
         state.fragment().contains("lock=gamma"),

@@ -235,15 +235,10 @@ fn lab_listing(lang: Lang) -> String {
         let paper = i18n::t(lang, "cli-paper");
         let cited = word(&i18n::lab_paper_id(id), lab.paper());
         let _ = writeln!(out, "{id} — {title}\n  {paper}: {cited}");
-        for (i, p) in lab.presets().iter().enumerate() {
-            let name = word(&i18n::preset_id(id, i), p.name);
-            let help = word(&i18n::preset_help_id(id, i), p.help);
-            let shown = if name == p.name {
-                String::new()
-            } else {
-                format!("{name}: ")
-            };
-            let _ = writeln!(out, "  --preset {:?} ({shown}{help})", p.name);
+        for p in lab.presets() {
+            let name = word(&i18n::preset_id(id, p.id), p.name);
+            let help = word(&i18n::preset_help_id(id, p.id), p.help);
+            let _ = writeln!(out, "  --preset {} ({name}: {help})", p.id);
         }
         for p in lab.params() {
             let range = match p.kind {

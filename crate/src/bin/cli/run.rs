@@ -251,14 +251,13 @@ fn params_from(
         let names = || {
             lab.presets()
                 .iter()
-                .map(|p| p.name)
+                .map(|p| p.id)
                 .collect::<Vec<_>>()
                 .join(", ")
         };
-        let p = lab
-            .presets()
-            .iter()
-            .find(|p| p.name == name)
+        // By its id (`gamma-small`), or by its English name as the page's button reads.
+        let p = (lab.presets().iter())
+            .find(|p| p.id == name || p.name == name)
             .ok_or_else(|| format!("no preset `{name}` in {} (presets: {})", lab.id(), names()))?;
         for (k, v) in p.values {
             params.set(lab.params(), k, *v).map_err(|e| e.to_string())?;

@@ -28,6 +28,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 .about(0.1),
             ],
             ..LessonStep::new(
+                "stable-spin",
                 "A stable spin",
                 "A rigid body with principal moments I = (1, 2, 3) kg·m² turns with no torque, by Euler's equations Jω̇ + ω × Jω = 0. \
                  Here it starts spinning at 40 °/s about x, the axis of the smallest moment, tipped slightly off that axis. \
@@ -61,6 +62,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 .about(0.1),
             ],
             ..LessonStep::new(
+                "intermediate-axis",
                 "The intermediate axis flips",
                 "Now the same 40 °/s spin is about y, the intermediate moment I_y = 2 kg·m² (the lab's default). \
                  Linearised about this spin, Euler's equations give a small wobble that grows exponentially instead of oscillating. \
@@ -68,7 +70,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(2)),
+            tab: Some(PlotTab::Figure("energy-momentum")),
             speed: Some(5.0),
             pause_at_s: Some(60.0),
             tiles: &[
@@ -84,6 +86,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::pause("60 s"),
             ],
             ..LessonStep::new(
+                "invariants",
                 "What stays constant",
                 "While the rates swap between the axes, two quantities do not change: the kinetic energy T = ½ωᵀJω and the length of the angular momentum |Jω|. \
                  The plot shows both flat; the lab's check finds a relative energy drift of about 10⁻¹² over 60 s. \
@@ -92,7 +95,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("gyro_noise_deg_s", 0.0), ("gyro_bias_deg_s", 0.0)],
-            tab: Some(PlotTab::Figure(1)),
+            tab: Some(PlotTab::Figure("errors")),
             highlight: &["gyro_noise_deg_s", "gyro_bias_deg_s"],
             speed: Some(5.0),
             pause_at_s: Some(60.0),
@@ -116,6 +119,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("100 Hz", "rate_hz"),
             ],
             ..LessonStep::new(
+                "perfect-gyro",
                 "Integrating a perfect gyro",
                 "Two estimators know only the initial attitude and the gyro: one integrates the quaternion, q̇ = ½ q⊗ω, the other paper 3's (u, v, z) by its eq. 21, switching to the chart s = 1/w whenever the body is upside down; both use Runge–Kutta 4. \
                  With the gyro's noise and bias at zero both follow the truth: after 60 s the error is about 10⁻⁵ rad (0.0006°). \
@@ -129,7 +133,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ("gyro_noise_deg_s", 0.0),
                 ("gyro_bias_deg_s", 0.1),
             ],
-            tab: Some(PlotTab::Figure(1)),
+            tab: Some(PlotTab::Figure("errors")),
             highlight: &["gyro_bias_deg_s", "spin_deg_s"],
             speed: Some(5.0),
             pause_at_s: Some(60.0),
@@ -158,6 +162,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0 °/s", "spin_deg_s"),
             ],
             ..LessonStep::new(
+                "constant-bias",
                 "A constant bias",
                 "Now the body is at rest (initial spin 0 °/s) and the gyro has a constant bias of 0.1 °/s on each axis, with signs (+, −, +). \
                  The integrator adds the bias to the true rate at every step and has nothing to correct it with. \
@@ -166,7 +171,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("gyro_noise_deg_s", 0.0), ("gyro_bias_deg_s", 0.1)],
-            tab: Some(PlotTab::Figure(1)),
+            tab: Some(PlotTab::Figure("errors")),
             highlight: &["gyro_bias_deg_s"],
             speed: Some(5.0),
             pause_at_s: Some(60.0),
@@ -197,6 +202,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.1 °/s", "gyro_bias_deg_s"),
             ],
             ..LessonStep::new(
+                "turning-averages",
                 "Turning averages the bias",
                 "The same bias of 0.1 °/s, but the body tumbles about its intermediate axis again. \
                  The bias is fixed in the body, so as the body turns, the bias points in changing directions in space: the error now grows as |∫R(t)·b dt|.",
@@ -204,7 +210,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("gyro_noise_deg_s", 0.2), ("gyro_bias_deg_s", 0.0)],
-            tab: Some(PlotTab::Figure(1)),
+            tab: Some(PlotTab::Figure("errors")),
             highlight: &["gyro_noise_deg_s"],
             speed: Some(20.0),
             pause_at_s: Some(240.0),
@@ -224,6 +230,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::pause("240 s"),
             ],
             ..LessonStep::new(
+                "random-walk",
                 "Noise: a random walk",
                 "Now the gyro has no bias but a white noise of σ = 0.2 °/s on every sample. \
                  Each step adds a random angle, so the error random-walks: its standard deviation about each axis is σ√(t·Δt) with Δt = 0.01 s, 0.155° after 60 s and twice that after 240 s. \
@@ -238,7 +245,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ("gyro_bias_deg_s", 0.1),
                 ("rate_hz", 1000.0),
             ],
-            tab: Some(PlotTab::Figure(1)),
+            tab: Some(PlotTab::Figure("errors")),
             highlight: &["rate_hz"],
             speed: Some(5.0),
             pause_at_s: Some(60.0),
@@ -265,6 +272,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("1000 Hz", "rate_hz"),
             ],
             ..LessonStep::new(
+                "faster-gyro",
                 "A faster gyro does not help",
                 "Back to the body at rest with a bias of 0.1 °/s and no noise, but now the gyro is sampled ten times faster, at 1000 Hz. \
                  A shorter step shrinks the sampling error of step 4 and the noise walk σ√(t·Δt) of step 7.",

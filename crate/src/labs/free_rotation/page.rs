@@ -4,6 +4,7 @@ use crate::model::{Figure, SeriesKey, q};
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(
+        "attitude",
         "Attitude (yaw, pitch, roll)",
         &[
             SeriesKey::truth(&q::YAW_DEG),
@@ -15,6 +16,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "errors",
         "Attitude errors (body axes)",
         &[
             SeriesKey::new("quat-rk4", &q::ERR_X_DEG),
@@ -25,6 +27,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "energy-momentum",
         "Energy and momentum (truth)",
         &[
             SeriesKey::truth(&super::truth::ENERGY_J),

@@ -29,7 +29,7 @@ pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 1: a suspended mock-up, a one-axis gyro and two adaptive Kalman filters",
     steps: &[
         LessonStep {
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("angle")),
             highlight: &["string_diameter_mm", "string_length_m", "inertia_kg_m2"],
             speed: Some(50.0),
             pause_at_s: Some(600.0),
@@ -45,6 +45,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("100 Hz", "filter_rate_hz"),
             ],
             ..LessonStep::new(
+                "on-a-string",
                 "A body on a string",
                 "The mock-up hangs on a steel string 0.35 mm thick and 1 m long and twists about it by the one-degree-of-freedom model of eq. 3.3, Iφ̈ = −fφ, here with damping. \
                  The stiffness is f = G·I_p/L with G·I_p = 1.18·10⁻⁴ N·m², so with I = 0.48 kg·m² the period T = 2π√(I/f) is about 400 s (the paper states neither T nor the damping). \
@@ -54,7 +55,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("kf_window", 0.0)],
-            tab: Some(PlotTab::Figure(6)),
+            tab: Some(PlotTab::Figure("p-diagonal")),
             highlight: &["kf_window"],
             speed: Some(60.0),
             pause_at_s: Some(600.0),
@@ -76,6 +77,7 @@ pub(super) static LESSON: Lesson = Lesson {
             }),
             quotes: &[Quote::pause("600 s")],
             ..LessonStep::new(
+                "q-zero",
                 "Q = 0: the covariance collapses",
                 "Switch the adaptation off (N = 0): both filters propagate P = [[a, b], [b, c]] with Q = 0, the closed forms (4.2) and (4.7). \
                  Only the measurement update (4.5) changes P, and the gain (4.3) is K = (b, c)ᵀ/(c + R) with R = σ². \
@@ -84,7 +86,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("kf_window", 0.0)],
-            tab: Some(PlotTab::Figure(2)),
+            tab: Some(PlotTab::Figure("angle-error-vs-int")),
             highlight: &["kf_window"],
             speed: Some(60.0),
             pause_at_s: Some(600.0),
@@ -108,6 +110,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("2°", Reading::MaxAbs(ROT_FROM_INT, 0.0, 600.0)).about(0.25),
             ],
             ..LessonStep::new(
+                "stopped-listening",
                 "A filter that stopped listening",
                 "The same run in the paper's error panel: each filter's angle less the integrated angle φ_int, as in Fig. 5.3 (the paper's runs have no truth to compare with). \
                  With a gain near zero a filter follows its own model rather than the gyro.",
@@ -115,7 +118,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("kf_window", 1000.0)],
-            tab: Some(PlotTab::Figure(6)),
+            tab: Some(PlotTab::Figure("p-diagonal")),
             highlight: &["kf_window", "kf_adaptation"],
             speed: Some(5.0),
             pause_at_s: Some(60.0),
@@ -125,6 +128,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("100 Hz", "filter_rate_hz"),
             ],
             ..LessonStep::new(
+                "covariance-matching",
                 "Covariance matching: the saw-tooth",
                 "Now adapt with a window of N = 1000 measurements (Table 2.3): every 1000 samples, 10 s at 100 Hz, the filter sets P to the window's mean of q qᵀ and then lets it decay with Q = 0 until the next window. \
                  Here q = (φ_int − φ̂, z − φ̇̂), this lab's reading of the table. \
@@ -133,7 +137,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("kf_window", 1000.0)],
-            tab: Some(PlotTab::Figure(2)),
+            tab: Some(PlotTab::Figure("angle-error-vs-int")),
             speed: Some(3.0),
             pause_at_s: Some(30.0),
             tiles: FROM_INT,
@@ -153,6 +157,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("0.01°", Reading::MaxAbs(TOR_FROM_INT, 0.0, 30.0)).about(0.3),
             ],
             ..LessonStep::new(
+                "which-model",
                 "Which model fits",
                 "With N = 1000, compare the two models against φ_int over the first three windows. \
                  The permanent-rotation KF assumes φ̈ = 0 by eq. 4.1; the torsional KF knows φ̈ = −Ω²φ by eq. 4.6. \
@@ -161,7 +166,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("kf_window", 100.0)],
-            tab: Some(PlotTab::Figure(2)),
+            tab: Some(PlotTab::Figure("angle-error-vs-int")),
             highlight: &["kf_window"],
             speed: Some(3.0),
             pause_at_s: Some(30.0),
@@ -189,13 +194,14 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::pause("30 s"),
             ],
             ..LessonStep::new(
+                "short-window",
                 "A shorter window: N = 100",
                 "Now the paper's best window, N = 100: P is refreshed every second instead of every 10 s, as in Fig. 5.7. \
                  Same plot, same 30 s as before.",
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("angle-error")),
             speed: Some(15.0),
             pause_at_s: Some(200.0),
             tiles: &[
@@ -221,6 +227,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::paper("0.01°"),
             ],
             ..LessonStep::new(
+                "against-truth",
                 "Against the truth",
                 "The lab knows the true angle φ, which the paper's runs did not. \
                  This panel shows each estimate less the truth: φ_int and both filters, with N = 100.",
@@ -228,7 +235,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("init_error_deg", 100.0)],
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("angle-error")),
             highlight: &["init_error_deg"],
             speed: Some(15.0),
             pause_at_s: Some(200.0),
@@ -262,6 +269,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("100°", "init_error_deg"),
             ],
             ..LessonStep::new(
+                "wrong-start",
                 "A wrong start",
                 "The paper tried an initial angle about 100° off and found the torsional KF still accurate. \
                  Here every estimator, φ_int included, starts 100° from the true angle, as when the string's equilibrium is poorly known.",

@@ -33,6 +33,7 @@ pub struct SuspendedMockup;
 
 const FIGURES: &[Figure] = &[
     Figure::new(
+        "angle",
         "Angle",
         &[
             SeriesKey::truth(&q::ANGLE_DEG),
@@ -42,6 +43,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "rate",
         "Rate",
         &[
             SeriesKey::truth(&q::RATE_DEG_S),
@@ -51,6 +53,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "angle-error-vs-int",
         "Angle error vs φ_int (paper)",
         &[
             SeriesKey::new("kf-rotation", &one_axis_kf::ANGLE_MINUS_INT_DEG),
@@ -58,6 +61,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "angle-error",
         "Angle error vs truth",
         &[
             SeriesKey::new("kf-rotation", &q::ANGLE_ERR_DEG),
@@ -66,6 +70,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "rate-error",
         "Rate error vs truth",
         &[
             SeriesKey::new("kf-rotation", &q::RATE_ERR_DEG_S),
@@ -73,6 +78,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "rate-error-vs-sensor",
         "Rate error vs sensor",
         &[
             SeriesKey::new("kf-rotation", &one_axis_kf::RATE_MINUS_SENSOR_DEG_S),
@@ -80,6 +86,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "p-diagonal",
         "P: a = P_φφ, c = P_φ̇φ̇ (log10)",
         &[
             SeriesKey::variance("kf-rotation", &one_axis_kf::STATE_PHI),
@@ -90,6 +97,7 @@ const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "p-cross",
         "P: b = P_φφ̇",
         &[
             SeriesKey::covariance(
@@ -258,6 +266,7 @@ impl Study for SuspendedMockup {
 
     fn sweeps(&self) -> &'static [SweepSpec] {
         const SWEEPS: &[SweepSpec] = &[SweepSpec::new(
+            "window",
             "Adaptation window N (angle error, 200 s each)",
             "kf_window",
             &[1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 5000.0],

@@ -43,6 +43,7 @@ const ADAPTATION_MODES: &[&str] = &[
 
 pub(super) const PRESETS: &[Preset] = &[
     Preset {
+        id: "vg-910d",
         name: "VG-910D",
         help: "Fizoptika fibre-optic gyro: ±200 °/s, 24-bit output at 300 Hz, averaged ×3 to the 100-Hz filter (R = σ²/3)",
         values: &[
@@ -53,6 +54,7 @@ pub(super) const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "adis16100",
         name: "ADIS16100",
         help: "Analog Devices MEMS gyro: ±300 °/s, 12-bit output, 1000 Hz (rate uncertain in the OCR)",
         values: &[
@@ -63,11 +65,13 @@ pub(super) const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "period-578",
         name: "T ≈ 578 s",
         help: "String 2 m, body 0.5 kg·m²: the period the paper's rate axis (±3–4 °/s from 360°) suggests; the N = 1000 error shrinks to ~0.09°",
         values: &[("string_length_m", 2.0), ("inertia_kg_m2", 0.5)],
     },
     Preset {
+        id: "earlier-setting",
         name: "earlier setting",
         help: "This project's first reading: VG-910D at 300 Hz averaged ×3 (R = σ²/3), T ≈ 578 s, ζ = 0.01, Q_N's rate element as process noise",
         values: &[
@@ -80,6 +84,7 @@ pub(super) const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "rocking-body",
         name: "rocking body (5 DOF)",
         help: "The §3.2 model started 5° off the vertical, gyro aligned: the body rocks every ≈ 10 s and the swing reaches the gyro through the dynamics alone",
         values: &[("body_model", 1.0), ("swing_amp_deg", 5.0)],

@@ -15,7 +15,7 @@ const fn sigma(source: &'static str) -> Reading {
 }
 
 /// The plot of every filter's attitude error (log scale).
-const EVERY_FILTER: Option<PlotTab> = Some(PlotTab::Figure(2));
+const EVERY_FILTER: Option<PlotTab> = Some(PlotTab::Figure("every-filter"));
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 2: TabletSat — which sensors the Kalman filter needs, and what happens when one fails",
@@ -33,6 +33,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("2°", "filter_init_err_deg"),
             ],
             ..LessonStep::new(
+                "mag-sun",
                 "Two directions: Mag+Sun",
                 "TabletSat holds the orbital frame with reaction wheels, and every filter of Table 2 runs at once on the same measurements. \
                  Set 10 uses only the magnetometer (250 nT) and the sun sensors (0.1°, Table 1): z = [b, s], x = [λ, ω], H = [W_b 0; W_s 0]. \
@@ -70,6 +71,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("8·10⁻⁷ N·m", "dist_torque_n_m"),
             ],
             ..LessonStep::new(
+                "add-gyro",
                 "Add the gyro",
                 "Set 5 adds the gyro, 0.005 °/s (Table 1): z = [b, s, ω], H = [W_b 0; W_s 0; 0 E]. \
                  Without it the rate ω is only predicted by the dynamics (6), which do not know the unmodelled torque of 8·10⁻⁷ N·m.",
@@ -100,13 +102,14 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::paper("0.02°"),
             ],
             ..LessonStep::new(
+                "add-star-tracker",
                 "Add the star tracker",
                 "The star tracker measures the attitude quaternion itself, to 0.001° (set 12: H = [E 0]). \
                  Compare three sets with it (ST alone, ST+Gyro and ST+Gyro+Mag+Sun) with the best set without it, Mag+Sun+Gyro.",
             )
         },
         LessonStep {
-            preset: Some("star tracker blinded"),
+            preset: Some("star-tracker-blinded"),
             tab: EVERY_FILTER,
             show: &["st", "st-gyro", "st-gyro-mag-sun"],
             highlight: &["star_sun_exclusion_deg"],
@@ -146,6 +149,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("2°", "filter_init_err_deg"),
             ],
             ..LessonStep::new(
+                "star-tracker-blind",
                 "The star tracker goes blind",
                 "A star tracker fails when the sun is in its field of view. \
                  With a 90° sun exclusion it is out whenever the sun is within 90° of its boresight; in this orbit that is from the start until about 1390 s (the shaded band). \
@@ -153,7 +157,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("sun ∥ field"),
+            preset: Some("sun-along-field"),
             tab: EVERY_FILTER,
             show: &["mag-sun", "mag-sun-gyro", "st-gyro"],
             highlight: &["sun_along_field", "sun_field_angle_deg"],
@@ -175,6 +179,7 @@ pub(super) static LESSON: Lesson = Lesson {
             }),
             quotes: &[Quote::param("0.5°", "sun_field_angle_deg")],
             ..LessonStep::new(
+                "sun-along-field",
                 "Sun along the field",
                 "A thought experiment: the sun is put 0.5° from the direction of the magnetic field. \
                  The rows W_b and W_s of H become nearly the same, and a turn about the common direction changes neither measurement.",
@@ -182,7 +187,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("gyro_bias_deg_s", 0.05)],
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("fig6-gyro-bias")),
             show: &["st-gyro-gbias", "st-gyro-reduced"],
             highlight: &["gyro_bias_deg_s"],
             speed: Some(5.0),
@@ -225,6 +230,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ),
             ],
             ..LessonStep::new(
+                "gyro-bias",
                 "Estimating the gyro bias",
                 "Give the gyro a bias of 0.05 °/s: 0.03 °/s about x and 0.04 °/s about y. \
                  Set 9 adds it to the state, ω̃ = ω + Δω + n_ω with H = [E 0 0; 0 E E], and the reduced variant drops ω to keep x = [λ, Δω]. \
@@ -259,6 +265,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("8·10⁻⁷ N·m", "dist_torque_n_m"),
             ],
             ..LessonStep::new(
+                "disturbance-filter",
                 "The disturbance filter",
                 "A constant torque of 8·10⁻⁷ N·m, unknown to the filters' dynamics (6), acts on the satellite, as in the paper's tuning runs. \
                  §3.2 runs a second filter beside the EKF that estimates the disturbance d in ω̇ = f(ω, Λ) + d from the innovations, with a fading memory α.",
@@ -266,7 +273,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("dist_from_s", 100.0)],
-            tab: Some(PlotTab::Figure(5)),
+            tab: Some(PlotTab::Figure("fig8-disturbance")),
             show: &["mag-sun-dist", "st-dist"],
             highlight: &["dist_from_s", "alpha"],
             speed: Some(40.0),
@@ -284,6 +291,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 .about(0.7),
             ],
             ..LessonStep::new(
+                "torque-on",
                 "A torque switched on",
                 "Now the same torque switches on at 100 s. \
                  The disturbance estimates d̂ of Fig. 8 leave zero and climb towards J⁻¹M_d, of the order of 10⁻⁶ s⁻². \

@@ -187,11 +187,13 @@ const PAGE: Page = Page {
     figures: FIGURES,
     outages: &[
         Outage {
+            id: "no-sun",
             series: SeriesKey::sensors(&sensors::SUN_SEEN),
             out_when: 0.0,
             label: "no sun reading (eclipse or outside the heads' fields)",
         },
         Outage {
+            id: "star-tracker-out",
             series: SeriesKey::sensors(&sensors::STAR_AVAILABLE),
             out_when: 0.0,
             label: "star tracker out",
@@ -305,6 +307,7 @@ impl Study for TabletSat {
     fn sweeps(&self) -> &'static [SweepSpec] {
         const SWEEPS: &[SweepSpec] = &[
             SweepSpec::new(
+                "tune-q",
                 "Tune Q under the unmodelled torque (attitude error, 200 s each)",
                 "q_scale",
                 &[0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0],

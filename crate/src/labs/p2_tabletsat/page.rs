@@ -10,6 +10,7 @@ const STEADY_AFTER_S: f64 = 5.0;
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(
+        "fig4-attitude",
         "ST+Gyro attitude errors (Fig. 4)",
         &[
             SeriesKey::new("st-gyro", &q::ERR_X_DEG),
@@ -21,6 +22,7 @@ pub(super) const FIGURES: &[Figure] = &[
     // steady error, the paper's result, had been a flat line at 0.
     .steady_after(STEADY_AFTER_S),
     Figure::new(
+        "fig5-rate",
         "ST+Gyro rate errors (Fig. 5)",
         &[
             SeriesKey::new("st-gyro", &q::RATE_ERR_X_DEG_S),
@@ -30,6 +32,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .steady_after(STEADY_AFTER_S),
     Figure::new(
+        "every-filter",
         "Attitude error of every filter",
         &[
             SeriesKey::new("st-gyro-mag-sun", &q::ERR_DEG),
@@ -52,6 +55,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "fig6-gyro-bias",
         "Gyro bias: truth and estimates (Fig. 6)",
         &[
             SeriesKey::sensors(&sensors::GYRO_BIAS[0]),
@@ -63,6 +67,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig7-mag-bias",
         "Magnetometer bias: truth and estimate (Fig. 7)",
         &[
             SeriesKey::sensors(&sensors::MAG_BIAS[0]),
@@ -72,6 +77,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig8-disturbance",
         "Disturbance estimates against the truth (Fig. 8, Table 4)",
         &[
             SeriesKey::truth(&truth::DIST_TRUE[0]),
@@ -82,6 +88,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "nees",
         "Consistency: NEES of the attitude (χ²₃: 95 % in 0.22…9.35)",
         &[
             SeriesKey::nees_att("st-gyro"),
@@ -93,6 +100,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "p-diagonal",
         "P diagonal, ST+Gyro and Mag+Sun+Gyro (log; attitude rad², rate rad²/s²)",
         &[
             SeriesKey::variance("st-gyro", &mekf::ATT_X),
@@ -108,6 +116,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "nis",
         "NIS per update",
         &[
             SeriesKey::new("st-gyro", &mekf::NIS),
@@ -118,6 +127,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "outages",
         "Outages: eclipse, sun seen, star tracker",
         &[
             SeriesKey::sensors(&sensors::ECLIPSE),
@@ -126,6 +136,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "wheel-momentum",
         "Wheel momentum",
         &[
             SeriesKey::truth(&truth::WHEEL_H[0]),
@@ -134,6 +145,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "constant-gain",
         "Constant gain against its EKF (§3.3, Table 5)",
         &[
             SeriesKey::new("mag-sun-gyro", &q::ERR_DEG),
@@ -144,6 +156,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "fig7-field-turn",
         "Magnetometer bias as a turn of the field: truth and estimate (Fig. 7)",
         &[
             SeriesKey::sensors(&sensors::MAG_TURN[0]),
@@ -158,41 +171,49 @@ pub(super) const FIGURES: &[Figure] = &[
 
 pub(super) const PRESETS: &[Preset] = &[
     Preset {
+        id: "no-model-error",
         name: "no model error",
         help: "The onboard field model equals the truth",
         values: &[("onboard_field", 0.0)],
     },
     Preset {
+        id: "model-error-400",
         name: "model error 400 nT",
         help: "The paper's 'errors up to 400 nT' of the onboard field model",
         values: &[("onboard_field", 2.0), ("model_error_nt", 400.0)],
     },
     Preset {
+        id: "star-tracker-blinded",
         name: "star tracker blinded",
         help: "A 90° sun exclusion: the star tracker is out whenever the sun is above the horizon of its boresight",
         values: &[("star_sun_exclusion_deg", 90.0)],
     },
     Preset {
+        id: "noon-midnight",
         name: "noon–midnight orbit (long eclipse)",
         help: "Ascending node at 12 h: the longest eclipse, the sun sensors dark for a third of the orbit (Reset)",
         values: &[("ltan_h", 12.0)],
     },
     Preset {
+        id: "dawn-dusk",
         name: "dawn–dusk orbit (no eclipse)",
         help: "Ascending node at 18 h: the sun is always seen (Reset)",
         values: &[("ltan_h", 18.0)],
     },
     Preset {
+        id: "sun-along-field",
         name: "sun ∥ field",
         help: "The sun half a degree from the field direction: the vector filters without a star tracker lose the rotation about it and say so",
         values: &[("sun_along_field", 1.0), ("sun_field_angle_deg", 0.5)],
     },
     Preset {
+        id: "gyro-one-vector",
         name: "gyro + one vector (drift)",
         help: "A gyro bias of 0.02 °/s; Mag+Gyro sees the field only, and with the sun heads narrowed to ±10° Mag+Sun+Gyro mostly does too — pick one as the ghost: the unobservable axis is drawn on the body, the drift about it shows on the error plots",
         values: &[("gyro_bias_deg_s", 0.02), ("sun_fov_deg", 10.0)],
     },
     Preset {
+        id: "sensors-10hz",
         name: "sensors at 10 Hz",
         help: "Every sensor at the prediction rate: errors shrink roughly with √rate",
         values: &[
@@ -202,11 +223,13 @@ pub(super) const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "constant-gain",
         name: "constant gain (§3.3)",
         help: "The gains freeze at 60 s. The field and the sun then turn in the body frame along the orbit: within minutes the frozen Mag+Sun+Gyro gain loses the attitude while its EKF keeps tracking, and a star-tracker set's frozen gain stays its EKF's (see the constant-gain plot)",
         values: &[("freeze_after_s", 60.0)],
     },
     Preset {
+        id: "fig7-field-turn",
         name: "Fig. 7: bias as a turn of the field",
         help: "The magnetometer reads the field turned by 2° (the paper's bias model, its size ours): the filter 7′ estimates the turn in degrees; the component along the field settles only as the field turns along the orbit",
         values: &[("mag_turn_deg", 2.0)],

@@ -131,6 +131,7 @@ pub(super) const MULTIPLIERS: &[f64] = &[0.01, 0.1, 1.0, 10.0, 100.0];
 
 /// The lab's "tune this set" sweep.
 pub(super) const SWEEP: SweepSpec = SweepSpec::new(
+    "tune-set",
     "Tune this set: q_Λ × q_ω of the chosen set (its attitude σ, 200 s each)",
     Q_ATT,
     MULTIPLIERS,

@@ -23,7 +23,7 @@ pub(super) static LESSON: Lesson = Lesson {
     steps: &[
         LessonStep {
             set: &[("gyro_bias_deg_s", 0.0)],
-            tab: Some(PlotTab::Figure(2)),
+            tab: Some(PlotTab::Figure("fig5-angles")),
             show: &["uvz-rk4"],
             speed: Some(10.0),
             pause_at_s: Some(100.0),
@@ -47,6 +47,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ),
             ],
             ..LessonStep::new(
+                "fig5-euler",
                 "Eq. 21 reproduces Fig. 5",
                 "The paper's motion (§5): yaw ψ = ω_ψ·t with ω_ψ = 1 °/s, pitch ϑ = A_ϑ·cos ω_ϑt and roll γ = A_γ·sin ω_γt with A_ϑ = 30°, A_γ = 25°, ω_ϑ = ω_γ = 0.05 rad/s. \
                  The gyro is perfect here (bias 0 °/s): the (u, v, z) integration solves eq. 21 from u₀ = 0, v₀ = tan 15°, z₀ = 0, and eqs. 23–25 turn (u, v, z) back into ψ, ϑ, γ. \
@@ -56,7 +57,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("gyro_bias_deg_s", 0.0), ("pitch_amp_deg", 89.0)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("fig4-uv")),
             show: &["uvz-rk4"],
             highlight: &["pitch_amp_deg"],
             speed: Some(10.0),
@@ -71,6 +72,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::pause("62.8 s"),
             ],
             ..LessonStep::new(
+                "pitch-90",
                 "Pitch near 90°: trouble for Euler, not for w",
                 "At ϑ = ±90° the Euler angles lock: yaw and roll turn about the same axis and eq. 25 becomes 0/0. \
                  For w it is only c′ = 0, the unit circle |w| = 1 by eq. 13, an ordinary point of eq. 21. \
@@ -80,7 +82,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("profile", 2.0)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("fig4-uv")),
             show: &["uvz-rk4", "quat-rk4"],
             highlight: &["profile", "tumble_rate_deg_s"],
             speed: Some(3.0),
@@ -127,6 +129,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.1 °/s", "gyro_bias_deg_s"),
             ],
             ..LessonStep::new(
+                "upside-down",
                 "Upside down: w = ∞",
                 "The projection from the south pole S in eq. 12 sends the vertical pointing to S, c′ = −1, to w = ∞; the terms uω_ξ + vω_η of ż grow without bound. \
                  Watch the sphere and the w plane as the roll passes 90° (|w| = 1) and 180°: the plane's caption names the chart each filter is in. \
@@ -135,7 +138,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("fig8-v")),
             show: &["uvz-rk4"],
             highlight: &["gyro_bias_deg_s", "bias_axes"],
             speed: Some(10.0),
@@ -169,6 +172,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 }),
             ],
             ..LessonStep::new(
+                "gyro-drift",
                 "The gyro channel drifts",
                 "Now the gyro reads the true rate plus 0.1 °/s on every axis (the paper does not say which axes; the lab assumes all three, positive). \
                  In Fig. 8 v of the gyro channel leaves the truth, and on the w plane its path creeps away, as in Fig. 7. \
@@ -176,7 +180,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("fig8-v")),
             show: &["uvz-rk4", "accel"],
             highlight: &["accel_noise_g", "bump_g"],
             speed: Some(10.0),
@@ -202,6 +206,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ),
             ],
             ..LessonStep::new(
+                "accel-noise",
                 "The accelerometers are noisy, not drifting",
                 "At rest the accelerometers measure the vertical itself: n = f/g is the third column of A by eq. 27, so uᵃ = n_ξ/(1 + n_ζ) and vᵃ = n_η/(1 + n_ζ) of eq. 28 need no integration and cannot drift. \
                  But every reading carries noise, σ = 0.01 g as in the paper: vᵃ is a noisy band around the truth in Fig. 8 and a cloud on the w plane. \
@@ -210,7 +215,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(4)),
+            tab: Some(PlotTab::Figure("fig10-filters")),
             show: &["uvz-rk4", "accel", "blend"],
             highlight: &["blend_time_const_s"],
             speed: Some(10.0),
@@ -246,6 +251,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ),
             ],
             ..LessonStep::new(
+                "fig9-blend",
                 "The blend of Fig. 9",
                 "Fig. 9 blends the channels: uᵏ = HPF(u) + LPF(uᵃ) and vᵏ = HPF(v) + LPF(vᵃ), with W_HPF = Ts/(Ts + 1), W_LPF = 1/(Ts + 1) and T = 1 s. \
                  The gyro channel is right over short times, the accelerometer channel on average; since HPF + LPF = 1, the truth passes unchanged. \
@@ -253,7 +259,7 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            tab: Some(PlotTab::Figure(6)),
+            tab: Some(PlotTab::Figure("kf-variances")),
             show: &["blend", "kf-uv"],
             highlight: &["kf_q_scale"],
             speed: Some(10.0),
@@ -268,6 +274,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("0.13°", tilt_rms("blend")),
             ],
             ..LessonStep::new(
+                "kalman-gain",
                 "A Kalman filter chooses its own gain",
                 "Beyond the paper: a Kalman filter in (u, v) takes the Riccati kinematics of eqs. 17–19 as its process and (uᵃ, vᵃ) of eq. 28 as its measurement. \
                  It has no T to choose: its gain follows from the noise it is told (the gyro's, its bias as extra process noise, the accelerometers' σ). \

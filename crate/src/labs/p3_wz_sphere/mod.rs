@@ -45,6 +45,7 @@ fn bias_pattern(index: usize) -> Vector3<f64> {
 
 const FIGURES: &[Figure] = &[
     Figure::new(
+        "fig4-uv",
         "Fig. 4: u, v",
         &[
             SeriesKey::truth(&q::U),
@@ -54,6 +55,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig4-z",
         "Fig. 4: z",
         &[
             SeriesKey::truth(&q::Z_DEG),
@@ -61,6 +63,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig5-angles",
         "Fig. 5: yaw, pitch, roll",
         &[
             SeriesKey::truth(&q::YAW_DEG),
@@ -72,6 +75,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig8-v",
         "Fig. 8: v, vᵃ",
         &[
             SeriesKey::new("uvz-rk4", &q::V),
@@ -80,6 +84,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "fig10-filters",
         "Fig. 10: HPF(v), LPF(vᵃ), vᵏ",
         &[
             SeriesKey::new("blend", &blended_wz::HPF_V),
@@ -89,6 +94,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "tilt-errors",
         "Tilt errors",
         &[
             SeriesKey::new("uvz-rk4", &q::TILT_ERR_DEG),
@@ -99,6 +105,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "kf-variances",
         "KF variances (log10)",
         &[
             SeriesKey::variance("kf-uv", &wz_kalman::STATE_U),

@@ -22,7 +22,7 @@ pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 4: one number γ = det Q / det R tunes the Kalman filter of an asymmetric rig's roll",
     steps: &[
         LessonStep {
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("roll")),
             show: &["kf"],
             highlight: &["vibration_g"],
             speed: Some(1.0),
@@ -35,6 +35,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.2 g", "vibration_g"),
             ],
             ..LessonStep::new(
+                "bench",
                 "The bench of Fig. 3 and its filter",
                 "The paper's bench of Fig. 3: a lever on a bearing with one motor and propeller, an MPU-6050 and an Arduino; the set-point steps between 0° and 20° every 4 s. \
                  The Kalman filter of eq. 5 estimates x = [θ, ω] from the accelerometer angle θ_acc = atan2(a_y, a_z) and the gyro rate, with the model x⁺ = Ax + Bu fed the controller's u_v. \
@@ -43,8 +44,8 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("γ = 10⁻⁵: offset, slow"),
-            tab: Some(PlotTab::Figure(1)),
+            preset: Some("gamma-small"),
+            tab: Some(PlotTab::Figure("roll-error")),
             terms: &[CycleTerm::ProcessNoise, CycleTerm::Gain],
             show: &["kf"],
             highlight: &[keys::GAMMA],
@@ -72,6 +73,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run_with("1.6 s", GAMMA_STAR, Reading::Lab("settling")),
             ],
             ..LessonStep::new(
+                "small-gamma",
                 "Small γ: offset and a slow transient",
                 "γ = det Q / det R is the filter's one tuning number (§3). \
                  R = diag(σ_θ², σ_ω²) from the datasheet stays fixed, and Q = q·diag(dt³/3, dt) is scaled until det Q = γ·det R, our mapping, since the paper gives none. \
@@ -79,8 +81,8 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("γ = 0.2: noisy"),
-            tab: Some(PlotTab::Figure(1)),
+            preset: Some("gamma-large"),
+            tab: Some(PlotTab::Figure("roll-error")),
             show: &["kf"],
             highlight: &[keys::GAMMA],
             speed: Some(0.5),
@@ -111,19 +113,20 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("4 s", "step_period_s"),
             ],
             ..LessonStep::new(
+                "large-gamma",
                 "Large γ: noise",
                 "γ = 0.2 is the largest value of the paper's grid: much process noise, so the filter follows its measurements closely and is fast. \
                  Watch the roll error while the rig rests at 0° before the first step at 4 s.",
             )
         },
         LessonStep {
-            preset: Some("γ = 2·10⁻³: best of the paper's four values"),
-            tab: Some(PlotTab::Figure(1)),
+            preset: Some("gamma-best"),
+            tab: Some(PlotTab::Figure("roll-error")),
             show: &["kf"],
             highlight: &[keys::GAMMA, "vibration_g"],
             speed: Some(1.0),
             pause_at_s: Some(16.0),
-            sweep: Some(0),
+            sweep: Some("gamma"),
             tiles: &[SeriesKey::new("kf", &q::ANGLE_ERR_DEG)],
             quotes: &[
                 Quote::paper("0.2"),
@@ -150,6 +153,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 ),
             ],
             ..LessonStep::new(
+                "gamma-star",
                 "γ* = 2·10⁻³ and the sweep",
                 "Table 1 scores the grid γ = 0.2, 0.02, 2·10⁻³, 10⁻ⁿ by J = α·MSE + β·t_tr of eq. 6 for (α, β) = (0.3, 0.7), (0.7, 0.3) and (0.5, 0.5), with MSE over the errors of θ and ω. \
                  In the paper and here 2·10⁻³ wins for all three pairs: here its MSE is 0.91 against 1.18 to 1.73 deg² + (deg/s)² for the others. \
@@ -158,8 +162,8 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("fast motion fools the accelerometer"),
-            tab: Some(PlotTab::Figure(0)),
+            preset: Some("fast-motion"),
+            tab: Some(PlotTab::Figure("roll")),
             show: &["kf", "cf"],
             highlight: &["imu_offset_m", "bandwidth_rad_s"],
             speed: Some(1.0),
@@ -175,6 +179,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.98", keys::CF_GAIN),
             ],
             ..LessonStep::new(
+                "fast-motion",
                 "Fast motion fools the accelerometer",
                 "Now ω_c = 12 rad/s, the steps are 40° and the IMU sits 0.25 m from the pivot. \
                  Besides gravity the accelerometer feels the rig's own motion, rθ̈ across the lever and rθ̇² towards the pivot, so θ_acc = atan2(a_y, a_z) swings away from θ in every step, though it is right on average at rest. \
@@ -182,8 +187,8 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("quadrotor, asymmetric 15 %"),
-            tab: Some(PlotTab::Figure(3)),
+            preset: Some("asymmetric"),
+            tab: Some(PlotTab::Figure("control")),
             highlight: &["rig", "asymmetry_pct"],
             speed: Some(1.0),
             pause_at_s: Some(8.0),
@@ -205,6 +210,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::posed("0 rad/s²"),
             ],
             ..LessonStep::new(
+                "asymmetric-u0",
                 "The asymmetric quadrotor's u₀",
                 "The rig is now a quadrotor whose arms differ by a = 15 % and whose thrust gains differ by a/4, our version of eq. 2. \
                  Eq. 4 only bounds the u₀ that holds it, between f(ω_max, l_min, J_max) and f(ω_min, l_max, J_min), because the geometry is uncertain. \

@@ -67,6 +67,7 @@ const Q_FROM: &[&str] = &["γ (the paper)", "two elements"];
 
 const FIGURES: &[Figure] = &[
     Figure::new(
+        "roll",
         "Roll: truth, set-point, accelerometer angle and estimates",
         &[
             SeriesKey::truth(&q::ANGLE_DEG),
@@ -79,6 +80,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "roll-error",
         "Roll error of each filter",
         &[
             SeriesKey::new("kf", &q::ANGLE_ERR_DEG),
@@ -88,6 +90,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "rate-error",
         "Rate error of each filter",
         &[
             SeriesKey::new("kf", &q::RATE_ERR_DEG_S),
@@ -97,6 +100,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "control",
         "Control: u_v, the integral's u₀ and the u₀ hover needs",
         &[
             SeriesKey::truth(&plant::U_V_RAD_S2),
@@ -105,6 +109,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "gyro",
         "Gyro: reading and truth",
         &[
             SeriesKey::sensors(&mpu6050::GYRO_DEG_S),
@@ -112,6 +117,7 @@ const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "bias-kf",
         "Bias KF (beyond the paper): gyro-bias estimate",
         &[SeriesKey::new("kf-bias", &roll_kf::GYRO_BIAS_DEG_S)],
     ),
@@ -119,26 +125,31 @@ const FIGURES: &[Figure] = &[
 
 const PRESETS: &[Preset] = &[
     Preset {
+        id: "gamma-best",
         name: "γ = 2·10⁻³: best of the paper's four values",
         help: "The argmin of J over the four γ of the paper's Table 1 (here too, for all three (α, β)). The page's γ sweep tries 11 values and finds 2·10⁻³ too with our rig and vibration",
         values: &[(keys::GAMMA, 2e-3)],
     },
     Preset {
+        id: "gamma-small",
         name: "γ = 10⁻⁵: offset, slow",
         help: "The filter trusts its model: smooth, but behind in the steps and off by the gyro offset",
         values: &[(keys::GAMMA, 1e-5)],
     },
     Preset {
+        id: "gamma-large",
         name: "γ = 0.2: noisy",
         help: "The filter trusts the sensors: fast, and it passes their noise",
         values: &[(keys::GAMMA, 0.2)],
     },
     Preset {
+        id: "asymmetric",
         name: "quadrotor, asymmetric 15 %",
         help: "Four motors whose arms and thrusts differ: the integral holds u₀ ≠ 0 (Reset)",
         values: &[("rig", 2.0), ("asymmetry_pct", 15.0)],
     },
     Preset {
+        id: "fast-motion",
         name: "fast motion fools the accelerometer",
         help: "A fast controller, big steps, the IMU far from the pivot: the accelerometer angle is wrong in every step",
         values: &[
@@ -148,11 +159,13 @@ const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "push",
         name: "push at 6 s",
         help: "A 0.1-s angular-acceleration pulse: the controller recovers, the filters follow",
         values: &[("gust_rad_s2", 200.0), ("gust_at_s", 6.0)],
     },
     Preset {
+        id: "uncalibrated-gyro",
         name: "uncalibrated gyro (5 °/s offset)",
         help: "A large zero-rate offset: the paper's KF drifts off, the bias KF learns it",
         values: &[("gyro_offset_deg_s", 5.0)],

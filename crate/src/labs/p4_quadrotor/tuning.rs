@@ -86,6 +86,7 @@ const GAMMAS: &[f64] = &[
 /// The lab's sweeps.
 pub const SWEEPS: &[SweepSpec] = &[
     SweepSpec::new(
+        "gamma",
         "γ: Table 1 (MSE, t_tr, J) over 5 seeds, 8 s with one step",
         roll_keys::GAMMA,
         GAMMAS,
@@ -100,6 +101,7 @@ pub const SWEEPS: &[SweepSpec] = &[
     .scoring(&TABLE1)
     .log_scoring(&ON_LOG),
     SweepSpec::new(
+        "q-landscape",
         "Q landscape: J over q_θ × q_ω with R fixed, 2 seeds, 8 s",
         roll_keys::Q_ANGLE,
         &[1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2],

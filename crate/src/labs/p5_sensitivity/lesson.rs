@@ -15,9 +15,9 @@ pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 5: correcting measured rates through the sensitivity matrix U = ∂Λ/∂p",
     steps: &[
         LessonStep {
-            preset: Some("gyro bias 2 °/s"),
+            preset: Some("gyro-bias"),
             set: &[("interval_s", 0.5)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("error")),
             show: &["raw"],
             highlight: &["gyro_bias_deg_s"],
             speed: Some(2.0),
@@ -30,6 +30,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.5 s", "interval_s"),
             ],
             ..LessonStep::new(
+                "drift",
                 "Integrated rates drift",
                 "The body turns at 10 °/s, and the gyro adds a bias b of 2 °/s along (1, −1, 2)/√6. \
                  Integrating the measured rates, 2Λ̇ = Λ∘ω, carries the bias into the quaternion Λ: the attitude error of the uncorrected integration grows with time. \
@@ -37,8 +38,8 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("paper's case, Δt = 1.17"),
-            tab: Some(PlotTab::Figure(1)),
+            preset: Some("paper-case"),
+            tab: Some(PlotTab::Figure("angles")),
             show: &["gn9"],
             highlight: &["interval_s"],
             speed: Some(0.5),
@@ -67,6 +68,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::paper("2.36"),
             ],
             ..LessonStep::new(
+                "paper-case",
                 "The paper's case",
                 "The paper's only experiment (§3): the body holds still, ω = 0, starts at Krylov angles (0.5, 0.7, 0.2) rad and must reach the reference (0.01, 0.02, 0.01) rad within 0.01 rad per angle. \
                  At each reference p takes one Gauss–Newton step, p⁽ⁱ⁺¹⁾ = p⁽ⁱ⁾ + (UᵀQU)⁻¹UᵀQΔΛ, method (9), with U = ∂Λ/∂p integrated beside Λ from U(tᵢ) = 0. \
@@ -75,7 +77,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("interval_s", 1.0)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("error")),
             show: &["gn9"],
             highlight: &["interval_s"],
             speed: Some(2.0),
@@ -104,6 +106,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("0.64 rad", Reading::Lab("gn9-update-6")),
             ],
             ..LessonStep::new(
+                "method-9",
                 "Method (9) never settles",
                 "Method (9) continues the state: after an update Λ is not reset to the reference, and the new p acts from where Λ is. \
                  Watch the error after its first visit inside the tolerance, and the diagram beside the plots: the eigenvalues of the linearised update for the current Δt and ε.",
@@ -111,7 +114,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("interval_s", 1.0), ("eps", 0.1)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("error")),
             show: &["gn9", "lm10"],
             highlight: &["eps"],
             speed: Some(2.0),
@@ -125,6 +128,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("2.02 s", first_within("gn9")),
             ],
             ..LessonStep::new(
+                "method-10",
                 "Method (10): ε does not damp it",
                 "Method (10) adds ε to the normal equations, (UᵀQU + εI)⁻¹, the paper's remedy for a nearly singular UᵀQU. \
                  Here UᵀQU is well conditioned: over a short interval U ≈ (Δt/2)F with FᵀF = I₃, as the condition-number tab shows. \
@@ -134,7 +138,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("interval_s", 1.0), ("eps", 0.1)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("error")),
             show: &["gn9", "search11"],
             speed: Some(0.5),
             pause_at_s: Some(6.0),
@@ -159,6 +163,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("10⁻¹⁵ rad", Reading::Lab("search11-after-10")).at_most(),
             ],
             ..LessonStep::new(
+                "method-11",
                 "Method (11): a step-size search",
                 "Method (11) scales the step, p(i, s) = p⁽ⁱ⁾ + s(UᵀQU + εI)⁻¹UᵀQΔΛ, and picks the s that minimises J. \
                  Every trial s needs the last interval integrated again with p(i, s); the paper names no search rule, and this lab uses a golden-section search. \
@@ -167,7 +172,7 @@ pub(super) static LESSON: Lesson = Lesson {
         },
         LessonStep {
             set: &[("interval_s", 1.0)],
-            tab: Some(PlotTab::Figure(0)),
+            tab: Some(PlotTab::Figure("error")),
             show: &["gn9", "reint"],
             speed: Some(0.5),
             pause_at_s: Some(6.0),
@@ -183,6 +188,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::run("2.4·10⁻⁷ rad", Reading::Lab("reint-update-4")),
             ],
             ..LessonStep::new(
+                "reintegrate",
                 "Re-integrate, and it converges",
                 "Beyond the paper: after each update, integrate the last interval again with the new p, ε = 0, and continue from its end. \
                  Linearised, the update becomes e ← (1 − k)(e + q), q ← q − k(e + q); with k = 1 both eigenvalues are 0, at the centre of the diagram, so the error dies out instead of circling. \
@@ -191,9 +197,9 @@ pub(super) static LESSON: Lesson = Lesson {
             )
         },
         LessonStep {
-            preset: Some("gyro bias 2 °/s"),
+            preset: Some("gyro-bias"),
             set: &[("interval_s", 0.5)],
-            tab: Some(PlotTab::Figure(3)),
+            tab: Some(PlotTab::Figure("correction-variant")),
             show: &["reint"],
             highlight: &["gyro_bias_deg_s"],
             speed: Some(2.0),
@@ -236,6 +242,7 @@ pub(super) static LESSON: Lesson = Lesson {
                 Quote::param("0.5 s", "interval_s"),
             ],
             ..LessonStep::new(
+                "gyro-bias",
                 "A biased gyro: p learns −b",
                 "Back to the turning body and the biased gyro of step 1, now corrected. \
                  The variant updates p every Δt = 0.5 s from the reference attitudes and integrates each interval again with the new p. \

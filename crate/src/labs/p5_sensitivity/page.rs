@@ -10,6 +10,7 @@ use crate::estimators::sensitivity;
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(
+        "error",
         "Attitude error (all methods)",
         &[
             SeriesKey::new("gn9", &q::ERR_DEG),
@@ -21,6 +22,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "angles",
         "Angles of method (9) and the reference",
         &[
             SeriesKey::new("gn9", &sensitivity::ANGLE_1_RAD),
@@ -32,6 +34,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "correction-9",
         "Correction p (9)",
         &[
             SeriesKey::new("gn9", &sensitivity::P_X_DEG_S),
@@ -40,6 +43,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "correction-variant",
         "Correction p (variant)",
         &[
             SeriesKey::new("reint", &sensitivity::P_X_DEG_S),
@@ -48,6 +52,7 @@ pub(super) const FIGURES: &[Figure] = &[
         ],
     ),
     Figure::new(
+        "condition",
         "Condition number of UᵀQU",
         &[
             SeriesKey::new("gn9", &sensitivity::COND_UTQU),
@@ -57,6 +62,7 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "singular-values",
         "Singular values of UᵀQU (9)",
         &[
             SeriesKey::new("gn9", &sensitivity::SV1),
@@ -66,10 +72,12 @@ pub(super) const FIGURES: &[Figure] = &[
     )
     .log(),
     Figure::new(
+        "step-size",
         "Step size s of method (11)",
         &[SeriesKey::new("search11", &sensitivity::STEP_S)],
     ),
     Figure::new(
+        "references",
         "References received",
         &[SeriesKey::sensors(&super::sensors::REFERENCE)],
     ),
@@ -112,6 +120,7 @@ pub(super) fn diagrams(p: &ParamValues) -> Vec<Diagram> {
         }
     }
     vec![Diagram {
+        id: "eigenvalues",
         title: "Eigenvalues of the linearised update",
         detail: vec![("Δt", dt, "s"), ("ε", eps, "")],
         unit_circle: true,

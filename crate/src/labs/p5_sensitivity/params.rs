@@ -79,11 +79,13 @@ pub(super) const PARAMS: &[ParamSpec] = &[
 
 pub(super) const PRESETS: &[Preset] = &[
     Preset {
+        id: "paper-case",
         name: "paper's case, Δt = 1.17",
         help: "The interval at which method (9) first meets 0.01 at t ≈ 2.36, the paper's number",
         values: &[("profile", 0.0), ("interval_s", 1.17)],
     },
     Preset {
+        id: "gyro-bias",
         name: "gyro bias 2 °/s",
         help: "A turning body, a biased gyro: p converges to −b",
         values: &[
@@ -96,6 +98,7 @@ pub(super) const PRESETS: &[Preset] = &[
         ],
     },
     Preset {
+        id: "reference-lost",
         name: "reference lost 20–50 s",
         help: "The reference drops out for 30 s: free-running drift, then re-convergence",
         values: &[

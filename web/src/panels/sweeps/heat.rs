@@ -36,7 +36,7 @@ pub(super) fn heat_map(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
         return;
     };
     let spec = s.spec();
-    let w = Words::of(app, s, i);
+    let w = Words::of(app, s);
     let (xs, ys) = (s.values(), axis.values);
     if xs.len() < 2 || ys.len() < 2 || xs.iter().chain(ys).any(|v| *v <= 0.0) {
         ui.label(tr(app, "sweep-heat-needs"));

@@ -28,7 +28,7 @@ pub fn sweeps(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     for (i, spec) in app.sim().lab().sweeps().iter().enumerate() {
         let title = lab_word(
             app,
-            &i18n::sweep_id(app.sim().lab().id(), i, "title"),
+            &i18n::sweep_id(app.sim().lab().id(), spec.id, "title"),
             spec.title,
         );
         super::fit::header(ui, tr_with(app, "sweep-title", &[("title", arg(title))]))
@@ -46,7 +46,7 @@ pub fn in_lesson(ui: &mut Ui, app: &AppState, i: usize, commands: &mut Vec<Comma
     };
     let title = lab_word(
         app,
-        &i18n::sweep_id(app.sim().lab().id(), i, "title"),
+        &i18n::sweep_id(app.sim().lab().id(), spec.id, "title"),
         spec.title,
     );
     ui.label(RichText::new(tr_with(app, "sweep-title", &[("title", arg(title))])).strong());
@@ -71,7 +71,7 @@ fn body(
     match (spec.grid, s.scoring()) {
         (Some(_), Some(_)) => heat_map(ui, app, s, i),
         (None, Some(_)) => {
-            argmins(ui, app, s, i);
+            argmins(ui, app, s);
             objective_plot(ui, app, s, i);
             if table {
                 score_table(ui, app, s, i);
@@ -153,7 +153,7 @@ fn controls(
         };
         let help = lab_word(
             app,
-            &i18n::sweep_id(app.sim().lab().id(), i, part),
+            &i18n::sweep_id(app.sim().lab().id(), spec.id, part),
             scoring.help,
         );
         ui.label(RichText::new(help).small().weak());
@@ -162,7 +162,7 @@ fn controls(
 
 fn problems(ui: &mut Ui, app: &AppState, s: &Sweep) {
     let spec = s.spec();
-    let w = Words::of(app, s, 0);
+    let w = Words::of(app, s);
     let error = crate::render::palette::of(ui.visuals()).error;
     for p in s.points.iter().filter(|p| p.missing.iter().any(|m| *m > 0)) {
         let at = arg(w.at(spec, p));
@@ -196,7 +196,7 @@ fn log_points(s: &Sweep, f: impl Fn(&SweepPoint) -> f64) -> Vec<[f64; 2]> {
 fn rms_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let colours = crate::render::palette::of(ui.visuals());
     let spec = s.spec();
-    let w = Words::of(app, s, i);
+    let w = Words::of(app, s);
     for k in 0..spec.series.len() {
         if let Some((value, rms)) = s.best(k) {
             let args = [
@@ -231,7 +231,7 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let colours = crate::render::palette::of(ui.visuals());
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
-    let w = Words::of(app, s, i);
+    let w = Words::of(app, s);
     crate::render::ticks::in_language(Plot::new(("sweep_objectives", i)), app.view().lang())
         // The wheel scrolls the panel; it had panned a plot that passed under the pointer.
         .allow_scroll(false)
@@ -263,10 +263,10 @@ fn objective_plot(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
 }
 
 /// Each objective's least value over the points so far, in bold.
-fn argmins(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
+fn argmins(ui: &mut Ui, app: &AppState, s: &Sweep) {
     let Some(scoring) = s.scoring() else { return };
     let spec = s.spec();
-    let w = Words::of(app, s, i);
+    let w = Words::of(app, s);
     for (k, (english, _)) in scoring.objectives.iter().enumerate() {
         if let Some(best) = s.argmin(k) {
             let args = [

@@ -24,7 +24,7 @@ struct Cell {
 /// The scores' table, then the objectives' (each objective's argmin in its colour).
 pub(super) fn score_table(ui: &mut Ui, app: &AppState, s: &Sweep, i: usize) {
     let Some(scoring) = s.scoring() else { return };
-    let w = Words::of(app, s, i);
+    let w = Words::of(app, s);
     let param = w.param(s.spec().key);
     let colours = crate::render::palette::of(ui.visuals());
     let lang = app.view().lang();

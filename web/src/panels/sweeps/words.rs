@@ -11,15 +11,16 @@ use attlab::model::{SweepSpec, fmt_sig};
 /// reader's language.
 pub(super) struct Words<'a> {
     app: &'a AppState,
-    sweep: usize,
+    /// The sweep's id.
+    sweep: &'static str,
     on_log: bool,
 }
 
 impl Words<'_> {
-    pub(super) fn of<'a>(app: &'a AppState, s: &Sweep, sweep: usize) -> Words<'a> {
+    pub(super) fn of<'a>(app: &'a AppState, s: &Sweep) -> Words<'a> {
         Words {
             app,
-            sweep,
+            sweep: s.spec().id,
             on_log: s.is_on_log(),
         }
     }
