@@ -1,5 +1,5 @@
 //! No CSV cell reads `inf` or `NaN`: a missing or non-finite value is an empty cell (the
-//! README's promise), in every lab's run at its defaults — paper 5's past the divergence of
+//! promise of docs/cli.md), in every lab's run at its defaults — paper 5's past the divergence of
 //! method (9) at t ≈ 1107 s, where the condition number of a singular UᵀQU is infinite.
 #![cfg(not(target_arch = "wasm32"))]
 

@@ -159,7 +159,7 @@ fn series_literals(text: &str) -> Vec<&str> {
                 .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || "_-{}".contains(c))
     };
     let files = [
-        "csv", "png", "json", "md", "rs", "txt", "html", "js", "wasm", "wgsl",
+        "csv", "png", "json", "md", "rs", "txt", "html", "js", "wasm", "wgsl", "ftl",
     ];
     text.split('"')
         .skip(1)

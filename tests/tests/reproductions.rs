@@ -1,5 +1,6 @@
 //! Every lab's reproduction: no row fails (a check that does not match is declared, with
-//! its reason), and the README shows exactly the tables the code measures now. The labs run
+//! its reason), and each lab's chapter (`README.md` in its folder) shows exactly the table
+//! the code measures now. The labs run
 //! side by side, one thread each, straight from the registry: a new lab is tested without
 //! an edit here.
 #![cfg(not(target_arch = "wasm32"))]
@@ -8,9 +9,7 @@ use attlab::analysis::readme;
 use attlab::labs;
 use attlab::model::{Lab, Outcome, Row};
 
-const README: &str = include_str!("../../README.md");
-
-/// What is wrong with `lab`'s reproduction or its README table, if anything.
+/// What is wrong with `lab`'s reproduction or its chapter's table, if anything.
 fn reproduction_problem(lab: &dyn Lab) -> Option<String> {
     let id = lab.id();
     let rep = match lab.reproduce() {
@@ -30,13 +29,19 @@ fn reproduction_problem(lab: &dyn Lab) -> Option<String> {
     if let Some(problem) = unpaired_calibration(&rep.rows) {
         return Some(format!("{id}: {problem}"));
     }
-    let Some(shown) = readme::block(README, id) else {
-        return Some(format!("README has no <!-- reproduce:{id} --> block"));
+    let chapter = lab.study()?.chapter();
+    let path = chapter.path();
+    let Some(shown) = readme::block(chapter.text, id) else {
+        return Some(format!(
+            "{} has no <!-- reproduce:{id} --> block",
+            path.display()
+        ));
     };
     (shown != rep.to_markdown().trim_matches('\n')).then(|| {
         format!(
-            "README table of {id} drifted from what the code measures: run \
-             `cargo run -p attlab --release -- reproduce all --readme README.md`"
+            "the table in {} drifted from what the code measures: run \
+             `cargo run -p attlab --release -- reproduce all --readme`",
+            path.display()
         )
     })
 }
@@ -80,7 +85,7 @@ fn a_calibrated_row_without_its_sensitivity_rows_is_caught() {
 }
 
 #[test]
-fn every_lab_reproduces_and_the_readme_shows_it() {
+fn every_lab_reproduces_and_its_chapter_shows_it() {
     let problems: Vec<String> = std::thread::scope(|s| {
         let runs: Vec<_> = labs::all()
             .iter()

@@ -39,8 +39,8 @@ pub enum SizeReport {
     /// Raw and gzipped (under a second).
     Gzip,
     /// Raw, gzipped and brotli'd at quality 11 (about 35 s for the 6-MB wasm on this
-    /// project's machine, even with brotli optimised): `dist` and `size`, whose figures the
-    /// README quotes.
+    /// project's machine, even with brotli optimised): `dist` and `size`, whose figures
+    /// docs/measured.md quotes.
     WithBrotli,
 }
 
@@ -271,15 +271,22 @@ fn read(path: &Path) -> Result<Vec<u8>> {
     fs::read(path).map_err(|e| format!("reading {}: {e}", path.display()).into())
 }
 
-/// Writes every `.ftl` file of `crate/locales/ru/`, in name order, into one file `to`: the
-/// Russian catalogue the page fetches beside its wasm (the native binary includes the same
-/// files; a test of `attlab::i18n` checks the two agree).
+/// Writes every `.ftl` file of `crate/locales/ru/` and every lab folder's `ru.ftl`
+/// (`crate/src/labs/*/ru.ftl`), in path order, into one file `to`: the Russian catalogue the
+/// page fetches beside its wasm (the native binary includes the same files; a test of
+/// `attlab::i18n` checks the two agree).
 fn join_russian(to: &Path) -> Result<()> {
-    let dir = cmd::root().join("crate/locales/ru");
-    let mut files: Vec<PathBuf> = fs::read_dir(&dir)
-        .map_err(|e| format!("reading {}: {e}", dir.display()))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "ftl"))
+    let entries = |dir: &Path| -> Result<Vec<PathBuf>> {
+        Ok(fs::read_dir(dir)
+            .map_err(|e| format!("reading {}: {e}", dir.display()))?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .collect())
+    };
+    let central = entries(&cmd::root().join("crate/locales/ru"))?;
+    let labs = entries(&cmd::root().join("crate/src/labs"))?;
+    let mut files: Vec<PathBuf> = (central.into_iter())
+        .chain(labs.into_iter().map(|d| d.join("ru.ftl")))
+        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "ftl"))
         .collect();
     files.sort();
     let mut joined = String::new();

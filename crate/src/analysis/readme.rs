@@ -1,7 +1,7 @@
-//! The README's measured tables are generated from the reproductions: each lab's table sits
-//! between `<!-- reproduce:ID -->` and `<!-- /reproduce:ID -->`, written by
-//! `attlab reproduce all --readme README.md` and compared by the test suite, so the README
-//! cannot drift from what the code measures.
+//! The labs' chapters' measured tables are generated from the reproductions: each lab's
+//! table sits in its chapter (`README.md` in its folder) between `<!-- reproduce:ID -->` and
+//! `<!-- /reproduce:ID -->`, written by `attlab reproduce all --readme` and compared by the
+//! test suite, so a chapter cannot drift from what the code measures.
 
 use crate::model::Reproduction;
 
@@ -13,7 +13,7 @@ pub fn markers(id: &str) -> (String, String) {
     )
 }
 
-/// The text between lab `id`'s markers, if the README has them.
+/// The text between lab `id`'s markers, if the chapter has them.
 pub fn block<'a>(readme: &'a str, id: &str) -> Option<&'a str> {
     let (open, close) = markers(id);
     let start = readme.find(&open)? + open.len();
@@ -21,18 +21,18 @@ pub fn block<'a>(readme: &'a str, id: &str) -> Option<&'a str> {
     Some(readme[start..end].trim_matches('\n'))
 }
 
-/// `readme` with lab `rep.lab`'s block replaced by its current table; an error when the
+/// `readme` (a chapter) with lab `rep.lab`'s block replaced by its current table; an error when the
 /// markers are missing.
 pub fn with_table(readme: &str, rep: &Reproduction) -> Result<String, String> {
     let (open, close) = markers(&rep.lab);
     let start = readme
         .find(&open)
-        .ok_or_else(|| format!("the README has no `{open}` marker"))?
+        .ok_or_else(|| format!("the chapter has no `{open}` marker"))?
         + open.len();
     let end = start
         + readme[start..]
             .find(&close)
-            .ok_or_else(|| format!("the README has no `{close}` marker"))?;
+            .ok_or_else(|| format!("the chapter has no `{close}` marker"))?;
     Ok(format!(
         "{}\n{}{}",
         &readme[..start],

@@ -85,34 +85,39 @@ impl Lang {
         }
     }
 
-    /// Translations of what the labs say in English in their code (see [`lab_text`]).
-    fn lab_sources(self) -> &'static [&'static str] {
-        match self {
-            Self::En => &[include_str!("../../locales/en/units.ftl")],
+    /// Translations of what the labs say in English in their code (see [`lab_text`]): the
+    /// quantities the labs share, then each registered lab's own file from its folder
+    /// ([`crate::model::LabWords`]; the registry is the only list of labs).
+    fn lab_sources(self) -> Vec<&'static str> {
+        let shared: &[&'static str] = match self {
+            Self::En => &[],
+            #[cfg(not(target_arch = "wasm32"))]
+            Self::Ru => &[include_str!("../../locales/ru/quantities.ftl")],
+            // In the page the shared Russian comes in the fetched file with the rest.
             #[cfg(target_arch = "wasm32")]
             Self::Ru => &[],
-            #[cfg(not(target_arch = "wasm32"))]
-            Self::Ru => &[
-                include_str!("../../locales/ru/units.ftl"),
-                include_str!("../../locales/ru/labs.ftl"),
-                include_str!("../../locales/ru/hints.ftl"),
-                include_str!("../../locales/ru/quantities.ftl"),
-                include_str!("../../locales/ru/studies.ftl"),
-                include_str!("../../locales/ru/lesson-free-rotation.ftl"),
-                include_str!("../../locales/ru/lesson-p1.ftl"),
-                include_str!("../../locales/ru/lesson-p2.ftl"),
-                include_str!("../../locales/ru/lesson-p3.ftl"),
-                include_str!("../../locales/ru/lesson-p4.ftl"),
-                include_str!("../../locales/ru/lesson-p5.ftl"),
-            ],
-        }
+        };
+        let own = crate::labs::all().iter().map(|lab| {
+            let words = lab.spec().words;
+            match self {
+                Self::En => words.en,
+                Self::Ru => words.ru,
+            }
+        });
+        shared
+            .iter()
+            .copied()
+            .chain(own)
+            .filter(|s| !s.is_empty())
+            .collect()
     }
 }
 
-/// The Russian catalogue the page fetched: every file of `crate/locales/ru/` in one
-/// (`assets/locales/ru.ftl`, which `cargo xtask dist` writes). Natively the files are in the
-/// binary; in the page they stay beside the wasm, so a reader in English does not download
-/// them as code and a new release of the code need not send them again.
+/// The Russian catalogue the page fetched: every file of `crate/locales/ru/` and every lab
+/// folder's `ru.ftl` in one (`assets/locales/ru.ftl`, which `cargo xtask dist` writes).
+/// Natively the files are in the binary; in the page they stay beside the wasm, so a
+/// reader in English does not download them as code and a new release of the code need not
+/// send them again.
 #[cfg(target_arch = "wasm32")]
 static RUSSIAN: OnceLock<&'static str> = OnceLock::new();
 
@@ -380,7 +385,7 @@ fn bundle(lang: Lang) -> &'static Bundle {
                 if *l == Lang::Ru {
                     bundle.set_formatter(Some(numbers::russian_fluent_number));
                 }
-                for source in l.sources().iter().chain(l.lab_sources()) {
+                for source in l.sources().iter().chain(&l.lab_sources()) {
                     let resource = FluentResource::try_new((*source).to_string())
                         .unwrap_or_else(|(partial, _)| partial);
                     // A duplicate id keeps the first; the tests fail on it.

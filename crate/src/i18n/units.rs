@@ -143,6 +143,7 @@ mod tests {
         let found: Vec<&str> = Lang::Ru
             .sources()
             .iter()
+            .copied()
             .chain(Lang::Ru.lab_sources())
             .flat_map(|source| source.lines())
             .filter(|l| !l.starts_with('#') && units_after_numbers(Lang::Ru, l) != *l)

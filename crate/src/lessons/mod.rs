@@ -62,6 +62,20 @@ fn lesson_problems(lesson: &Lesson) -> Vec<String> {
     if questions < 2 {
         out.push(format!("{questions} question steps, fewer than 2"));
     }
+    match lesson
+        .number_of(lesson.showcase)
+        .and_then(|n| lesson.step(n))
+    {
+        None => out.push(format!(
+            "the showcase step `{}` is not a step",
+            lesson.showcase
+        )),
+        Some(step) if step.question.is_none() => out.push(format!(
+            "the showcase step `{}` asks no question",
+            lesson.showcase
+        )),
+        Some(_) => {}
+    }
     out
 }
 

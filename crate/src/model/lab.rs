@@ -166,6 +166,41 @@ pub struct LabSpec {
     pub presets: &'static [Preset],
     /// Default run length for `reproduce` and the CLI (s).
     pub default_duration_s: f64,
+    /// Its words in the catalogue's languages, from its folder.
+    pub words: LabWords,
+}
+
+/// A lab's own catalogue files, kept in its folder: `ru.ftl`, the Russian of every word the
+/// lab says (its English is the code's own text), and `en.ftl`, the English words for what
+/// its code writes as a code (a log column's unit choice `deg_s`). The page fetches the
+/// Russian beside its wasm (`cargo xtask dist` joins every lab's `ru.ftl` into it), so its
+/// wasm leaves `ru` empty; natively it is the file itself.
+#[derive(Clone, Copy, Debug)]
+pub struct LabWords {
+    /// `en.ftl` ("" for a lab whose code writes only words).
+    pub en: &'static str,
+    /// `ru.ftl` ("" in the page's wasm).
+    pub ru: &'static str,
+}
+
+/// A lab's chapter: `README.md` beside its code — what the paper did, what the lab shows,
+/// its generated reproduction table and what differs and why.
+#[cfg(feature = "study")]
+#[derive(Clone, Copy, Debug)]
+pub struct Chapter {
+    /// The lab's source file that declares it, from the workspace root (`file!()`): the
+    /// chapter sits beside it.
+    pub declared_in: &'static str,
+    /// The chapter's text when the crate was built (`include_str!("README.md")`).
+    pub text: &'static str,
+}
+
+#[cfg(feature = "study")]
+impl Chapter {
+    /// Its path from the workspace root (`crate/src/labs/p4_quadrotor/README.md`).
+    pub fn path(&self) -> std::path::PathBuf {
+        std::path::Path::new(self.declared_in).with_file_name("README.md")
+    }
 }
 
 /// A lab's simulation: its data, its step and a fresh run, with what the page shows of it
@@ -214,6 +249,11 @@ pub trait Study: Sync {
     /// feature: the page never does, so its wasm leaves the reproductions out).
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<Reproduction, ReproError>;
+    /// The lab's chapter, `README.md` in its folder, with the reproduction's table between
+    /// its markers (the `study` feature: `attlab reproduce all --readme` rewrites it and the
+    /// tests compare it).
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> Chapter;
     /// Parameter sweeps the lab offers (run in the background of the page, or by tests).
     fn sweeps(&self) -> &'static [SweepSpec] {
         &[]

@@ -18,6 +18,9 @@ pub struct Lesson {
     pub title: &'static str,
     /// The steps, in order (5–8).
     pub steps: &'static [LessonStep],
+    /// The step, by id, that the lesson's screenshot shows (docs/lessons.md, taken by the
+    /// page test on a projector): one that asks a question.
+    pub showcase: &'static str,
 }
 
 /// One step of a lesson.
@@ -291,6 +294,14 @@ impl Quote {
 }
 
 impl Lesson {
+    /// The 1-based number of the step with this id, if the lesson has it.
+    pub fn number_of(&self, step_id: &str) -> Option<usize> {
+        self.steps
+            .iter()
+            .position(|s| s.id == step_id)
+            .map(|i| i + 1)
+    }
+
     /// The step with this 1-based number, if the lesson has it.
     pub fn step(&self, number: usize) -> Option<&'static LessonStep> {
         number.checked_sub(1).and_then(|i| self.steps.get(i))

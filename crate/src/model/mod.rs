@@ -30,8 +30,11 @@ pub use estimate::{
     StateInfo, StateKind, Tuner,
 };
 pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
+#[cfg(feature = "study")]
+pub use lab::Chapter;
 pub use lab::{
-    AccuracyTable, Lab, LabRun, LabSpec, Preset, SensorModel, Study, TruthModel, TruthState,
+    AccuracyTable, Lab, LabRun, LabSpec, LabWords, Preset, SensorModel, Study, TruthModel,
+    TruthState,
 };
 pub use lesson::{CycleTerm, Holds, Lesson, LessonStep, Question, Quote, QuoteSource, Reading};
 pub use log::{

@@ -1,19 +1,9 @@
 //! A step of every lab's lesson opened from the teacher's link on a projector's 1280×720 in
 //! presenter mode, its question answered in the link: the step opens, runs to its pause and
-//! stops there, with nothing in the console; a screenshot of each for the README
+//! stops there, with nothing in the console; a screenshot of each for docs/lessons.md
 //! (`target/page-test/screens/lesson-<lab>.png`).
 
 use super::*;
-
-/// The step of each lab's lesson the README shows: one that asks a question.
-pub(crate) const SHOTS: [(&str, usize); 6] = [
-    ("free-rotation", 5),
-    ("p1", 2),
-    ("p2", 4),
-    ("p3", 3),
-    ("p4", 2),
-    ("p5", 3),
-];
 
 /// How long a step may take to reach its pause (its own speed sets it: 10–15 s here).
 const PAUSE_TIMEOUT: Duration = Duration::from_secs(90);
@@ -51,13 +41,14 @@ pub(crate) fn lesson_problems(session: &Session<'_>, base: &str) -> Vec<String> 
     if let Err(e) = session.set_viewport(Some((1280, 720)), false) {
         return vec![format!("cannot emulate a projector: {e}")];
     }
-    for (id, n) in SHOTS {
-        let Some(lab) = attlab::labs::find(id) else {
-            problems.push(format!("no lab {id}"));
+    for lab in attlab::labs::all() {
+        let id = lab.id();
+        let Some(n) = lab.lesson().and_then(|l| l.number_of(l.showcase)) else {
+            problems.push(format!("{id}: no lesson, or its showcase is not a step"));
             continue;
         };
         let tag = format!("lesson {id} step {n}");
-        if let Err(e) = session.open(&link(base, lab, n)) {
+        if let Err(e) = session.open(&link(base, *lab, n)) {
             problems.push(format!("{tag}: navigate failed: {e}"));
             continue;
         }

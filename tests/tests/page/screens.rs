@@ -3,7 +3,7 @@
 //! phone (touch, stacked) and on the same phone held sideways, 844×390 (one view beside the
 //! plot);
 //! its plot a fair share of the window's height on each, a screenshot of each in
-//! `target/page-test/screens/` (the README shows them).
+//! `target/page-test/screens/` (docs/page.md shows them).
 
 use super::*;
 

@@ -2,7 +2,7 @@
 //! with its workers and with `Worker` taken away (the per-frame slices the page falls back
 //! to). The points the slices finish must equal the workers' to the last bit, and the
 //! throughput of both is printed (finished runs per second of wall time) — the speed-up the
-//! README reports.
+//! docs/measured.md reports.
 
 use super::*;
 

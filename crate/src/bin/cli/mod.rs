@@ -43,9 +43,10 @@ enum Command {
         /// Print the tables as Markdown instead of plain text.
         #[arg(long)]
         markdown: bool,
-        /// Rewrite the tables between the `<!-- reproduce:ID -->` markers of this README.
+        /// Rewrite each lab's table between the `<!-- reproduce:ID -->` markers of its
+        /// chapter (`README.md` in the lab's folder, in this checkout).
         #[arg(long)]
-        readme: Option<PathBuf>,
+        readme: bool,
     },
     /// Run random parameter sets of every lab and check what must always hold (no panic,
     /// finite estimates or a diverged status, symmetric PSD covariances, fixed memory).
@@ -155,7 +156,7 @@ pub fn main() -> ExitCode {
             json,
             markdown,
             readme,
-        } => reproduce(&lab, json.as_deref(), markdown, readme.as_deref()),
+        } => reproduce(&lab, json.as_deref(), markdown, readme),
         Command::Fuzz { sets, steps, seed } => Ok(run_fuzz(sets, steps, seed)),
         Command::Run {
             lab,
@@ -273,7 +274,7 @@ fn reproduce(
     which: &str,
     json: Option<&Path>,
     markdown: bool,
-    readme_path: Option<&Path>,
+    write_chapters: bool,
 ) -> Result<bool, String> {
     let selected: Vec<&'static dyn Lab> = if which == "all" {
         labs::all().to_vec()
@@ -305,21 +306,44 @@ fn reproduce(
         let text = serde_json::to_string_pretty(&reports).map_err(|e| e.to_string())?;
         std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
-    if let Some(path) = readme_path {
-        let mut text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-        for rep in &reports {
-            text =
-                readme::with_table(&text, rep).map_err(|e| format!("{}: {e}", path.display()))?;
+    if write_chapters {
+        for (lab, rep) in labs_and_reports(&reports)? {
+            write_chapter(lab, rep)?;
         }
-        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        println!("updated {} tables in {}", reports.len(), path.display());
     }
     let failures: Vec<String> = reports.iter().flat_map(Reproduction::failures).collect();
     for f in &failures {
         println!("FAILS: {f}");
     }
     Ok(failures.is_empty())
+}
+
+/// Each report beside its lab.
+fn labs_and_reports(
+    reports: &[Reproduction],
+) -> Result<Vec<(&'static dyn Lab, &Reproduction)>, String> {
+    reports
+        .iter()
+        .map(|rep| Ok((find_lab(&rep.lab)?, rep)))
+        .collect()
+}
+
+/// Rewrites `rep`'s table in `lab`'s chapter, found from the workspace this binary was
+/// built in.
+fn write_chapter(lab: &dyn Lab, rep: &Reproduction) -> Result<(), String> {
+    let Some(study) = lab.study() else {
+        return Err(format!("{}: the lab has no study, so no chapter", lab.id()));
+    };
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap_or(Path::new("."));
+    let path = root.join(study.chapter().path());
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let text = readme::with_table(&text, rep).map_err(|e| format!("{}: {e}", path.display()))?;
+    std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    println!("updated the table in {}", path.display());
+    Ok(())
 }
 
 /// The heap's live bytes, from the binary's counting allocator.

@@ -1,6 +1,6 @@
 //! The lesson of the foundation lab: Euler's equations of a free body, then what integrating a
 //! gyro can and cannot do (bias → drift, noise → random walk). Steps are data (see
-//! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-free-rotation.ftl.
+//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::truth::{ENERGY_J, MOMENTUM_N_M_S};
 use crate::estimators::ATTITUDE_AXES;
@@ -10,6 +10,7 @@ use crate::model::{
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Free rotation: Euler's equations, and what integrating a gyro can and cannot do",
+    showcase: "constant-bias",
     steps: &[
         LessonStep {
             set: &[("spin_axis", 0.0)],

@@ -14,7 +14,7 @@ mod truth;
 use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
 use crate::model::{
-    Estimator, Lab, LabRun, LabSpec, Page, ParamValues, SensorModel, Study, TruthModel,
+    Estimator, Lab, LabRun, LabSpec, LabWords, Page, ParamValues, SensorModel, Study, TruthModel,
 };
 use crate::sensors::{Gyro3, Gyro3Config};
 use rand_chacha::ChaCha8Rng;
@@ -42,6 +42,13 @@ const SPEC: LabSpec = LabSpec {
     params: params::PARAMS,
     presets: &[],
     default_duration_s: 60.0,
+    words: LabWords {
+        en: "",
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -109,5 +116,13 @@ impl Study for FreeRotation {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! The lesson of paper 1: a body twisting on a string, a one-axis gyro, and the two adaptive
 //! Kalman filters (Q = 0, then covariance matching over a window N). Steps are data (see
-//! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-p1.ftl.
+//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::PERIOD_S;
 use crate::estimators::one_axis_kf::{ANGLE_MINUS_INT_DEG, STATE_PHIDOT};
@@ -27,6 +27,7 @@ const RATE_VARIANCE: &[SeriesKey] = &[
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 1: a suspended mock-up, a one-axis gyro and two adaptive Kalman filters",
+    showcase: "q-zero",
     steps: &[
         LessonStep {
             tab: Some(PlotTab::Figure("angle")),

@@ -15,7 +15,7 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, Measurements, Page, ParamNote,
+    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, LabWords, Measurements, Page, ParamNote,
     ParamValues, SINGLE_AXIS_VIEWS, SensorModel, SeriesKey, Study, SweepSpec, TruthState, q,
 };
 use crate::sensors::{Averager, WhiteNoise, quantize};
@@ -169,6 +169,13 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 600.0,
+    words: LabWords {
+        en: include_str!("en.ftl"),
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -258,6 +265,14 @@ impl Study for SuspendedMockup {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 
     fn output_file(&self, _params: &ParamValues) -> Option<crate::model::OutputFile> {

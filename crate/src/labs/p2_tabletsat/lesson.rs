@@ -1,6 +1,6 @@
 //! The lesson of paper 2: which sensors TabletSat's Kalman filter needs (Tables 2–3), what
 //! happens when one fails, and the bias and disturbance estimates. Steps are data (see
-//! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-p2.ftl.
+//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::sensors::{GYRO_BIAS, STAR_AVAILABLE};
 use crate::estimators::mekf;
@@ -19,6 +19,7 @@ const EVERY_FILTER: Option<PlotTab> = Some(PlotTab::Figure("every-filter"));
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 2: TabletSat — which sensors the Kalman filter needs, and what happens when one fails",
+    showcase: "star-tracker-blind",
     steps: &[
         LessonStep {
             tab: EVERY_FILTER,

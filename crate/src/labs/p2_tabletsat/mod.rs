@@ -25,7 +25,7 @@ use crate::estimators::mekf;
 use crate::estimators::mekf::Retune;
 use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
-    AccuracyTable, BodyShape, Estimator, Lab, LabRun, LabSpec, Outage, Page, ParamSpec,
+    AccuracyTable, BodyShape, Estimator, Lab, LabRun, LabSpec, LabWords, Outage, Page, ParamSpec,
     ParamValues, SeriesKey, Study, SweepSpec, q,
 };
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
@@ -181,6 +181,13 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 600.0,
+    words: LabWords {
+        en: "",
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -302,6 +309,14 @@ impl Study for TabletSat {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

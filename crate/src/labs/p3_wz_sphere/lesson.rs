@@ -1,6 +1,6 @@
 //! The lesson of paper 3: the vertical as w = u + jv on the Riemann sphere, the gyro's drift,
 //! the accelerometers' noise and their blend. Steps are data (see crate::model::Lesson); the
-//! Russian is in crate/locales/ru/lesson-p3.ftl.
+//! Russian is in this folder's ru.ftl.
 
 use crate::estimators::wz_kalman;
 use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
@@ -20,6 +20,7 @@ const fn tilt_rms(source: &'static str) -> Reading {
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 3: the vertical as w = u + jv on the Riemann sphere, and the gyro blended with the accelerometers",
+    showcase: "upside-down",
     steps: &[
         LessonStep {
             set: &[("gyro_bias_deg_s", 0.0)],

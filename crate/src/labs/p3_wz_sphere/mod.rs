@@ -22,8 +22,8 @@ use crate::estimators::{
 use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
-    Estimator, Figure, Lab, LabData, LabRun, LabSpec, Measurements, Page, ParamValues, SensorModel,
-    SeriesKey, Study, TruthModel, TruthState, q,
+    Estimator, Figure, Lab, LabData, LabRun, LabSpec, LabWords, Measurements, Page, ParamValues,
+    SensorModel, SeriesKey, Study, TruthModel, TruthState, q,
 };
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
@@ -148,6 +148,13 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: &[],
     default_duration_s: 100.0,
+    words: LabWords {
+        en: "",
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -228,6 +235,14 @@ impl Study for WzSphere {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 
     #[cfg(feature = "study")]

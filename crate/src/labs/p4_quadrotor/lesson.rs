@@ -1,6 +1,6 @@
 //! The lesson of paper 4: one number γ = det Q / det R tunes the roll Kalman filter of an
 //! asymmetric rig. Steps are data (see crate::model::Lesson); the Russian is in
-//! crate/locales/ru/lesson-p4.ftl.
+//! this folder's ru.ftl.
 
 use super::keys;
 use super::plant::{U0_NEEDED_RAD_S2, U0_RAD_S2};
@@ -20,6 +20,7 @@ const GAMMA_STAR: &[(&str, f64)] = &[(keys::GAMMA, 2e-3)];
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 4: one number γ = det Q / det R tunes the Kalman filter of an asymmetric rig's roll",
+    showcase: "small-gamma",
     steps: &[
         LessonStep {
             tab: Some(PlotTab::Figure("roll")),

@@ -17,8 +17,8 @@ mod u0_range;
 use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
-    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, Page, ParamSpec, ParamValues, Preset,
-    SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
+    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, LabWords, Page, ParamSpec, ParamValues,
+    Preset, SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
 };
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
@@ -223,6 +223,13 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 16.0,
+    words: LabWords {
+        en: include_str!("en.ftl"),
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -311,6 +318,14 @@ impl Study for QuadrotorRoll {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

@@ -1,6 +1,6 @@
 //! The lesson of paper 5: correcting measured rates by one Gauss–Newton step through the
 //! sensitivity matrix U = ∂Λ/∂p at every reference attitude. Steps are data (see
-//! crate::model::Lesson); the Russian is in crate/locales/ru/lesson-p5.ftl.
+//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
 
 use crate::estimators::sensitivity::WITHIN_TOL;
 use crate::estimators::sensitivity::{P_X_DEG_S, P_Y_DEG_S, P_Z_DEG_S};
@@ -13,6 +13,7 @@ const fn first_within(id: &'static str) -> Reading {
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Paper 5: correcting measured rates through the sensitivity matrix U = ∂Λ/∂p",
+    showcase: "method-9",
     steps: &[
         LessonStep {
             preset: Some("gyro-bias"),

@@ -16,7 +16,9 @@ mod truth;
 
 use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
-use crate::model::{Estimator, Lab, LabRun, LabSpec, OutputFile, Page, ParamValues, Study};
+use crate::model::{
+    Estimator, Lab, LabRun, LabSpec, LabWords, OutputFile, Page, ParamValues, Study,
+};
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
 use sensors::Sensors;
@@ -46,6 +48,13 @@ const SPEC: LabSpec = LabSpec {
     params: params::PARAMS,
     presets: params::PRESETS,
     default_duration_s: 30.0,
+    words: LabWords {
+        en: "",
+        #[cfg(not(target_arch = "wasm32"))]
+        ru: include_str!("ru.ftl"),
+        #[cfg(target_arch = "wasm32")]
+        ru: "",
+    },
 };
 
 const PAGE: Page = Page {
@@ -120,6 +129,14 @@ impl Study for SensitivityLab {
     #[cfg(feature = "study")]
     fn reproduce(&self) -> Result<crate::model::Reproduction, crate::model::ReproError> {
         Ok(reproduce::reproduce()?)
+    }
+
+    #[cfg(feature = "study")]
+    fn chapter(&self) -> crate::model::Chapter {
+        crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
     }
 
     fn output_file(&self, p: &ParamValues) -> Option<OutputFile> {

@@ -369,7 +369,7 @@ impl Reproduction {
         s
     }
 
-    /// A Markdown table (what the README shows, generated from this report).
+    /// A Markdown table (what the lab's chapter shows, generated from this report).
     pub fn to_markdown(&self) -> String {
         let mut s = String::from(
             "| quantity | paper | expected | measured | verdict |\n|---|---|---|---|---|\n",

@@ -1,14 +1,6 @@
-# Words for what a lab's code writes as a code: the unit choices of a recorded log's columns
-# (the CLI takes the codes as written: `--rate-unit deg_s`), and the columns they belong to.
-# Every id here is also in ../ru/units.ftl.
+# Lab p4: English words for what its code writes as a code (a log column's
+# unit choice the CLI takes as written, `--rate-unit deg_s`). Every id here is in ru.ftl too.
 
-lab-p1-param-rate_unit = rate column
-lab-p1-param-rate_unit-option-0 = °/s
-lab-p1-param-rate_unit-option-1 = m°/s (the paper's lab software)
-lab-p1-param-rate_unit-option-2 = rad/s
-lab-p1-param-time_unit = time column
-lab-p1-param-time_unit-option-0 = s
-lab-p1-param-time_unit-option-1 = ms
 lab-p4-param-accel_unit = accelerometer columns
 lab-p4-param-accel_unit-option-0 = counts, ±2 g range (power-on)
 lab-p4-param-accel_unit-option-1 = counts, ±4 g range
