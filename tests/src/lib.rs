@@ -52,8 +52,8 @@ pub fn golden_trace(lab: &'static dyn Lab) -> (Vec<String>, Vec<Vec<f64>>) {
     (names, rows)
 }
 
-/// The committed golden traces (JSON: lab id → {series, rows}, NaN as null).
-pub const GOLDEN_JSON: &str = include_str!("../golden/traces.json");
+// Every lab's `golden.json`, found in its folder by `build.rs`.
+include!(concat!(env!("OUT_DIR"), "/golden_files.rs"));
 
 /// One lab's golden trace as committed.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -64,9 +64,26 @@ pub struct Golden {
     pub rows: Vec<Vec<Option<f64>>>,
 }
 
+/// A lab's golden trace file, `golden.json` in its folder (JSON, NaN as null).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct GoldenFile {
+    /// The lab's id.
+    pub lab: String,
+    /// Its trace.
+    #[serde(flatten)]
+    pub trace: Golden,
+}
+
 /// The committed golden traces by lab id.
 pub fn committed_golden() -> std::collections::BTreeMap<String, Golden> {
-    serde_json::from_str(GOLDEN_JSON).expect("tests/golden/traces.json parses")
+    GOLDEN_FILES
+        .iter()
+        .map(|(path, text)| {
+            let file: GoldenFile =
+                serde_json::from_str(text).unwrap_or_else(|e| panic!("{path} parses: {e}"));
+            (file.lab, file.trace)
+        })
+        .collect()
 }
 
 /// A trace in the committed form.

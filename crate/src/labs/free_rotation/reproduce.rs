@@ -51,7 +51,7 @@ pub(super) fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(truth_rows(&clean)?);
     rows.extend(bias_rows()?);
     Ok(Reproduction {
-        lab: "free-rotation".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: vec![
             "no paper anchors: this foundation lab checks the perfect model, conservation laws, the chart switch and the bias drift against an independent first-order computation".into(),

@@ -134,7 +134,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(super::readings::rows()?);
     rows.extend(super::rocking::rows()?);
     Ok(Reproduction {
-        lab: "p1".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: [
             "the paper's setting: filter at 100 Hz, R = σ² (σ = 0.04 °/s), P₀ = 1e-4 (c₀ = 2e-4 so that P₀ is positive definite), 200-s runs for the windows, 600 s for Q = 0; window rows are medians over seeds 1–5",

@@ -59,7 +59,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(super::table4::rows()?);
     rows.extend(super::tune::rows()?);
     Ok(Reproduction {
-        lab: "p2".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: [
             "unstated in the paper and chosen here: circular sun-synchronous orbit 600 km, node at 10:30, 19 June 2026; WMM 2025 as the field; wheel gains K_λ = 5e-4, K_ω = 0.02; sensors at 1 Hz, EKF prediction at 10 Hz; P₀ from a 2° attitude error; star tracker 45° off zenith, away from the sun (it sees stars around the whole default orbit, as in the paper's runs); disturbance filter R_d = 100 × the row's innovation variance, α = 0.999 per second",

@@ -61,7 +61,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     rows.extend(blend_rows(&sim)?);
     rows.extend(tumble_rows()?);
     Ok(Reproduction {
-        lab: "p3".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: vec![
             "the paper prints no table: drift, noise and blend values are this simulator's (RK4, 100 Hz, bias +0.1 °/s on all axes, σ = 0.01 g)".into(),

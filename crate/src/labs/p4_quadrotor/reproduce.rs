@@ -177,7 +177,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
     let base = [step.as_str(), period.as_str(), "kf_q_from=0"];
     rows.extend(super::mse_units::rows(&table1, &base, SEEDS, RUN_S)?);
     Ok(Reproduction {
-        lab: "p4".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: [
             "the paper gives no plant numbers: the test-bench lever (J = 2·10⁻³ kg·m², arm 0.2 m, weight torque 0.05 N·m), the 100-Hz MPU-6050 with its datasheet noise and a 0.5 °/s residual offset, the P–PI gains (ω_c = 5 rad/s), R from the datasheet and Q = q·diag(dt³/3, dt) with det Q = γ det R are this project's",

@@ -102,7 +102,7 @@ pub fn reproduce() -> Result<Reproduction, AnalysisError> {
         Expectation::below(1e-6),
     ));
     Ok(Reproduction {
-        lab: "p5".into(),
+        lab: super::SPEC.id.into(),
         rows,
         notes: [
             "the paper's case: ω = 0, Q = I, p₀ = 0, ε = 0 for (9) and the variant, ε = 0.1 for (10) and (11), RK4 at 0.01 s, Krylov angles z-y′-x″; Δt, ε and the integration step are not given in the paper",
