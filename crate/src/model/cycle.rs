@@ -4,7 +4,7 @@
 //! Filters of up to [`CYCLE_STATES`] states and [`CYCLE_ROWS`] measurement rows keep one
 //! (paper 1's and paper 4's); it is plain data, no heap.
 
-use super::estimate::StateInfo;
+use super::quantity::StateInfo;
 
 /// The most states a cycle holds.
 pub const CYCLE_STATES: usize = 3;

@@ -3,7 +3,8 @@
 use super::cycle::KalmanCycle;
 use super::data::LabData;
 use super::params::ParamValues;
-use super::series::{Extras, Quantity};
+use super::quantity::{Quantity, StateInfo, StateKind};
+use super::series::Extras;
 use super::trouble::Trouble;
 use crate::math::WzAttitude;
 use nalgebra::{UnitQuaternion, Vector3};
@@ -177,50 +178,6 @@ impl Outputs {
             angle: e.angle_rad.is_some(),
             rate: e.rate_body_rad_s.is_some(),
         }
-    }
-}
-
-/// What one state of an estimator's covariance stands for. The app draws ±3σ bands and
-/// ellipses from this, never from series names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum StateKind {
-    /// Small attitude error about body axis 0, 1 or 2 (rad).
-    AttitudeAxis(u8),
-    /// The angle of a single-axis estimator (rad).
-    Angle,
-    /// Body rate about axis 0, 1 or 2 (rad/s).
-    RateAxis(u8),
-    /// The rate of a single-axis estimator (rad/s).
-    Rate,
-    /// Paper 3's u = Re w (dimensionless, in the estimator's current chart).
-    WzU,
-    /// Paper 3's v = Im w.
-    WzV,
-    /// Gyro bias about axis 0, 1 or 2 (rad/s).
-    GyroBias(u8),
-    /// Magnetometer bias along axis 0, 1 or 2 (nT).
-    MagBias(u8),
-    /// Magnetometer bias as a turn of the field about axis 0, 1 or 2 (rad).
-    MagTurn(u8),
-    /// Anything else (its unit says what).
-    Other,
-}
-
-/// One state of an estimator's covariance: short key (used in series names), unit, meaning.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StateInfo {
-    /// Short ASCII key, e.g. `phi`, `att_x`.
-    pub key: &'static str,
-    /// SI unit of the state (the variance has its square), e.g. `rad`.
-    pub unit: &'static str,
-    /// What it is.
-    pub kind: StateKind,
-}
-
-impl StateInfo {
-    /// A state description.
-    pub const fn new(key: &'static str, unit: &'static str, kind: StateKind) -> Self {
-        Self { key, unit, kind }
     }
 }
 

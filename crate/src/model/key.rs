@@ -3,8 +3,7 @@
 //! typed; the catalogue builds every name through [`SeriesKey::name`], and figures, sweeps,
 //! outages and reproductions name their series by key.
 
-use super::estimate::StateInfo;
-use super::series::Quantity;
+use super::quantity::{Quantity, StateInfo};
 use std::borrow::Cow;
 use std::fmt;
 

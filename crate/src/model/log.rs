@@ -2,22 +2,8 @@
 //! samples with the lines that could not be used, and the formats a lab reads (each with
 //! the unit choices a user makes, as parameter specs, and its parser).
 
-use super::page::Outage;
-use super::params::{ParamSpec, ParamValues};
-use super::{Quantity, SeriesKey};
+use super::params::{ParamError, ParamSpec, ParamValues};
 use thiserror::Error;
-
-/// 1 at a replay's step that delivered a logged sample, 0 at one that did not (a dropped
-/// sample, or the join of a gap or a restart).
-pub const LOGGED_SAMPLE: Quantity = Quantity::new("log_sample", "logged sample at this step", "");
-
-/// What a replay's plots shade: the steps without a logged sample.
-pub const REPLAY_GAPS: Outage = Outage {
-    id: "replay-gaps",
-    series: SeriesKey::sensors(&LOGGED_SAMPLE),
-    out_when: 0.0,
-    label: "no logged sample (a gap or a restart of the log's clock)",
-};
 
 /// One line that could not be used.
 #[derive(Clone, Debug, Error, PartialEq)]
@@ -325,5 +311,28 @@ impl LogFormat {
     /// The default unit choices.
     pub fn default_units(&self) -> ParamValues {
         ParamValues::defaults(self.units)
+    }
+}
+
+/// A recorded log a lab ships for its laboratory mode (the page's "Replay the example log").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ExampleLog {
+    /// File name shown.
+    pub name: &'static str,
+    /// Its text, in the lab's log format.
+    pub text: &'static str,
+    /// The unit choices it is written in, as (`key`, option name or value) of the format's
+    /// units; loading it sets them, so that the panel shows what it is read with.
+    pub units: &'static [(&'static str, &'static str)],
+}
+
+impl ExampleLog {
+    /// The format's default unit choices with this log's own set.
+    pub fn unit_values(&self, format: &LogFormat) -> Result<ParamValues, ParamError> {
+        let mut values = format.default_units();
+        for (key, value) in self.units {
+            values.set_text(format.units, key, value)?;
+        }
+        Ok(values)
     }
 }

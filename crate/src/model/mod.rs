@@ -18,6 +18,7 @@ mod page;
 mod param_error;
 mod params;
 pub mod q;
+mod quantity;
 mod report;
 mod series;
 mod study;
@@ -27,7 +28,7 @@ pub use cycle::{CYCLE_ROWS, CYCLE_STATES, CycleUpdate, KalmanCycle, StateMatrix,
 pub use data::LabData;
 pub use estimate::{
     Attitude, Covariance, Estimate, Estimator, EstimatorStatus, Measurements, Outputs, STATUS_OK,
-    StateInfo, StateKind, Tuner,
+    Tuner,
 };
 pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 #[cfg(feature = "study")]
@@ -38,21 +39,20 @@ pub use lab::{
 };
 pub use lesson::{CycleTerm, Holds, Lesson, LessonStep, Question, Quote, QuoteSource, Reading};
 pub use log::{
-    LOGGED_SAMPLE, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
-    REPLAY_GAPS, RateLog,
+    ExampleLog, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
+    RateLog,
 };
 pub use note::ParamNote;
 pub use page::{
-    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, DiagramSetting, Figure, OrbitPicture, Outage,
-    Page, SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
+    BodyShape, DEFAULT_VIEWS, Diagram, DiagramPoint, DiagramSetting, Figure, LOGGED_SAMPLE,
+    OrbitPicture, Outage, Page, REPLAY_GAPS, SINGLE_AXIS_VIEWS, SceneExtras, SceneVector, ViewKind,
 };
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
+pub use quantity::{Quantity, StateInfo, StateKind};
 pub use report::{
     Calibration, Expectation, Outcome, ReproError, Reproduction, Row, RowKind, SENSITIVITY_FACTORS,
     fmt_sig,
 };
-pub use series::{Extras, PlotTab, Quantity, SeriesGroup, SeriesSpec, display_unit};
-pub use study::{
-    ExampleLog, OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem,
-};
+pub use series::{Extras, PlotTab, SeriesGroup, SeriesSpec, display_unit};
+pub use study::{OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem};
 pub use trouble::Trouble;

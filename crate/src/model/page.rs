@@ -4,9 +4,9 @@
 //! to simulate.
 
 use super::key::SeriesKey;
-use super::log::LogFormat;
+use super::log::{ExampleLog, LogFormat};
 use super::params::ParamValues;
-use super::study::ExampleLog;
+use super::quantity::Quantity;
 use nalgebra::Vector3;
 
 /// A reference direction drawn from the body in the 3D view.
@@ -241,3 +241,15 @@ impl Page {
         self.diagrams.map_or_else(Vec::new, |d| d(params))
     }
 }
+
+/// 1 at a replay's step that delivered a logged sample, 0 at one that did not (a dropped
+/// sample, or the join of a gap or a restart).
+pub const LOGGED_SAMPLE: Quantity = Quantity::new("log_sample", "logged sample at this step", "");
+
+/// What a replay's plots shade: the steps without a logged sample.
+pub const REPLAY_GAPS: Outage = Outage {
+    id: "replay-gaps",
+    series: SeriesKey::sensors(&LOGGED_SAMPLE),
+    out_when: 0.0,
+    label: "no logged sample (a gap or a restart of the log's clock)",
+};

@@ -2,7 +2,7 @@
 //! attitude, rate and errors, with the student's label in the papers' notation and the unit.
 //! A figure names a series by one of these and its source ([`super::SeriesKey`]).
 
-use super::series::Quantity;
+use super::quantity::Quantity;
 
 // A three-axis source's attitude (paper 3's notation for the vertical and w).
 /// yaw ψ (deg).

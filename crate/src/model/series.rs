@@ -1,6 +1,7 @@
 //! Names, units and meaning of recorded series.
 
 use super::key::{Measure, SeriesKey};
+use super::quantity::Quantity;
 
 /// Which plot a series belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
@@ -76,25 +77,6 @@ impl SeriesGroup {
             Self::Sphere => "(u, v) and vertical",
             Self::Lab => "Lab",
         }
-    }
-}
-
-/// A quantity a source records: its machine key (the second half of the series name, with
-/// its unit in it), the student's label and the unit. Declared once, with the values it names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Quantity {
-    /// Key in series names and CSV headers, e.g. `gbias_x_deg_s`.
-    pub key: &'static str,
-    /// What a student reads in a legend, in the paper's notation, e.g. "gyro bias Δω_x".
-    pub label: &'static str,
-    /// Unit ("" when dimensionless).
-    pub unit: &'static str,
-}
-
-impl Quantity {
-    /// A quantity.
-    pub const fn new(key: &'static str, label: &'static str, unit: &'static str) -> Self {
-        Self { key, label, unit }
     }
 }
 

@@ -2,7 +2,7 @@
 //! the paper's output file, and the work whose cost it wants measured.
 
 use super::key::SeriesKey;
-use super::params::{ParamError, ParamValues};
+use super::params::ParamValues;
 
 /// A sweep a lab offers, e.g. paper 1's adaptation window N over a log grid.
 #[derive(Clone, Copy, Debug)]
@@ -145,29 +145,6 @@ pub struct OutputFile {
     pub headers: Vec<String>,
     /// A 0/1 series: the file ends at the first row where it is 1.
     pub stop: Option<String>,
-}
-
-/// A recorded log a lab ships for its laboratory mode (the page's "Replay the example log").
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ExampleLog {
-    /// File name shown.
-    pub name: &'static str,
-    /// Its text, in the lab's log format.
-    pub text: &'static str,
-    /// The unit choices it is written in, as (`key`, option name or value) of the format's
-    /// units; loading it sets them, so that the panel shows what it is read with.
-    pub units: &'static [(&'static str, &'static str)],
-}
-
-impl ExampleLog {
-    /// The format's default unit choices with this log's own set.
-    pub fn unit_values(&self, format: &super::LogFormat) -> Result<ParamValues, ParamError> {
-        let mut values = format.default_units();
-        for (key, value) in self.units {
-            values.set_text(format.units, key, value)?;
-        }
-        Ok(values)
-    }
 }
 
 /// A piece of work whose cost a lab wants measured (`attlab bench`, `attlab reproduce`).

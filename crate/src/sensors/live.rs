@@ -16,8 +16,9 @@
 //!   with the same period and delivers the same samples: the same estimates.
 
 use super::imu_log::{ImuScales, decoder};
-use super::log_lines::{LineReader, PERIOD_DIRECTIVE, Row, merge_by_line, push_sample};
+use super::log_lines::{LineReader, PERIOD_DIRECTIVE, merge_by_line, push_sample};
 use super::rate_log::TimeUnit;
+use super::row::Row;
 use super::timeline::{Orderer, Timeline, period_of};
 use crate::model::{LogCounts, LogLineError, RateLog};
 use nalgebra::{UnitQuaternion, Vector3};

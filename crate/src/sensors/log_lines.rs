@@ -13,23 +13,13 @@
 //!   when it is exactly twice as wide); the widths seen are counted, so the caller can
 //!   tell a log of another format from a few bad lines.
 
+use super::row::{Row, shortened};
 use super::timeline;
 use crate::model::{LineFault, LogCounts, LogLineError, RateLog};
 use nalgebra::Vector3;
 
 /// Delimiters a log may use, in order of preference when several fit equally well.
 const DELIMITERS: [u8; 4] = [b',', b';', b'\t', b' '];
-
-/// One row of numbers of the expected width, with its 1-based line number.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Row {
-    /// Line number in the file.
-    pub line: usize,
-    /// The numbers, as many as the columns.
-    pub values: Vec<f64>,
-    /// The line as read (trimmed): a live session records it as it came.
-    pub text: String,
-}
 
 /// What [`read_rows`] found.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -201,11 +191,6 @@ impl LineReader {
         let text = shortened(text);
         out.errors.push(LogLineError { line, text, reason });
     }
-}
-
-/// A line as a message quotes it: its first 80 characters.
-pub(crate) fn shortened(text: &str) -> String {
-    text.chars().take(80).collect()
 }
 
 /// The delimiter of a single line: the first under which it is `columns` numbers, else

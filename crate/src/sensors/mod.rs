@@ -6,6 +6,7 @@ pub mod live;
 pub mod log_lines;
 mod noise;
 mod rate_log;
+mod row;
 pub mod timeline;
 
 pub use crate::model::{LogCounts, LogFormat, LogGap, LogLineError, RateLog};

@@ -13,7 +13,7 @@
 //!    but at most max(10 P, 1 s) (a reset: exactly that), so a stopped log does not stretch
 //!    the run. The replay shows the join as steps without a sample.
 
-use super::log_lines::Row;
+use super::row::{Row, shortened};
 use crate::model::{LineFault, LogGap, LogLineError};
 
 /// Rule 1: times this close (in periods) are one time.
@@ -58,7 +58,7 @@ pub(crate) struct Timeline {
 fn note(row: &Row, reason: LineFault) -> LogLineError {
     LogLineError {
         line: row.line,
-        text: super::log_lines::shortened(&row.text),
+        text: shortened(&row.text),
         reason,
     }
 }

@@ -6,7 +6,7 @@ use super::trails::{Trails, trails_of};
 use super::{arg, tabs, tr, tr_with};
 use crate::export::Regions;
 use crate::render::palette::{self, Palette};
-use crate::render::{body3d, plots, riemann_sphere, single_axis};
+use crate::render::{body3d, plots, riemann_sphere, scene, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
 use attlab::math::WzChart;
 use attlab::model::ViewKind;
@@ -177,7 +177,7 @@ fn png_button(ui: &mut Ui, app: &AppState, k: usize, rect: Rect, commands: &mut 
     if app.view().capturing || !(touch || ui.rect_contains_pointer(rect)) {
         return;
     }
-    let at = body3d::png_button_rect(rect);
+    let at = scene::png_button_rect(rect);
     let button = egui::Button::new(egui::RichText::new(tr(app, "png")).small());
     if ui
         .put(at, button)
@@ -341,7 +341,7 @@ fn draw_body(
         .map(|q| (q, ghost_name.as_str()));
     let extras = app.sim().scene();
     let top = super::body_captions(app, ghost.map(|(_, label)| label));
-    let scene = body3d::Scene {
+    let scene = scene::Scene {
         truth,
         ghost,
         suspended: app.sim().lab().page().suspended,
@@ -367,7 +367,7 @@ fn draw_body(
                 tr(app, "body-hint")
             },
         ),
-        words: body3d::SceneWords {
+        words: scene::SceneWords {
             vectors: extras
                 .vectors
                 .iter()

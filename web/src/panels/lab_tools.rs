@@ -217,7 +217,9 @@ pub fn laboratory_mode(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>)
             // One under another: each takes the room its row has (`fit`), and in a wrapped
             // row the second was laid past the panel's edge.
             for spec in format.units {
-                if let Some(v) = super::controls::param_widget(ui, app, spec, units.get(spec.key)) {
+                if let Some(v) =
+                    super::param_widget::param_widget(ui, app, spec, units.get(spec.key))
+                {
                     commands.push(Command::from(IoCommand::SetLogUnit(spec.key, v)));
                 }
             }

@@ -13,6 +13,7 @@ mod lesson;
 mod live;
 mod narration;
 mod narrow;
+mod param_widget;
 mod share;
 mod slider_keys;
 mod sliders;

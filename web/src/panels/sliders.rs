@@ -2,7 +2,7 @@
 //! locked ones disabled, the lesson step's own outlined; and the line naming the reset-only
 //! parameters that wait for Reset.
 
-use super::controls::param_widget;
+use super::param_widget::param_widget;
 use super::{arg, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n;

@@ -5,7 +5,8 @@
 use super::mesh::{
     Triangle, Vertex, body_mesh, hex_prism_mesh, place, rod, sorted_vertices, string_mesh,
 };
-use attlab::model::{BodyShape, OrbitPicture, SceneVector};
+use super::scene::Scene;
+use attlab::model::BodyShape;
 use eframe::egui_wgpu::{self, wgpu};
 use egui::{Color32, Pos2, Rect, Sense, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
@@ -254,51 +255,6 @@ impl egui_wgpu::CallbackTrait for Body3dCallback {
         pass.set_vertex_buffer(0, res.vertex_buffer.slice(..));
         pass.draw(0..res.vertex_count, 0..1);
     }
-}
-
-/// What the 3D view draws: the truth and, beside it, an estimate as a ghost; a replayed or
-/// live log, which has no truth, the estimate alone, solid.
-pub struct Scene<'a> {
-    /// True attitude, where the run has one (not a log's).
-    pub truth: Option<UnitQuaternion<f64>>,
-    /// Estimated attitude and its label, if the lab's estimator has one: a ghost beside
-    /// the truth, or solid where there is no truth.
-    pub ghost: Option<(UnitQuaternion<f64>, &'a str)>,
-    /// The body hangs on a string from above (paper 1).
-    pub suspended: bool,
-    /// The body's shape.
-    pub shape: BodyShape,
-    /// Reference directions drawn from the truth (sun, field, nadir).
-    pub vectors: &'a [SceneVector],
-    /// The axis (ghost's body axes) about which the ghost's sensors say nothing now.
-    pub ghost_axis: Option<Vector3<f64>>,
-    /// The orbit, drawn small in a corner.
-    pub orbit: Option<OrbitPicture>,
-    /// The captions in the reader's language: the lines on top (what is solid, what is the
-    /// ghost), and how to move the camera at the bottom.
-    pub captions: (Vec<String>, String),
-    /// The words drawn in the view, in the reader's language.
-    pub words: SceneWords,
-}
-
-/// The words the 3D view draws, in the reader's language.
-#[derive(Clone, Debug, Default)]
-pub struct SceneWords {
-    /// Each reference direction's label, in the order of [`Scene::vectors`].
-    pub vectors: Vec<String>,
-    /// The ghost's unobservable axis.
-    pub unobservable: String,
-    /// The orbit inset's caption ("orbit") and the word for the Earth's shadow.
-    pub orbit: (String, String),
-    /// What the view says without a GPU renderer.
-    pub no_gpu: String,
-}
-
-/// Where a view's small "PNG" button goes: the bottom-right corner of `view` (the page
-/// draws it there over every view; the orbit inset keeps clear of it).
-pub fn png_button_rect(view: Rect) -> Rect {
-    let size = egui::vec2(38.0, 18.0);
-    Rect::from_min_size(view.max - size - egui::Vec2::splat(4.0), size)
 }
 
 /// Shows the 3D view filling `rect`.

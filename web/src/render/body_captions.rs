@@ -1,7 +1,7 @@
 //! The 3D view's words: what is solid and what is the ghost on top, how to move the camera
 //! at the bottom, fitted around the orbit inset and, in a short view, a line each.
 
-use super::body3d::Scene;
+use super::scene::{Scene, png_button_rect};
 use egui::Rect;
 
 /// What is solid and what is the ghost (on top), and how to move the camera (at the
@@ -38,7 +38,7 @@ pub(super) fn captions(
         wrap,
     );
     let at = rect.left_bottom() + egui::vec2(8.0, -6.0 - hint.size().y);
-    let below = Rect::from_min_size(at, hint.size()).union(super::body3d::png_button_rect(rect));
+    let below = Rect::from_min_size(at, hint.size()).union(png_button_rect(rect));
     painter.galley(at, hint, colours.ink_dim);
     let (mut galleys, mut top) = lay(wrap);
     let mut width = wrap;

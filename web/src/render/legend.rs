@@ -9,7 +9,7 @@
 
 use super::outages;
 use super::palette;
-use super::plots::{PlotState, PlotWords};
+use super::plot_state::{PlotState, PlotWords};
 use attlab::i18n::LegendParts;
 use attlab::model::Outage;
 use attlab::record::Recorder;

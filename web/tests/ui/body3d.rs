@@ -4,7 +4,8 @@
 
 use attlab::i18n::{self, FluentValue, Lang};
 use attlab::model::{BodyShape, OrbitPicture};
-use attlab_web::render::body3d::{self, OrbitCamera, Scene, SceneWords};
+use attlab_web::render::body3d::{self, OrbitCamera};
+use attlab_web::render::scene::{self, Scene, SceneWords};
 use egui::epaint::Shape;
 use egui::{Rect, Vec2};
 use egui_kittest::Harness;
@@ -154,7 +155,7 @@ fn check(h: &Harness<'_>, case: &str) {
         inset.width() >= 48.0,
         "{case}: inset {inset:?} too small to read"
     );
-    let png = body3d::png_button_rect(view);
+    let png = scene::png_button_rect(view);
     assert!(
         !inset.intersects(png),
         "{case}: the inset {inset:?} is under the PNG button {png:?}"

@@ -75,7 +75,7 @@ pub(super) fn bench(steps: usize, only: Option<&'static dyn Lab>) {
 }
 
 /// Each lab's sweeps to their end in one thread and on every core (the same numbers: see
-/// `tests/tests/sweeps.rs`), and the speed-up.
+/// `tests/tests/all/sweeps.rs`), and the speed-up.
 fn bench_sweeps(selected: &[&'static dyn Lab]) {
     let cores = rayon::current_num_threads();
     println!("sweeps (native, release build; wall time, measured, not a test):");

@@ -9,6 +9,7 @@ mod params;
 mod readings;
 mod reproduce;
 mod rocking;
+mod stats;
 mod truth;
 
 use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
@@ -24,7 +25,8 @@ use rand_chacha::ChaCha8Rng;
 
 pub use params::true_period_s;
 use params::{PARAMS, PRESETS};
-pub use reproduce::{FilterStats, p1_noise_floor_deg, run_stats};
+pub use reproduce::p1_noise_floor_deg;
+pub use stats::{FilterStats, run_stats};
 use truth::PERIOD_S;
 use truth::Suspended;
 

@@ -97,7 +97,7 @@ pub(super) const PARAMS: &[ParamSpec] = &[
     ParamSpec::real("string_length_m", "String length L", "m", 0.1, 10.0, 1.0).log().help("Stiffness f = G·I_p/L; with I = 0.48 kg·m², L = 1 m gives T ≈ 400 s (not stated in the paper)."),
     ParamSpec::real("inertia_kg_m2", "Body inertia I", "kg·m²", 0.01, 10.0, 0.48).log().help("Period T = 2π√(I/f): a shorter T means larger accelerations, which the rotation model φ̈ = 0 cannot follow between resets — watch the N = 1000 error grow."),
     ParamSpec::real("body_mass_kg", "Body mass M", "kg", 0.1, 20.0, 1.0).log().outside_run().requires("body_model").help("What the string must hold (paper: M = 1 kg); in the 5-DOF model also the weight that rights the rocking body. It does not enter the twist."),
-    ParamSpec::choice("body_model", "Body model", super::truth::BODY_MODELS, 0).on_reset().help("1 DOF: the twist alone, as the filters assume, with the swing a prescribed sinusoid. 5 DOF (§3.2): the suspension point slides freely, the body rocks about its centre of mass by itself, and the swing reaches the gyro through the dynamics."),
+    ParamSpec::choice("body_model", "Body model", BODY_MODELS, 0).on_reset().help("1 DOF: the twist alone, as the filters assume, with the swing a prescribed sinusoid. 5 DOF (§3.2): the suspension point slides freely, the body rocks about its centre of mass by itself, and the swing reaches the gyro through the dynamics."),
     ParamSpec::real("com_offset_mm", "Centre of mass below the string d", "mm", 0.1, 200.0, 10.0).log().requires("body_model").help("The paper's d (not given): the weight M g acts d below the suspension point, so the body rocks at √(M g d / A)."),
     ParamSpec::real("tilt_inertia_kg_m2", "Tilt inertia A = B", "kg·m²", 0.01, 10.0, 0.24).log().requires("body_model").help("The body's moments of inertia about the horizontal axes through its centre of mass (ours: half of I, a disc)."),
     ParamSpec::choice(PERIOD_FROM, "Torsion period T", PERIOD_SOURCES, 0).help("The paper's program takes T typed in; here it follows from the string and the body unless you type it."),
@@ -247,6 +247,12 @@ pub(super) fn notes(p: &ParamValues) -> Vec<ParamNote> {
     }
     notes
 }
+
+/// The `body_model` choice's options.
+pub(super) const BODY_MODELS: &[&str] = &[
+    "1 DOF: the twist alone, the swing prescribed (§3.3, the filters' model)",
+    "5 DOF: the body rocks on a free suspension point (§3.2, eq. 3.2)",
+];
 
 #[cfg(test)]
 mod tests {

@@ -5,7 +5,7 @@
 // Only the CLI and the tests reproduce a paper (the `study` feature).
 #![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
-use super::reproduce::{median_stats, panel, run_stats};
+use super::stats::{median_stats, panel, run_stats};
 use crate::analysis::AnalysisError;
 use crate::model::{Expectation, Row};
 

@@ -6,7 +6,7 @@
 #![cfg_attr(not(feature = "study"), allow(dead_code, unused_imports))]
 
 use super::SuspendedMockup;
-use super::reproduce::run_stats;
+use super::stats::run_stats;
 use super::truth::ENERGY_MJ;
 use crate::analysis::AnalysisError;
 use crate::analysis::scenario::run_trace;

@@ -24,12 +24,6 @@ pub(super) const ENERGY_MJ: Quantity = Quantity::new(
     "mJ",
 );
 
-/// The `body_model` choice's options.
-pub(super) const BODY_MODELS: &[&str] = &[
-    "1 DOF: the twist alone, the swing prescribed (§3.3, the filters' model)",
-    "5 DOF: the body rocks on a free suspension point (§3.2, eq. 3.2)",
-];
-
 /// g (m/s²) for the prescribed swing's frequency √(g/L).
 const G_M_S2: f64 = 9.81;
 

@@ -261,7 +261,7 @@ proptest! {
 
 #[test]
 fn a_log_of_another_labs_format_is_refused_naming_it() {
-    let imu = include_str!("../../assets/p4-arduino-mpu6050.csv");
+    let imu = include_str!("../../../assets/p4-arduino-mpu6050.csv");
     let read = |lab: &str, bytes: &[u8]| {
         let lab = attlab_tests::lab(lab);
         let format = lab.page().log_format.expect("a lab that reads logs");

@@ -89,7 +89,7 @@ fn small_gamma_is_offset_and_large_gamma_is_noisy() {
     assert!(large.noise_deg > star.noise_deg, "{large:?} vs {star:?}");
 }
 
-const EXAMPLE_LOG: &str = include_str!("../../assets/p4-arduino-mpu6050.csv");
+const EXAMPLE_LOG: &str = include_str!("../../../assets/p4-arduino-mpu6050.csv");
 
 #[test]
 fn the_example_log_replays_with_no_flags_and_reports_only_the_banner() {

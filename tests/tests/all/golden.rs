@@ -1,7 +1,7 @@
 //! Every lab's golden trace natively: every series at checkpoints of a short run must equal
 //! the committed `golden.json` in the lab's folder, which the browser suite compares against
 //! too (so native and wasm agree on every lab). After an intended change, or for a new lab,
-//! write them with `ATTLAB_BLESS=1 cargo test -p attlab-tests --test golden` and review the
+//! write them with `ATTLAB_BLESS=1 cargo test -p attlab-tests --test all golden` and review the
 //! diff.
 #![cfg(not(target_arch = "wasm32"))]
 
