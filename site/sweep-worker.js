@@ -11,7 +11,7 @@ const build = self.location.search;
 const glue = import('./pkg/attlab_web.js' + build);
 // A worker that cannot load the page's code says so once: the page stops starting workers
 // and runs its sweeps in slices (web/src/sweep_workers.rs).
-glue.catch((e) => self.postMessage({ fatal: 'a worker could not load the page\'s code: ' + e }));
+glue.catch((e) => self.postMessage({ fatal: String(e) }));
 
 let ready = null;
 // Failures of `ready` are reported with the point that waits on it (below).
@@ -42,7 +42,8 @@ self.onmessage = async (event) => {
     const { sweep_point } = await glue;
     out = sweep_point(job);
   } catch (e) {
-    out = JSON.stringify({ err: 'the worker failed: ' + e });
+    // The page words it (WorkerError::Threw in web/src/sweep_workers.rs).
+    out = JSON.stringify({ err: { Threw: { detail: String(e) } } });
   }
   self.postMessage({ id, out, shared, fetched: fetched() });
 };

@@ -322,7 +322,8 @@ impl AttLabApp {
         let message = result.map_err(|e| e.message(lang)).and_then(|png| {
             let (w, h, n) = (png.width, png.height, png.bytes.len());
             let dir = self.state.io().save_dir.as_deref();
-            let saved = platform::save_file(&name, "image/png", png.bytes, dir, lang)?;
+            let saved = platform::save_file(&name, "image/png", png.bytes, dir, lang)
+                .map_err(|e| e.words(lang))?;
             self.last_png = Some((name.clone(), w, h, n));
             let args = [("saved", saved.into()), ("w", w.into()), ("h", h.into())];
             Ok(attlab::i18n::t_with(lang, "msg-png-saved", &args))

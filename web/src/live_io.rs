@@ -170,27 +170,60 @@ pub(crate) fn call_glue(
     glue: &str,
     method: &str,
     args: &[wasm_bindgen::JsValue],
-) -> Result<wasm_bindgen::JsValue, String> {
+) -> Result<wasm_bindgen::JsValue, GlueError> {
     use wasm_bindgen::{JsCast as _, JsValue};
-    let window = web_sys::window().ok_or("no window")?;
+    let threw = |e: JsValue| GlueError::Threw {
+        detail: format!("{e:?}"),
+    };
+    let window = web_sys::window().ok_or(GlueError::NoWindow)?;
     let get = || js_sys::Reflect::get(&window, &JsValue::from_str(global));
     if get().map_or(true, |v| v.is_undefined()) {
         js_sys::Function::new_no_args(glue)
             .call0(&JsValue::NULL)
-            .map_err(|e| format!("{e:?}"))?;
+            .map_err(threw)?;
     }
-    let object = get().map_err(|e| format!("{e:?}"))?;
+    let object = get().map_err(threw)?;
     let f: js_sys::Function = js_sys::Reflect::get(&object, &method.into())
-        .map_err(|e| format!("{e:?}"))?
+        .map_err(threw)?
         .dyn_into()
-        .map_err(|_| format!("{global}.{method} is not a function"))?;
+        .map_err(|_| GlueError::NotAFunction {
+            name: [global, method].join("."),
+        })?;
     let args: js_sys::Array = args.iter().collect();
-    f.apply(&object, &args).map_err(|e| format!("{e:?}"))
+    f.apply(&object, &args).map_err(threw)
+}
+
+/// Why a call into one of the page's small scripts failed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum GlueError {
+    /// No browser window (a worker, a test).
+    NoWindow,
+    /// The script threw (the browser's own words).
+    Threw {
+        /// What it threw.
+        detail: String,
+    },
+    /// The script has no such function.
+    NotAFunction {
+        /// `global.method`.
+        name: String,
+    },
+}
+
+impl GlueError {
+    /// The detail a [`LiveReason`] carries: the browser's words, or what was missing.
+    pub fn detail(&self) -> String {
+        match self {
+            GlueError::NoWindow => "window".into(),
+            GlueError::Threw { detail } => detail.clone(),
+            GlueError::NotAFunction { name } => name.clone(),
+        }
+    }
 }
 
 /// Calls the live script's `method` with `args`.
 #[cfg(target_arch = "wasm32")]
-fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
+fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, GlueError> {
     call_glue("attlabLive", GLUE, method, args)
 }
 
@@ -222,10 +255,10 @@ pub fn start_serial(baud: u32) -> Result<(), LiveReason> {
 
 /// The page script itself failed (it could not be installed or called).
 #[cfg(target_arch = "wasm32")]
-fn script_failed(detail: String) -> LiveReason {
+fn script_failed(why: GlueError) -> LiveReason {
     LiveReason {
         code: "script".into(),
-        detail,
+        detail: why.detail(),
     }
 }
 

@@ -273,13 +273,14 @@ pub fn save_file(
     contents: Vec<u8>,
     dir: Option<&std::path::Path>,
     lang: attlab::i18n::Lang,
-) -> Result<String, String> {
+) -> Result<String, SaveError> {
     use attlab::i18n::t_with;
     let _ = (mime, dir);
     #[cfg(target_arch = "wasm32")]
     {
-        download(name, mime, &contents)
-            .map_err(|e| t_with(lang, "save-refused", &[("detail", format!("{e:?}").into())]))?;
+        download(name, mime, &contents).map_err(|e| SaveError::Refused {
+            detail: format!("{e:?}"),
+        })?;
         Ok(t_with(lang, "saved-downloaded", &[("name", name.into())]))
     }
     #[cfg(not(target_arch = "wasm32"))]
@@ -292,14 +293,48 @@ pub fn save_file(
             return Ok(attlab::i18n::t(lang, "saved-cancelled"));
         };
         let shown = path.display().to_string();
-        std::fs::write(&path, contents).map_err(|e| {
-            let args = [
-                ("path", shown.clone().into()),
-                ("error", e.to_string().into()),
-            ];
-            t_with(lang, "save-cannot-write", &args)
+        std::fs::write(&path, contents).map_err(|e| SaveError::CannotWrite {
+            path: shown.clone(),
+            error: e.to_string(),
         })?;
         Ok(t_with(lang, "saved-written", &[("path", shown.into())]))
+    }
+}
+
+/// Why a file could not be saved (the browser's or the system's own words inside).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SaveError {
+    /// The browser refused the download.
+    Refused {
+        /// What it said.
+        detail: String,
+    },
+    /// The file could not be written.
+    CannotWrite {
+        /// Where.
+        path: String,
+        /// What the system said.
+        error: String,
+    },
+}
+
+impl SaveError {
+    /// The reason in `lang`.
+    pub fn words(&self, lang: attlab::i18n::Lang) -> String {
+        use attlab::i18n::t_with;
+        match self {
+            SaveError::Refused { detail } => {
+                t_with(lang, "save-refused", &[("detail", detail.clone().into())])
+            }
+            SaveError::CannotWrite { path, error } => t_with(
+                lang,
+                "save-cannot-write",
+                &[
+                    ("path", path.clone().into()),
+                    ("error", error.clone().into()),
+                ],
+            ),
+        }
     }
 }
 

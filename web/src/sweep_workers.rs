@@ -21,10 +21,10 @@ if (!window.attlabWorkers) {
     // Under the page's build (index.html sets it), so the worker loads the same glue and wasm.
     const w = new Worker('./sweep-worker.js' + (window.attlabBuild || ''), { type: 'module' });
     w.onmessage = (e) => {
-      if ('fatal' in e.data) { W.broken = true; W.failed = e.data.fatal; W.cancel(); return; }
+      if ('fatal' in e.data) { W.broken = true; W.failed = String(e.data.fatal); W.cancel(); return; }
       W.pending--; W.done.push(e.data.id, e.data.out); W.shared = e.data.shared; W.fetched = e.data.fetched; next(w);
     };
-    w.onerror = (e) => { e.preventDefault(); W.broken = true; W.failed = e.message || 'a worker could not start'; W.cancel(); };
+    w.onerror = (e) => { e.preventDefault(); W.broken = true; W.failed = e.message || ''; W.cancel(); };
     // The page's compiled module, so the worker need not compile the wasm again; a
     // browser that cannot send one leaves the worker to fetch it.
     if (window.attlabWasmModule) {
@@ -63,11 +63,14 @@ pub struct Answers {
     /// `(job index, answer JSON)`, in the order they arrived.
     pub done: Vec<(usize, String)>,
     /// Why the workers stopped, if they failed (what is left falls back to slices).
-    pub failed: Option<String>,
+    pub failed: Option<WorkerError>,
 }
 
 #[cfg(target_arch = "wasm32")]
-fn call(method: &str, args: &[wasm_bindgen::JsValue]) -> Result<wasm_bindgen::JsValue, String> {
+fn call(
+    method: &str,
+    args: &[wasm_bindgen::JsValue],
+) -> Result<wasm_bindgen::JsValue, crate::live_io::GlueError> {
     crate::live_io::call_glue("attlabWorkers", GLUE, method, args)
 }
 
@@ -132,7 +135,9 @@ pub fn poll() -> Answers {
             .collect();
         Answers {
             done,
-            failed: get("failed").as_string(),
+            failed: get("failed")
+                .as_string()
+                .map(|detail| WorkerError::CouldNotStart { detail }),
         }
     }
     #[cfg(not(target_arch = "wasm32"))]
@@ -144,10 +149,13 @@ pub fn poll() -> Answers {
 pub fn answer(job: &str) -> String {
     use attlab::analysis::sweep::{PointJob, run_point_job};
     let done = serde_json::from_str::<PointJob>(job)
-        .map_err(|e| format!("a bad sweep job: {e}"))
+        .map_err(|e| WorkerError::BadJob {
+            detail: e.to_string(),
+        })
         .and_then(|j| {
-            let lab = attlab::labs::find(&j.lab).ok_or_else(|| format!("no lab `{}`", j.lab))?;
-            run_point_job(lab, &j)
+            let lab = attlab::labs::find(&j.lab)
+                .ok_or_else(|| WorkerError::NoLab { lab: j.lab.clone() })?;
+            run_point_job(lab, &j).map_err(WorkerError::Point)
         });
     let answer = match done {
         Ok(done) => serde_json::json!({ "ok": done }),
@@ -157,16 +165,133 @@ pub fn answer(job: &str) -> String {
 }
 
 /// Reads an [`answer`].
-pub fn read_answer(text: &str) -> Result<attlab::analysis::sweep::PointDone, String> {
+pub fn read_answer(text: &str) -> Result<attlab::analysis::sweep::PointDone, WorkerError> {
     #[derive(serde::Deserialize)]
     #[serde(rename_all = "lowercase")]
     enum Answer {
         Ok(attlab::analysis::sweep::PointDone),
-        Err(String),
+        Err(WorkerError),
     }
     match serde_json::from_str::<Answer>(text) {
         Ok(Answer::Ok(done)) => Ok(done),
         Ok(Answer::Err(why)) => Err(why),
-        Err(e) => Err(format!("an unreadable answer: {e}")),
+        Err(e) => Err(WorkerError::Unreadable {
+            detail: e.to_string(),
+        }),
+    }
+}
+
+/// Why a sweep's workers could not give a point (the page then runs it in slices).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum WorkerError {
+    /// The job could not be read (serde's words).
+    BadJob {
+        /// What the reader said.
+        detail: String,
+    },
+    /// The job names a lab the worker's build does not have.
+    NoLab {
+        /// The lab's id.
+        lab: String,
+    },
+    /// The point could not be run.
+    Point(attlab::analysis::sweep::SweepError),
+    /// The answer could not be read (serde's words).
+    Unreadable {
+        /// What the reader said.
+        detail: String,
+    },
+    /// The worker's code threw (the browser's words; `sweep-worker.js` writes it).
+    Threw {
+        /// What it threw.
+        detail: String,
+    },
+    /// A worker could not start or load the page's code (the browser's words).
+    CouldNotStart {
+        /// What the browser said ("" when it said nothing).
+        detail: String,
+    },
+}
+
+impl attlab::i18n::errors::Worded for WorkerError {
+    fn words(&self, lang: attlab::i18n::Lang, lab: &dyn attlab::model::Lab) -> String {
+        use attlab::i18n::t_with;
+        let detail =
+            |id: &str, detail: &str| t_with(lang, id, &[("detail", detail.to_string().into())]);
+        match self {
+            WorkerError::BadJob { detail: d } => detail("error-worker-bad-job", d),
+            WorkerError::NoLab { lab: id } => detail("error-worker-no-lab", id),
+            WorkerError::Point(e) => e.words(lang, lab),
+            WorkerError::Unreadable { detail: d } => detail("error-worker-unreadable", d),
+            WorkerError::Threw { detail: d } => detail("error-worker-threw", d),
+            WorkerError::CouldNotStart { detail: d } => detail("error-worker-could-not-start", d),
+        }
+    }
+}
+
+impl WorkerError {
+    /// One of each kind (the match fails to compile when a kind is added and not listed).
+    pub fn examples() -> Vec<WorkerError> {
+        let all = vec![
+            WorkerError::BadJob {
+                detail: "expected value at line 1 column 1".into(),
+            },
+            WorkerError::NoLab { lab: "p9".into() },
+            WorkerError::Point(attlab::analysis::sweep::SweepError::NoPoint {
+                sweep: 0,
+                point: 40,
+            }),
+            WorkerError::Unreadable {
+                detail: "EOF while parsing".into(),
+            },
+            WorkerError::Threw {
+                detail: "RuntimeError: unreachable".into(),
+            },
+            WorkerError::CouldNotStart {
+                detail: String::new(),
+            },
+        ];
+        for e in &all {
+            match e {
+                WorkerError::BadJob { .. }
+                | WorkerError::NoLab { .. }
+                | WorkerError::Point(_)
+                | WorkerError::Unreadable { .. }
+                | WorkerError::Threw { .. }
+                | WorkerError::CouldNotStart { .. } => {}
+            }
+        }
+        all
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use attlab::i18n::Lang;
+    use attlab::i18n::errors::Worded;
+
+    #[test]
+    fn every_worker_error_is_said_in_both_languages_and_crosses_as_json() {
+        let lab = attlab::labs::find("p4").expect("registered");
+        for e in WorkerError::examples() {
+            let (en, ru) = (e.words(Lang::En, lab), e.words(Lang::Ru, lab));
+            assert!(!en.contains('{') && !en.contains("error-"), "{e:?}: {en}");
+            assert!(!ru.contains('{') && ru != en, "{e:?}: {ru}");
+            let answer = serde_json::json!({ "err": e }).to_string();
+            assert_eq!(read_answer(&answer), Err(e.clone()));
+        }
+        // What sweep-worker.js writes when the worker's code throws.
+        let thrown = r#"{"err":{"Threw":{"detail":"RuntimeError: unreachable"}}}"#;
+        assert!(matches!(
+            read_answer(thrown),
+            Err(WorkerError::Threw { .. })
+        ));
+        assert!(matches!(
+            read_answer("{"),
+            Err(WorkerError::Unreadable { .. })
+        ));
+        let bad = answer("not a job");
+        assert!(matches!(read_answer(&bad), Err(WorkerError::BadJob { .. })));
     }
 }

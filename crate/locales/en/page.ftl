@@ -233,7 +233,7 @@ sweep-workers = { $n ->
 sweep-on-log = on the replayed log
 sweep-diverged = { $at }: a filter diverged (missing samples)
 sweep-unscored = { $at }: not scored: { $why }
-sweep-skipped = skipped { $why }
+sweep-skipped = skipped: { $why }
 sweep-best = best for { $series }: { $param } = { $value } ({ $rms } rms)
 sweep-max-axis = log10 max |value|
 sweep-objective-axis = objective
@@ -477,3 +477,41 @@ unit-ug = µg
 unit-bit = bit
 unit-J = J
 unit-mJ = mJ
+
+## Errors: why a run, a re-run, an export, a score or a sweep's point failed (the { $why }
+## of the messages above). Each error type's every kind has words here (i18n::errors).
+error-stats-empty = there were no values to take it of
+error-stats-nan = value { $index } is not a number
+error-score-columns = the scoring expected { $expected } series and got { $got }
+error-score-empty-run = the run has no samples
+error-score-diverged = the tuned filter's error is not a number (it diverged)
+error-score-no-step = the set-point step is 0°, so there is no transient to time
+error-score-ends-too-soon = the run ends at { $end } s, too soon after the step at { $step } s
+error-score-few-samples = only { $n } samples have both θ̂ and the accelerometer angle
+error-score-stat = { $of ->
+        [mse] the MSE
+        [t-tr] the transient time t_tr
+        [offset-before] the offset before the step
+        [offset-after] the offset after the step
+        [noise] the noise
+        [rms] the RMS
+       *[jitter] the jitter
+    } could not be computed: { $why }
+error-score-count = the scoring gave { $got } numbers for { $expected } scores
+error-score-seed = seed { $seed }: { $why }
+error-sim-series = the lab records no series “{ $name }”
+error-sim-few-samples = the log needs at least two samples with increasing times
+error-sim-refused = the change { $change } at step { $step } was refused on re-run: { $why }
+error-sim-csv = the CSV could not be written: { $detail }
+error-sweep-wrong-lab = a worker was handed a job of lab { $job } on lab { $lab }
+error-sweep-no-sweep = lab { $lab } has no sweep number { $sweep }
+error-sweep-no-point = sweep number { $sweep } has no point { $point }
+error-lesson-no-preset = the step names a preset “{ $preset }” that lab { $lab } does not have
+error-lesson-preset = the step's preset “{ $preset }” sets a value the lab refuses: { $why }
+error-worker-bad-job = a worker could not read its job ({ $detail })
+error-worker-no-lab = a worker's build has no lab { $detail }
+error-worker-unreadable = a worker's answer could not be read ({ $detail })
+error-worker-threw = a worker failed: { $detail }
+error-worker-could-not-start = a worker could not start or load the page's code { $detail }
+error-qr-too-long = the link is too long for a QR code ({ $bytes } bytes): leave some items out
+error-qr-other = no QR code for this link: { $detail }

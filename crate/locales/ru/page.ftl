@@ -492,3 +492,41 @@ unit-ug = мкg
 unit-bit = бит
 unit-J = Дж
 unit-mJ = мДж
+
+## Ошибки: почему не удался прогон, повторный прогон, экспорт, оценка или точка перебора
+## ({ $why } сообщений выше). У каждого вида каждой ошибки здесь есть слова (i18n::errors).
+error-stats-empty = не из чего было вычислять: значений нет
+error-stats-nan = значение { $index } — не число
+error-score-columns = оценке нужно рядов: { $expected }, а получено: { $got }
+error-score-empty-run = в прогоне нет отсчётов
+error-score-diverged = ошибка настроенного фильтра — не число (фильтр разошёлся)
+error-score-no-step = ступенька уставки равна 0°, поэтому измерять нечего: переходного процесса нет
+error-score-ends-too-soon = прогон кончается на { $end } с — слишком скоро после ступеньки на { $step } с
+error-score-few-samples = только в { $n } отсчётах есть и θ̂, и угол по акселерометру
+error-score-stat = не удалось вычислить { $of ->
+        [mse] СКО
+        [t-tr] время переходного процесса t_tr
+        [offset-before] смещение до ступеньки
+        [offset-after] смещение после ступеньки
+        [noise] шум
+        [rms] СКЗ
+       *[jitter] дрожание
+    }: { $why }
+error-score-count = оценка дала чисел: { $got }, а оценок названо: { $expected }
+error-score-seed = зерно { $seed }: { $why }
+error-sim-series = работа не записывает ряд «{ $name }»
+error-sim-few-samples = в журнале нужно хотя бы два отсчёта с возрастающим временем
+error-sim-refused = изменение { $change } на шаге { $step } отвергнуто при повторном прогоне: { $why }
+error-sim-csv = не удалось записать CSV: { $detail }
+error-sweep-wrong-lab = обработчику передано задание работы { $job } для работы { $lab }
+error-sweep-no-sweep = у работы { $lab } нет перебора номер { $sweep }
+error-sweep-no-point = у перебора номер { $sweep } нет точки { $point }
+error-lesson-no-preset = шаг называет набор «{ $preset }», которого у работы { $lab } нет
+error-lesson-preset = набор шага «{ $preset }» задаёт значение, которое работа отвергает: { $why }
+error-worker-bad-job = обработчик не смог прочитать задание ({ $detail })
+error-worker-no-lab = в сборке обработчика нет работы { $detail }
+error-worker-unreadable = не удалось прочитать ответ обработчика ({ $detail })
+error-worker-threw = обработчик сломался: { $detail }
+error-worker-could-not-start = обработчик не смог запуститься или загрузить код страницы { $detail }
+error-qr-too-long = ссылка слишком длинная для QR-кода ({ $bytes } байт): уберите из неё что-нибудь
+error-qr-other = для этой ссылки нет QR-кода: { $detail }

@@ -7,6 +7,10 @@
 //! its recorder's budget and [`HEAP_ALLOWANCE_BYTES`].
 //! `cargo xtask test` runs it over 1 000 sets, `attlab fuzz --sets N` for longer.
 
+mod error;
+
+pub use error::{FuzzError, Rule};
+
 use crate::model::{Lab, ParamKind, ParamSpec, ParamValues, Scale};
 use crate::sim::{SimOptions, Simulation};
 use nalgebra::DMatrix;
@@ -65,7 +69,7 @@ pub struct FuzzFailure {
     /// The parameters, as `key=value`.
     pub params: String,
     /// What went wrong, and at which step.
-    pub what: String,
+    pub what: FuzzError,
 }
 
 impl std::fmt::Display for FuzzFailure {
@@ -155,7 +159,7 @@ fn describe(p: &ParamValues) -> String {
 /// `peaks` holds, per estimator, the largest |P| element seen so far: an update that cancels
 /// a large prior leaves rounding of that size, so positive semi-definiteness is judged to
 /// 1e-9 of it.
-fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64]) -> Option<String> {
+fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64]) -> Option<Rule> {
     let step = sim.steps();
     for (((e, est), status), peak) in sim
         .estimators()
@@ -167,37 +171,33 @@ fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64])
         if !status.is_ok() {
             continue;
         }
-        let finite = est.is_finite();
-        if !finite {
-            return Some(format!(
-                "step {step}: {} estimate not finite but status ok",
-                e.id()
-            ));
+        let estimator = e.id();
+        if !est.is_finite() {
+            return Some(Rule::EstimateNotFinite { step, estimator });
         }
         if let Some(c) = e.covariance() {
             let n = c.dim();
             if c.matrix.len() != n * n {
-                return Some(format!(
-                    "{}: covariance has {} elements for {n} states",
-                    e.id(),
-                    c.matrix.len()
-                ));
+                return Some(Rule::CovarianceShape {
+                    estimator,
+                    elements: c.matrix.len(),
+                    states: n,
+                });
             }
             let p = DMatrix::from_column_slice(n, n, c.matrix);
             let scale = p.amax();
             if !scale.is_finite() {
-                return Some(format!(
-                    "step {step}: {} covariance not finite but status ok",
-                    e.id()
-                ));
+                return Some(Rule::CovarianceNotFinite { step, estimator });
             }
             *peak = peak.max(scale);
-            let asym = (&p - p.transpose()).amax();
-            if asym > 1e-9 * scale.max(f64::MIN_POSITIVE) {
-                return Some(format!(
-                    "step {step}: {} covariance not symmetric (|P − Pᵀ| = {asym:e}, |P| = {scale:e})",
-                    e.id()
-                ));
+            let asymmetry = (&p - p.transpose()).amax();
+            if asymmetry > 1e-9 * scale.max(f64::MIN_POSITIVE) {
+                return Some(Rule::NotSymmetric {
+                    step,
+                    estimator,
+                    asymmetry,
+                    scale,
+                });
             }
             // Positive semi-definite to rounding: P/peak + 1e-9·I has a Cholesky factor (an
             // eigenvalue below −1e-9·peak makes it fail). Bounded time, unlike an eigen
@@ -205,18 +205,23 @@ fn violation(sim: &Simulation, budget: usize, memory0: usize, peaks: &mut [f64])
             let unit = peak.max(f64::MIN_POSITIVE);
             let shifted = &p / unit + DMatrix::identity(n, n) * 1e-9;
             if shifted.cholesky().is_none() {
-                return Some(format!(
-                    "step {step}: {} covariance not positive semi-definite (|P| = {scale:e}, largest |P| so far {unit:e})",
-                    e.id()
-                ));
+                return Some(Rule::NotPositive {
+                    step,
+                    estimator,
+                    scale,
+                    peak: unit,
+                });
             }
         }
     }
     let memory = sim.recorder().memory_bytes();
     if memory != memory0 || memory > budget {
-        return Some(format!(
-            "step {step}: recorder memory {memory} B (started at {memory0} B, budget {budget} B)"
-        ));
+        return Some(Rule::RecorderMemory {
+            step,
+            memory,
+            memory0,
+            budget,
+        });
     }
     None
 }
@@ -239,14 +244,13 @@ pub fn fuzz_one(
     seed: u64,
     steps: usize,
     rng: &mut ChaCha8Rng,
-) -> Result<SetOutcome, String> {
+) -> Result<SetOutcome, FuzzError> {
     let live_heap = LIVE_HEAP.get().copied();
     let heap0 = live_heap.map(|f| f());
     let mut heap_peak = heap0;
     let options = SimOptions::default();
     let budget = options.budget_bytes;
-    let mut sim =
-        Simulation::with_options(lab, params, seed, options).map_err(|e| e.to_string())?;
+    let mut sim = Simulation::with_options(lab, params, seed, options)?;
     let memory0 = sim.recorder().memory_bytes();
     let mut peaks = vec![0.0; sim.estimators().len()];
     let specs = lab.params();
@@ -258,27 +262,33 @@ pub fn fuzz_one(
     for k in 0..steps {
         if k == steps / 2 && live.is_some() {
             sim.set_param(live_key, live_value)
-                .map_err(|e| format!("live change {live_key}={live_value} refused: {e}"))?;
+                .map_err(|source| FuzzError::LiveChange {
+                    key: live_key,
+                    value: live_value,
+                    source,
+                })?;
         }
         sim.step();
-        if let Some(v) = violation(&sim, budget, memory0, &mut peaks) {
-            return Err(format!(
-                "{v} (live change at step {}: {live_key}={live_value})",
-                steps / 2
-            ));
+        if let Some(rule) = violation(&sim, budget, memory0, &mut peaks) {
+            return Err(FuzzError::Broke {
+                rule,
+                live_step: steps / 2,
+                key: live_key,
+                value: live_value,
+            });
         }
         if let Some(f) = live_heap.filter(|_| k % 64 == 63 || k + 1 == steps) {
             heap_peak = heap_peak.max(Some(f()));
         }
     }
     let heap_bytes = heap0.zip(heap_peak).map(|(a, b)| b.saturating_sub(a));
-    if let Some(grown) = heap_bytes.filter(|g| *g > budget + HEAP_ALLOWANCE_BYTES) {
-        return Err(format!(
-            "the heap grew by {:.1} MiB in {steps} steps, beyond the recorder's {:.1} MiB and {:.0} MiB for the rest",
-            grown as f64 / f64::from(1 << 20),
-            budget as f64 / f64::from(1 << 20),
-            HEAP_ALLOWANCE_BYTES as f64 / f64::from(1 << 20)
-        ));
+    if let Some(grown_bytes) = heap_bytes.filter(|g| *g > budget + HEAP_ALLOWANCE_BYTES) {
+        return Err(FuzzError::HeapGrew {
+            grown_bytes,
+            steps,
+            budget_bytes: budget,
+            allowance_bytes: HEAP_ALLOWANCE_BYTES,
+        });
     }
     Ok(SetOutcome {
         flagged: sim.statuses().iter().any(|s| !s.is_ok()),
@@ -300,7 +310,7 @@ pub fn run(
 
 /// What one set runs: [`fuzz_one`]'s signature.
 type OneSet =
-    fn(&'static dyn Lab, ParamValues, u64, usize, &mut ChaCha8Rng) -> Result<SetOutcome, String>;
+    fn(&'static dyn Lab, ParamValues, u64, usize, &mut ChaCha8Rng) -> Result<SetOutcome, FuzzError>;
 
 /// [`run`] with `one` running each set.
 fn run_with(
@@ -333,14 +343,13 @@ fn run_with(
                 report.max_heap_bytes = report.max_heap_bytes.max(outcome.heap_bytes);
                 None
             }
-            Ok(Err(rule)) => Some(rule),
-            Err(panic) => Some(format!(
-                "panicked: {}",
+            Ok(Err(failed)) => Some(failed),
+            Err(panic) => Some(FuzzError::Panicked(
                 panic
                     .downcast_ref::<String>()
                     .cloned()
                     .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-                    .unwrap_or_default()
+                    .unwrap_or_default(),
             )),
         };
         if let Some(what) = what {
@@ -366,7 +375,7 @@ mod tests {
         seed: u64,
         steps: usize,
         rng: &mut ChaCha8Rng,
-    ) -> Result<SetOutcome, String> {
+    ) -> Result<SetOutcome, FuzzError> {
         thread_local!(static CALLS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) });
         let n = CALLS.with(|c| {
             c.set(c.get() + 1);

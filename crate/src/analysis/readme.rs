@@ -5,6 +5,18 @@
 
 use crate::model::Reproduction;
 
+/// Why a chapter's table could not be replaced. Worded in English only because only the CLI
+/// and the tests meet it: a page reader never rewrites a chapter.
+#[derive(Clone, Debug, thiserror::Error, PartialEq)]
+pub enum ChapterError {
+    /// The chapter lacks one of the lab's markers.
+    #[error("the chapter has no `{marker}` marker")]
+    MissingMarker {
+        /// The marker, as the chapter should have it.
+        marker: String,
+    },
+}
+
 /// The opening and closing markers of lab `id`'s block.
 pub fn markers(id: &str) -> (String, String) {
     (
@@ -23,16 +35,18 @@ pub fn block<'a>(readme: &'a str, id: &str) -> Option<&'a str> {
 
 /// `readme` (a chapter) with lab `rep.lab`'s block replaced by its current table; an error when the
 /// markers are missing.
-pub fn with_table(readme: &str, rep: &Reproduction) -> Result<String, String> {
+pub fn with_table(readme: &str, rep: &Reproduction) -> Result<String, ChapterError> {
     let (open, close) = markers(&rep.lab);
     let start = readme
         .find(&open)
-        .ok_or_else(|| format!("the chapter has no `{open}` marker"))?
+        .ok_or_else(|| ChapterError::MissingMarker {
+            marker: open.clone(),
+        })?
         + open.len();
     let end = start
         + readme[start..]
             .find(&close)
-            .ok_or_else(|| format!("the chapter has no `{close}` marker"))?;
+            .ok_or(ChapterError::MissingMarker { marker: close })?;
     Ok(format!(
         "{}\n{}{}",
         &readme[..start],
@@ -60,6 +74,17 @@ mod tests {
             rep.to_markdown().trim_matches('\n')
         );
         assert!(new.starts_with("intro\n") && new.ends_with("end\n"));
-        assert!(with_table("no markers", &rep).is_err());
+        assert_eq!(
+            with_table("no markers", &rep),
+            Err(ChapterError::MissingMarker {
+                marker: "<!-- reproduce:x -->".into()
+            })
+        );
+        assert_eq!(
+            with_table("<!-- reproduce:x -->", &rep)
+                .unwrap_err()
+                .to_string(),
+            "the chapter has no `<!-- /reproduce:x -->` marker"
+        );
     }
 }

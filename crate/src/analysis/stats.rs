@@ -2,21 +2,7 @@
 //! value that is not a number, naming where it was, instead of folding it away (as
 //! `f64::max` would).
 
-use thiserror::Error;
-
-/// Why a statistic could not be computed.
-#[derive(Clone, Copy, Debug, Error, PartialEq)]
-pub enum StatsError {
-    /// No values.
-    #[error("no values to take a statistic of")]
-    Empty,
-    /// A NaN at this index.
-    #[error("value {index} is NaN")]
-    NotANumber {
-        /// Position of the first NaN.
-        index: usize,
-    },
-}
+pub use crate::model::StatsError;
 
 fn checked(v: &[f64]) -> Result<&[f64], StatsError> {
     if v.is_empty() {

@@ -5,15 +5,19 @@
 //! run on a recorded log instead of the simulation (one run per value, no truth).
 
 use super::stats;
-use crate::model::{Lab, ParamValues, SeriesKey, SeriesSpec, SweepScoring, SweepSpec};
+use crate::model::{
+    Lab, ParamValues, ScoreError, SeriesKey, SeriesSpec, SweepScoring, SweepSpec, Unscored,
+};
 use crate::sensors::RateLog;
 use crate::sim::{SimOptions, Simulation};
 
 #[cfg(not(target_arch = "wasm32"))]
 mod parallel;
 mod points;
+mod skip;
 
 pub use points::{PointDone, PointJob, run_point_job};
+pub use skip::{Skipped, SweepError};
 
 /// Statistics of each series for one value (one cell of a grid).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -43,7 +47,7 @@ pub struct SweepPoint {
     /// Seeds run for this point.
     pub runs: u64,
     /// Why runs could not be scored.
-    pub unscored: Vec<String>,
+    pub unscored: Vec<Unscored>,
 }
 
 struct Running {
@@ -62,7 +66,7 @@ struct Gathered {
     missing: Vec<usize>,
     n: usize,
     per_seed: Vec<Vec<f64>>,
-    unscored: Vec<String>,
+    unscored: Vec<Unscored>,
     runs: u64,
 }
 
@@ -85,7 +89,7 @@ pub struct Sweep {
     /// Finished points, in the order of the values (grid: row by row).
     pub points: Vec<SweepPoint>,
     /// Values that could not be run, with the reason.
-    pub skipped: Vec<String>,
+    pub skipped: Vec<Skipped>,
 }
 
 impl Sweep {
@@ -248,14 +252,17 @@ impl Sweep {
         let g = &mut self.gathered;
         g.runs += 1;
         if let Some(sc) = scoring {
+            let seed = r.sim.seed();
             match (sc.score)(r.sim.params(), &r.t_s, &r.recorded) {
                 Ok(s) if s.len() == sc.names.len() => g.per_seed.push(s),
-                Ok(s) => g.unscored.push(format!(
-                    "the scoring gave {} numbers for {} scores",
-                    s.len(),
-                    sc.names.len()
-                )),
-                Err(e) => g.unscored.push(format!("seed {}: {e}", r.sim.seed())),
+                Ok(s) => g.unscored.push(Unscored {
+                    seed,
+                    why: ScoreError::Count {
+                        got: s.len(),
+                        expected: sc.names.len(),
+                    },
+                }),
+                Err(why) => g.unscored.push(Unscored { seed, why }),
             }
         }
         self.next_run += 1;
@@ -344,13 +351,16 @@ impl Sweep {
                     self.current = Some(running);
                     return true;
                 }
-                Err(e) => {
+                Err(why) => {
                     let grid = match (self.spec.grid, grid_value) {
-                        (Some(a), Some(v)) => format!(", {} = {v}", a.key),
-                        _ => String::new(),
+                        (Some(a), Some(v)) => Some((a.key.to_string(), v)),
+                        _ => None,
                     };
-                    self.skipped
-                        .push(format!("{} = {value}{grid}: {e}", self.spec.key));
+                    self.skipped.push(Skipped {
+                        at: (self.spec.key.to_string(), value),
+                        grid,
+                        why,
+                    });
                     // The whole point is skipped: on to the next point's first seed.
                     self.next_run = (point + 1) * seeds;
                     self.gathered = Gathered::default();
@@ -360,16 +370,20 @@ impl Sweep {
         false
     }
 
-    fn start_run(&self, value: f64, grid_value: Option<f64>, seed: u64) -> Result<Running, String> {
+    fn start_run(
+        &self,
+        value: f64,
+        grid_value: Option<f64>,
+        seed: u64,
+    ) -> Result<Running, SweepError> {
         let specs = self.lab.params();
         let mut p = self.base.clone();
         for (key, v) in self.spec.fixed {
-            p.set(specs, key, *v).map_err(|e| e.to_string())?;
+            p.set(specs, key, *v)?;
         }
-        p.set(specs, self.spec.key, value)
-            .map_err(|e| e.to_string())?;
+        p.set(specs, self.spec.key, value)?;
         if let (Some(axis), Some(v)) = (self.spec.grid, grid_value) {
-            p.set(specs, axis.key, v).map_err(|e| e.to_string())?;
+            p.set(specs, axis.key, v)?;
         }
         let score_series: &[SeriesKey] = self.scoring().map_or(&[], |s| s.series);
         let mut keys: Vec<SeriesKey> = self.spec.series.to_vec();
@@ -382,8 +396,7 @@ impl Sweep {
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
         let sim = match &self.log {
             Some(log) => Simulation::replay(self.lab, p, log.clone(), SimOptions::named(&names))?,
-            None => Simulation::with_options(self.lab, p, seed, SimOptions::named(&names))
-                .map_err(|e| e.to_string())?,
+            None => Simulation::with_options(self.lab, p, seed, SimOptions::named(&names))?,
         };
         let cols = self
             .spec

@@ -8,6 +8,7 @@
 //! id, so the gap is visible. The tests below fail when either language lacks a message the
 //! other has, and the page's own test fails when a message it asks for exists in neither.
 
+pub mod errors;
 mod numbers;
 mod series;
 mod units;
@@ -439,6 +440,8 @@ fn format(lang: Lang, id: &str, args: Option<&FluentArgs<'_>>) -> String {
     id.to_string()
 }
 
+#[cfg(test)]
+mod error_tests;
 #[cfg(test)]
 mod id_tests;
 #[cfg(test)]

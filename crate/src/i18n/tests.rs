@@ -140,6 +140,20 @@ const TEXT_ARGUMENTS: &[&str] = &[
     "given",
     "key",
     "gives",
+    // The errors' words (i18n::errors).
+    "preset",
+    "index",
+    "got",
+    "end",
+    "of",
+    "seed",
+    "change",
+    "job",
+    "sweep",
+    "point",
+    "bytes",
+    "name",
+    "n",
 ];
 
 #[test]

@@ -3,7 +3,8 @@
 //! what its lab has. The steps themselves are data in each lab's folder (`lesson.rs`,
 //! [`crate::model::Lesson`]).
 
-use crate::model::{Lab, Lesson, LessonStep, ParamValues, PlotTab, SeriesGroup};
+use crate::i18n::errors::Worded;
+use crate::model::{Lab, Lesson, LessonStep, ParamError, ParamValues, PlotTab, SeriesGroup};
 use crate::sim::Simulation;
 
 #[cfg(feature = "study")]
@@ -14,23 +15,105 @@ pub const SENTENCES: std::ops::RangeInclusive<usize> = 2..=5;
 /// Steps a lesson may have.
 pub const STEPS: std::ops::RangeInclusive<usize> = 5..=8;
 
+/// Why a lesson step's parameters could not be set (the lab changed under its lesson).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LessonError {
+    /// The step names a preset the lab does not have.
+    #[error("no preset `{preset}` in {lab}")]
+    NoPreset {
+        /// The preset's id.
+        preset: &'static str,
+        /// The lab's id.
+        lab: &'static str,
+    },
+    /// The step's preset sets a value the lab refuses.
+    #[error("preset `{preset}`: {source}")]
+    Preset {
+        /// The preset's id.
+        preset: &'static str,
+        /// What the lab said.
+        source: ParamError,
+    },
+    /// The step sets a value the lab refuses.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+}
+
+impl LessonError {
+    /// One of each kind (the match fails to compile when a kind is added and not listed):
+    /// the catalogue's test words every one in both languages.
+    pub fn examples() -> Vec<LessonError> {
+        let bad = ParamError::NotFinite {
+            key: "gyro_noise_deg_s".into(),
+        };
+        let all = vec![
+            LessonError::NoPreset {
+                preset: "gamma-small",
+                lab: "p4",
+            },
+            LessonError::Preset {
+                preset: "gamma-small",
+                source: bad.clone(),
+            },
+            LessonError::Param(bad),
+        ];
+        for e in &all {
+            match e {
+                LessonError::NoPreset { .. }
+                | LessonError::Preset { .. }
+                | LessonError::Param(_) => {}
+            }
+        }
+        all
+    }
+}
+
+impl Worded for LessonError {
+    fn words(&self, lang: crate::i18n::Lang, lab: &dyn Lab) -> String {
+        use crate::i18n::FluentValue;
+        match self {
+            LessonError::NoPreset { preset, lab: id } => crate::i18n::t_with(
+                lang,
+                "error-lesson-no-preset",
+                &[
+                    ("preset", FluentValue::from(*preset)),
+                    ("lab", FluentValue::from(*id)),
+                ],
+            ),
+            LessonError::Preset { preset, source } => crate::i18n::t_with(
+                lang,
+                "error-lesson-preset",
+                &[
+                    ("preset", FluentValue::from(*preset)),
+                    ("why", FluentValue::from(source.words(lang, lab))),
+                ],
+            ),
+            LessonError::Param(e) => e.words(lang, lab),
+        }
+    }
+}
+
 /// The parameters of `step` of `lab`: its defaults, then the step's preset, then its values.
 /// An unknown preset or a bad value is an error that names it.
-pub fn step_params(lab: &dyn Lab, step: &LessonStep) -> Result<ParamValues, String> {
+pub fn step_params(lab: &dyn Lab, step: &LessonStep) -> Result<ParamValues, LessonError> {
     let specs = lab.params();
     let mut params = ParamValues::defaults(specs);
     if let Some(name) = step.preset {
-        let preset = lab
-            .preset(name)
-            .ok_or_else(|| format!("no preset `{name}` in {}", lab.id()))?;
+        let preset = lab.preset(name).ok_or(LessonError::NoPreset {
+            preset: name,
+            lab: lab.id(),
+        })?;
         for (key, value) in preset.values {
             params
                 .set(specs, key, *value)
-                .map_err(|e| format!("preset `{name}`: {e}"))?;
+                .map_err(|source| LessonError::Preset {
+                    preset: name,
+                    source,
+                })?;
         }
     }
     for (key, value) in step.set {
-        params.set(specs, key, *value).map_err(|e| e.to_string())?;
+        params.set(specs, key, *value)?;
     }
     Ok(params)
 }
@@ -122,7 +205,7 @@ fn step_problems(lab: &'static dyn Lab, step: &LessonStep) -> Vec<String> {
     let params = match step_params(lab, step) {
         Ok(p) => p,
         Err(e) => {
-            out.push(e);
+            out.push(e.to_string());
             return out;
         }
     };

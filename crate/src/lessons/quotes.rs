@@ -5,10 +5,14 @@
 //! (with its decimal comma), and every measured-looking number of the English words must be
 //! one of the step's quotes (see [`unquoted`]).
 
+mod error;
+
+pub use error::QuoteError;
+
 use crate::analysis::scenario::run_trace_with;
 use crate::i18n::{self, Lang};
 use crate::model::{
-    Holds, Lab, LessonStep, ParamValues, Quote, QuoteSource, Reading, SeriesKey, q,
+    Holds, Lab, LessonStep, ParamValues, Quote, QuoteSource, Reading, ReadingError, SeriesKey, q,
 };
 
 /// The seed a lesson step opens with (the page's, unless its link names another).
@@ -137,16 +141,17 @@ fn check(
     lab: &'static dyn Lab,
     (params, pause_s): (&ParamValues, Option<f64>),
     quote: &Quote,
-) -> Result<(), String> {
+) -> Result<(), QuoteError> {
     if matches!(quote.source, QuoteSource::Paper | QuoteSource::Posed) {
         return Ok(());
     }
-    let (value, half) = shown_number(quote.shown).ok_or_else(|| "not a number".to_string())?;
+    let (value, half) =
+        shown_number(quote.shown).ok_or(QuoteError::NotANumber { shown: quote.shown })?;
     let exact = half.max(1e-9 * value.abs());
     let (got, tolerance) = match quote.source {
         QuoteSource::Paper | QuoteSource::Posed => return Ok(()),
-        QuoteSource::Param(key) => (params.try_get(key).map_err(|e| e.to_string())?, exact),
-        QuoteSource::Pause => (pause_s.ok_or("the step has no pause")?, exact),
+        QuoteSource::Param(key) => (params.try_get(key)?, exact),
+        QuoteSource::Pause => (pause_s.ok_or(QuoteError::NoPause)?, exact),
         QuoteSource::Run {
             with,
             reading,
@@ -155,23 +160,25 @@ fn check(
         } => {
             let mut p = params.clone();
             for (key, v) in with {
-                p.set(lab.params(), key, *v).map_err(|e| e.to_string())?;
+                p.set(lab.params(), key, *v)?;
             }
             let got = scale * read(lab, p, &reading)?;
             match holds {
                 Holds::Digits => (got, half),
                 Holds::About(share) => (got, share * value.abs()),
                 Holds::AtMost if got.is_finite() && got <= value + half => return Ok(()),
-                Holds::AtMost => return Err(format!("the run gives {got:.6e}, over {value}")),
+                Holds::AtMost => return Err(QuoteError::Over { got, value }),
             }
         }
     };
     if got.is_finite() && (got - value).abs() <= tolerance {
         Ok(())
     } else {
-        Err(format!(
-            "the run gives {got:.6e}, not {value} ± {tolerance:.1e}"
-        ))
+        Err(QuoteError::Off {
+            got,
+            value,
+            tolerance,
+        })
     }
 }
 
@@ -195,27 +202,26 @@ fn needs(reading: &Reading) -> (Vec<SeriesKey>, f64) {
 }
 
 /// Takes `reading` off the run of `params` at [`SEED`].
-pub fn read(lab: &'static dyn Lab, params: ParamValues, reading: &Reading) -> Result<f64, String> {
-    if let Reading::Lab(name) = reading {
+pub fn read(
+    lab: &'static dyn Lab,
+    params: ParamValues,
+    reading: &Reading,
+) -> Result<f64, ReadingError> {
+    if let Reading::Lab(name) = *reading {
         return lab
             .study()
             .and_then(|s| s.lesson_reading(name, &params, SEED))
-            .unwrap_or_else(|| Err(format!("{} has no reading `{name}`", lab.id())));
+            .unwrap_or_else(|| {
+                Err(ReadingError::NoSuchReading {
+                    lab: lab.id(),
+                    name,
+                })
+            });
     }
     let (keys, until) = needs(reading);
     let dt_s = lab.dt_s(&params);
-    let trace =
-        run_trace_with(lab, params, SEED, until + dt_s, &keys).map_err(|e| e.to_string())?;
-    let run = Traced { trace, dt_s };
-    match *reading {
-        Reading::At(..)
-        | Reading::SqrtAt(..)
-        | Reading::LastFinite(..)
-        | Reading::FirstWithin(..)
-        | Reading::FirstAbove(..)
-        | Reading::FirstClose(..) => at_a_time(&run, reading),
-        _ => over_a_span(&run, reading),
-    }
+    let trace = run_trace_with(lab, params, SEED, until + dt_s, &keys)?;
+    at_a_time(&Traced { trace, dt_s }, reading)
 }
 
 /// A run's full-rate trace and its step.
@@ -226,22 +232,23 @@ struct Traced {
 
 impl Traced {
     /// Every value of series `k`.
-    fn series(&self, k: SeriesKey) -> Result<&[f64], String> {
-        self.trace.series(k).map_err(|e| e.to_string())
+    fn series(&self, k: SeriesKey) -> Result<&[f64], ReadingError> {
+        self.trace.series(k).map_err(ReadingError::from)
     }
 
     /// The values of series `k` over [from, to]: at least one, each finite, or an error.
-    fn span(&self, k: SeriesKey, from: f64, to: f64) -> Result<Vec<f64>, String> {
+    fn span(&self, k: SeriesKey, from: f64, to: f64) -> Result<Vec<f64>, ReadingError> {
         let half = 0.5 * self.dt_s;
         let v: Vec<f64> = (self.trace.t_s().iter().zip(self.series(k)?))
             .filter(|(t, _)| **t >= from - half && **t <= to + half)
             .map(|(_, y)| *y)
             .collect();
         if v.is_empty() || v.iter().any(|x| !x.is_finite()) {
-            return Err(format!(
-                "{} has no finite values in {from}…{to} s",
-                k.name()
-            ));
+            return Err(ReadingError::NoFiniteValues {
+                series: k.name(),
+                from_s: from,
+                to_s: to,
+            });
         }
         Ok(v)
     }
@@ -251,8 +258,8 @@ fn rms(v: &[f64]) -> f64 {
     (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt()
 }
 
-/// A reading at one time, or the first time something holds.
-fn at_a_time(run: &Traced, reading: &Reading) -> Result<f64, String> {
+/// A reading at one time, or the first time something holds; any other, over a span.
+fn at_a_time(run: &Traced, reading: &Reading) -> Result<f64, ReadingError> {
     let t = run.trace.t_s();
     Ok(match *reading {
         Reading::At(k, at) => run.span(k, at, at)?[0],
@@ -260,7 +267,7 @@ fn at_a_time(run: &Traced, reading: &Reading) -> Result<f64, String> {
         Reading::LastFinite(k, at) => (t.iter().zip(run.series(k)?).rev())
             .find(|(t, y)| **t <= at + 0.5 * run.dt_s && y.is_finite())
             .map(|(_, y)| *y)
-            .ok_or("no finite value")?,
+            .ok_or(ReadingError::NoFiniteValue)?,
         Reading::FirstWithin(k, bound, from, _) => {
             first(t, from, run.series(k)?.iter().map(|y| y.abs() <= bound))?
         }
@@ -272,15 +279,15 @@ fn at_a_time(run: &Traced, reading: &Reading) -> Result<f64, String> {
                 (run.series(a)?.iter().zip(run.series(b)?)).map(|(a, b)| (a - b).abs() <= bound);
             first(t, from, close)?
         }
-        _ => return Err("not a reading at one time".into()),
+        _ => return over_a_span(run, reading),
     })
 }
 
 /// A statistic over a span of time.
-fn over_a_span(run: &Traced, reading: &Reading) -> Result<f64, String> {
+fn over_a_span(run: &Traced, reading: &Reading) -> Result<f64, ReadingError> {
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let fold = |v: Vec<f64>, start: f64, f: fn(f64, f64) -> f64| v.into_iter().fold(start, f);
-    let pair = |x, y, a, b| -> Result<Vec<f64>, String> {
+    let pair = |x, y, a, b| -> Result<Vec<f64>, ReadingError> {
         let (u, v) = (run.span(x, a, b)?, run.span(y, a, b)?);
         Ok(u.iter().zip(&v).map(|(p, q)| p - q).collect())
     };
@@ -310,7 +317,7 @@ fn over_a_span(run: &Traced, reading: &Reading) -> Result<f64, String> {
                 .collect::<Result<_, _>>()?;
             fold(each, 0.0, f64::max)
         }
-        _ => return Err("not a reading over a span".into()),
+        _ => return Err(ReadingError::NotOverASpan),
     })
 }
 
@@ -320,11 +327,11 @@ fn axes(source: &'static str) -> [SeriesKey; 3] {
 }
 
 /// The first time at or after `from` at which `hits` holds.
-fn first(t: &[f64], from: f64, mut hits: impl Iterator<Item = bool>) -> Result<f64, String> {
+fn first(t: &[f64], from: f64, mut hits: impl Iterator<Item = bool>) -> Result<f64, ReadingError> {
     t.iter()
         .find(|t| hits.next().unwrap_or(false) && **t >= from)
         .copied()
-        .ok_or_else(|| "never, in the run".to_string())
+        .ok_or(ReadingError::Never)
 }
 
 /// The numbers of `english` that look measured or set (with a decimal point, a power of

@@ -3,6 +3,8 @@
 use super::data::LabData;
 use super::estimate::{Estimator, Measurements};
 use super::lesson::Lesson;
+#[cfg(feature = "study")]
+use super::lesson::ReadingError;
 use super::note::ParamNote;
 use super::page::{Page, SceneExtras};
 use super::params::{ParamSpec, ParamValues};
@@ -276,7 +278,7 @@ pub trait Study: Sync {
         _name: &str,
         _params: &ParamValues,
         _seed: u64,
-    ) -> Option<Result<f64, String>> {
+    ) -> Option<Result<f64, ReadingError>> {
         None
     }
     /// The scenario of the lab's golden trace (tests/golden): assignments on top of its

@@ -20,6 +20,7 @@ mod params;
 pub mod q;
 mod quantity;
 mod report;
+mod score_error;
 mod series;
 mod study;
 mod trouble;
@@ -37,6 +38,8 @@ pub use lab::{
     AccuracyTable, Lab, LabRun, LabSpec, LabWords, Preset, SensorModel, Study, TruthModel,
     TruthState,
 };
+#[cfg(feature = "study")]
+pub use lesson::ReadingError;
 pub use lesson::{CycleTerm, Holds, Lesson, LessonStep, Question, Quote, QuoteSource, Reading};
 pub use log::{
     ExampleLog, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
@@ -53,6 +56,7 @@ pub use report::{
     Calibration, Expectation, Outcome, ReproError, Reproduction, Row, RowKind, SENSITIVITY_FACTORS,
     fmt_sig,
 };
+pub use score_error::{ScoreError, Scored, StatsError, Unscored};
 pub use series::{Extras, PlotTab, SeriesGroup, SeriesSpec, display_unit};
 pub use study::{OutputFile, OverlayFn, ScoreFn, SweepAxis, SweepScoring, SweepSpec, TimingItem};
 pub use trouble::Trouble;

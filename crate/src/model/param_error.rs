@@ -4,7 +4,7 @@
 use thiserror::Error;
 
 /// What was wrong with a parameter given by a user (slider, `--set`, URL).
-#[derive(Clone, Debug, Error, PartialEq)]
+#[derive(Clone, Debug, Error, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum ParamError {
     /// No parameter of that name in this lab.
     #[error("unknown parameter `{key}` (this lab has: {known})")]
@@ -40,7 +40,7 @@ pub enum ParamError {
         /// Largest allowed.
         max: f64,
         /// Unit of the range.
-        unit: &'static str,
+        unit: String,
     },
     /// A fractional value for an integer, toggle or choice.
     #[error("parameter `{key}` must be a whole number, got {value}")]

@@ -206,7 +206,7 @@ impl ParamSpec {
                 value,
                 min: self.min,
                 max: self.max,
-                unit: self.unit,
+                unit: self.unit.to_string(),
             });
         }
         match self.kind {

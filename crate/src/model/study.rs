@@ -109,7 +109,7 @@ pub struct SweepAxis {
 
 /// The scores of one run: from its times and the columns of [`SweepScoring::series`], with
 /// the run's parameters; an error says why the run cannot be scored.
-pub type ScoreFn = fn(&ParamValues, &[f64], &[Vec<f64>]) -> Result<Vec<f64>, String>;
+pub type ScoreFn = fn(&ParamValues, &[f64], &[Vec<f64>]) -> Result<Vec<f64>, super::ScoreError>;
 
 /// Lines drawn over a grid's heat map, in (key, grid key) coordinates, for the sweep's
 /// parameters (e.g. paper 4's det Q = γ det R), each with its English name: line `k`'s name

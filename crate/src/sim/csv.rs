@@ -51,11 +51,8 @@ impl<W: Write> CsvSink<W> {
     }
 
     /// Flushes and hands the writer back with the number of rows written.
-    pub fn into_inner(self) -> Result<(W, u64), String> {
+    pub fn into_inner(self) -> Result<(W, u64), super::SimError> {
         let rows = self.rows;
-        self.writer
-            .into_inner()
-            .map(|w| (w, rows))
-            .map_err(|e| e.error().to_string())
+        Ok((self.writer.into_inner()?, rows))
     }
 }

@@ -25,17 +25,17 @@ pub(super) struct Journal {
 }
 
 /// A change that the run took but its re-run refused (the lab changed under it).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error, serde::Serialize, serde::Deserialize)]
 #[error("the change {key} = {value} at step {step} was refused on re-run: {reason}")]
 pub struct Refused {
     /// Step of the change.
     pub step: u64,
     /// Parameter key.
-    pub key: &'static str,
+    pub key: String,
     /// Value set.
     pub value: f64,
     /// What the re-run said.
-    pub reason: String,
+    pub reason: crate::model::ParamError,
 }
 
 /// Why replaying a journal stopped.
@@ -127,9 +127,9 @@ impl Journal {
             sim.set_param(e.key, e.value).map_err(|err| {
                 ReplayError::Refused(Refused {
                     step: e.step,
-                    key: e.key,
+                    key: e.key.to_string(),
                     value: e.value,
-                    reason: err.to_string(),
+                    reason: err,
                 })
             })?;
             applied += 1;

@@ -9,6 +9,7 @@ mod accuracy;
 mod catalogue;
 mod csv;
 mod derived;
+mod error;
 mod export;
 mod glance;
 mod health;
@@ -21,6 +22,7 @@ mod selection;
 
 pub use accuracy::{AccuracyRow, AccuracyTracker};
 pub use csv::{CsvSink, csv_cell};
+pub use error::SimError;
 pub use export::write_output_file;
 pub use glance::Glance;
 pub use journal::{Refused, ReplayError};
@@ -378,7 +380,7 @@ impl Simulation {
         let fresh = match self.replay.take() {
             Some(log) => Self::live(self.lab, self.params.clone(), log, options),
             None => Self::with_options(self.lab, self.params.clone(), seed, options)
-                .map_err(|e| e.to_string()),
+                .map_err(SimError::from),
         };
         if let Ok(fresh) = fresh {
             *self = fresh;

@@ -1,7 +1,7 @@
 //! Replaying a recorded gyro log (paper 1's laboratory mode) or IMU log (paper 4's rig)
 //! through a lab's estimators: the log stands in for the truth model and the sensors.
 
-use super::{SimOptions, Simulation, layout_of};
+use super::{SimError, SimOptions, Simulation, layout_of};
 use crate::model::{
     Extras, LOGGED_SAMPLE, Lab, LabData, Measurements, ParamValues, Quantity, SensorModel,
     SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
@@ -67,7 +67,7 @@ impl Simulation {
         params: ParamValues,
         log: RateLog,
         options: SimOptions,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, SimError> {
         Self::live(lab, params, SharedLog::new(log), options)
     }
 
@@ -79,11 +79,11 @@ impl Simulation {
         params: ParamValues,
         log: SharedLog,
         options: SimOptions,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, SimError> {
         log.read()
             .median_dt_s()
             .filter(|d| *d > 0.0)
-            .ok_or("the log needs at least two samples with increasing times")?;
+            .ok_or(SimError::FewSamples)?;
         let mut rng = ChaCha8Rng::seed_from_u64(0);
         let mut run = lab.build_for_log(&params, &mut rng);
         // The lab's own truth says whether it turns about one axis (p1, p4) or three (p3):
@@ -91,7 +91,7 @@ impl Simulation {
         let single_axis = run.truth.state().angle_rad.is_some();
         run.truth = Box::new(LogTruth::new(log.clone(), single_axis));
         run.sensors = Box::new(LogSensor::new(log.clone()));
-        let layout = layout_of(lab, &run, &options).map_err(|e| e.to_string())?;
+        let layout = layout_of(lab, &run, &options)?;
         Ok(Self::assemble(
             lab,
             params,

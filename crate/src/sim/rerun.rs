@@ -3,7 +3,7 @@
 //! sink, or to record another selection of series with their whole history.
 
 use super::journal::{Cursor, Journal, Refused, ReplayError};
-use super::{Selection, SimOptions, Simulation};
+use super::{Selection, SimError, SimOptions, Simulation};
 use crate::model::SeriesSpec;
 use crate::record::Recorder;
 
@@ -20,7 +20,7 @@ pub enum RerunItem<'a> {
 pub enum RerunError<E> {
     /// The run could not be rebuilt, or a change of its journal was refused.
     #[error("cannot rebuild the run: {0}")]
-    Setup(String),
+    Setup(SimError),
     /// The sink refused a row.
     #[error("export failed: {0}")]
     Sink(E),
@@ -29,11 +29,15 @@ pub enum RerunError<E> {
 impl Simulation {
     /// A fresh run from this run's start (t = 0, initial parameters, seed or log), recording
     /// what `options` selects.
-    fn restart(&self, options: SimOptions) -> Result<Simulation, String> {
+    fn restart(&self, options: SimOptions) -> Result<Simulation, SimError> {
         match &self.replay {
             Some(log) => Self::live(self.lab, self.initial_params.clone(), log.clone(), options),
-            None => Self::with_options(self.lab, self.initial_params.clone(), self.seed, options)
-                .map_err(|e| e.to_string()),
+            None => Ok(Self::with_options(
+                self.lab,
+                self.initial_params.clone(),
+                self.seed,
+                options,
+            )?),
         }
     }
 
@@ -56,7 +60,7 @@ impl Simulation {
             .replay(&mut sim, self.steps, |s| sink(RerunItem::Row(&s.row)))
             .map_err(|e| match e {
                 ReplayError::Step(e) => RerunError::Sink(e),
-                ReplayError::Refused(r) => RerunError::Setup(r.to_string()),
+                ReplayError::Refused(r) => RerunError::Setup(SimError::Refused(r)),
             })?;
         Ok(sim.steps + 1)
     }
@@ -64,15 +68,15 @@ impl Simulation {
     /// The same run recording `selection` instead: re-run from the start up to this step,
     /// so the new series have their whole history. Its cost is the run so far at the new
     /// selection's speed.
-    pub fn reselected(&self, selection: Selection) -> Result<Simulation, String> {
+    pub fn reselected(&self, selection: Selection) -> Result<Simulation, SimError> {
         let options = SimOptions {
             selection,
             budget_bytes: self.options.budget_bytes,
         };
         let mut sim = self.restart(options)?;
-        self.journal
-            .replay(&mut sim, self.steps, |_| Ok::<(), String>(()))
-            .map_err(|e| e.to_string())?;
+        self.journal.replay(&mut sim, self.steps, |_| {
+            Ok::<(), std::convert::Infallible>(())
+        })?;
         Ok(sim)
     }
 
@@ -80,7 +84,7 @@ impl Simulation {
     /// recorder goes first (the re-run rebuilds every series), which keeps the page's
     /// high-water mark down on a lab with many series. On an error the run goes on recording
     /// what it did (re-run again, or from now on if that fails too) and the error is returned.
-    pub fn reselect(&mut self, selection: Selection) -> Result<(), String> {
+    pub fn reselect(&mut self, selection: Selection) -> Result<(), SimError> {
         let specs = self.recorder.specs().to_vec();
         self.release_recorder();
         match self.reselected(selection) {
@@ -145,7 +149,11 @@ impl RerunJob {
 
 impl Simulation {
     /// A [`RerunJob`] of this run recording `selection` within `budget_bytes`.
-    pub fn rerun_job(&self, selection: Selection, budget_bytes: usize) -> Result<RerunJob, String> {
+    pub fn rerun_job(
+        &self,
+        selection: Selection,
+        budget_bytes: usize,
+    ) -> Result<RerunJob, SimError> {
         let sim = self.restart(SimOptions {
             selection,
             budget_bytes,

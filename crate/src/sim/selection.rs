@@ -63,7 +63,7 @@ impl Selection {
 }
 
 /// A series asked for that the lab does not have.
-#[derive(Clone, Debug, Error, PartialEq)]
+#[derive(Clone, Debug, Error, PartialEq, serde::Serialize, serde::Deserialize)]
 #[error("no series `{name}` in lab `{lab}` (it has: {known})")]
 pub struct UnknownSeries {
     /// The name asked for.

@@ -198,3 +198,59 @@ fn no_series_name_is_typed_by_hand() {
         found.join("\n")
     );
 }
+
+/// The error types of `Result<…>`s in `text` that are a bare `String` (whitespace ignored):
+/// `Result<T, String>` and `Ok::<T, String>`.
+fn string_errors(text: &str) -> usize {
+    let flat: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    let mut found = 0;
+    for opener in ["Result<", "Ok::<", "Err::<"] {
+        let mut at = 0;
+        while let Some(k) = flat[at..].find(opener) {
+            let start = at + k + opener.len();
+            at = start;
+            let (mut depth, mut last_comma) = (1usize, None);
+            for (i, c) in flat[start..].char_indices() {
+                match c {
+                    '<' | '(' | '[' => depth += 1,
+                    '>' | ')' | ']' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            let error = last_comma.map(|j| &flat[start + j + 1..start + i]);
+                            found += usize::from(error == Some("String"));
+                            break;
+                        }
+                    }
+                    ',' if depth == 1 => last_comma = Some(i),
+                    _ => {}
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_string_error_counter_finds_them_across_lines() {
+    let text = "fn a() -> Result<Vec<(u8, f64)>,\n    String> {}\nOk::<(), String>(())\nResult<String, E> Result<u8, Box<String>>";
+    assert_eq!(string_errors(text), 2);
+}
+
+/// Failures are typed per layer and worded by the catalogue: no `Result<_, String>` outside
+/// the CLI's top level (`crate/src/bin/`).
+#[test]
+fn no_error_is_a_bare_string() {
+    let found: Vec<String> = sources(&["crate/src", "web/src"])
+        .iter()
+        .filter(|(path, _)| !path.starts_with("crate/src/bin/"))
+        .filter_map(|(path, text)| {
+            let n = string_errors(text);
+            (n > 0).then(|| format!("{path}: {n}"))
+        })
+        .collect();
+    assert!(
+        found.is_empty(),
+        "Result<_, String> (type the error and word it in the catalogue):\n{}",
+        found.join("\n")
+    );
+}

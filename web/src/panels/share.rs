@@ -27,7 +27,7 @@ pub fn share_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comm
                 match qr(&link) {
                     Ok(code) => draw_qr(ui, &code, 240.0),
                     Err(why) => {
-                        ui.colored_label(ui.visuals().error_fg_color, why);
+                        ui.colored_label(ui.visuals().error_fg_color, why.words(app.view().lang()));
                     }
                 }
                 ui.label(egui::RichText::new(tr(app, "share-scan")).small().weak());

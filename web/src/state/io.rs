@@ -7,7 +7,7 @@ use crate::pick::{self, Picked};
 use crate::platform;
 use attlab::model::PlotTab;
 use attlab::model::{LogFormat, ParamValues};
-use attlab::sim::{SimOptions, Simulation};
+use attlab::sim::{SimError, SimOptions, Simulation};
 use std::collections::BTreeMap;
 
 /// Logs to load and where exports go.
@@ -164,16 +164,16 @@ impl AppState {
         let Some(format) = lab.page().log_format else {
             return self.warn("msg-no-logs-named", &[("name", name.as_str().into())]);
         };
-        let failed = |why: String| {
+        let failed = |why: attlab::i18n::FluentValue<'static>| {
             (
                 "msg-log-failed",
-                vec![("name", name.as_str().into()), ("why", why.into())],
+                vec![("name", name.as_str().into()), ("why", why)],
             )
         };
         let log = match attlab::labs::read_log(lab, bytes, &self.io.units_for(format)) {
             Ok(log) => log,
             Err(why) => {
-                let (id, args) = failed(super::log_words::refusal(self.view.lang(), &why));
+                let (id, args) = failed(super::log_words::refusal(self.view.lang(), &why).into());
                 return self.warn(id, &args);
             }
         };
@@ -216,22 +216,27 @@ impl AppState {
                 self.io.replaying = Some((name, counts.kept));
             }
             Err(why) => {
-                let (id, args) = failed(why);
+                let (id, args) = failed(self.why(&why));
                 self.warn(id, &args);
             }
         }
     }
 
     /// Saves `bytes` as `name`, with `what` after the saved path in the message.
-    pub(super) fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, String>) {
-        let message = result.and_then(|what| {
-            let dir = self.io.save_dir.as_deref();
-            platform::save_file(name, "text/csv", bytes, dir, self.view.lang())
-                .map(|m| format!("{m} ({what})"))
-        });
+    pub(super) fn save(&mut self, name: &str, bytes: Vec<u8>, result: Result<String, SimError>) {
+        let lang = self.view.lang();
+        let message = match result {
+            Ok(what) => {
+                let dir = self.io.save_dir.as_deref();
+                platform::save_file(name, "text/csv", bytes, dir, lang)
+                    .map(|m| format!("{m} ({what})"))
+                    .map_err(|e| e.words(lang).into())
+            }
+            Err(e) => Err(self.why(&e)),
+        };
         match message {
             Ok(m) => self.info(m),
-            Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
+            Err(why) => self.warn("msg-export-failed", &[("why", why)]),
         }
     }
 

@@ -5,7 +5,7 @@
 //! replacing one that has not finished.
 
 use super::AppState;
-use attlab::sim::{CsvSink, RerunJob, Selection};
+use attlab::sim::{CsvSink, RerunJob, Selection, SimError};
 use web_time::{Duration, Instant};
 
 /// What a job is for.
@@ -52,7 +52,7 @@ impl AppState {
                 self.sim.release_recorder();
                 self.start_job(Purpose::Reselect, rerun);
             }
-            Err(e) => self.warn("msg-plot-failed", &[("why", e.to_string().into())]),
+            Err(e) => self.warn("msg-plot-failed", &[("why", self.why(&e))]),
         }
     }
 
@@ -71,18 +71,16 @@ impl AppState {
             .sim
             .rerun_job(Selection::All, 1 << 16)
             .and_then(|rerun| {
-                let mut sink =
-                    CsvSink::new(Vec::new(), rerun.sim().specs()).map_err(|e| e.to_string())?;
-                sink.row(rerun.sim().last_row())
-                    .map_err(|e| e.to_string())?;
-                Ok((sink, rerun))
+                let mut sink = CsvSink::new(Vec::new(), rerun.sim().specs())?;
+                sink.row(rerun.sim().last_row())?;
+                Ok::<_, SimError>((sink, rerun))
             });
         match made {
             Ok((sink, rerun)) => {
                 let sink = Box::new(sink);
                 self.start_job(Purpose::ExportCsv { name, sink }, rerun)
             }
-            Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
+            Err(e) => self.warn("msg-export-failed", &[("why", self.why(&e))]),
         }
     }
 
@@ -121,7 +119,7 @@ impl AppState {
     fn restore_recorder(&mut self) {
         let previous = self.sim.options().selection.clone();
         if let Err(e) = self.sim.reselect(previous) {
-            self.warn("msg-plots-lost", &[("why", e.to_string().into())]);
+            self.warn("msg-plots-lost", &[("why", self.why(&e))]);
         }
     }
 
@@ -137,9 +135,9 @@ impl AppState {
             let steps = slicer.chunk(budget.saturating_sub(start.elapsed()));
             let t0 = Instant::now();
             let stepped = match &mut job.purpose {
-                Purpose::Reselect => job.rerun.advance(steps as u64, |_| Ok::<(), String>(())),
+                Purpose::Reselect => job.rerun.advance(steps as u64, |_| Ok::<(), SimError>(())),
                 Purpose::ExportCsv { sink, .. } => job.rerun.advance(steps as u64, |s| {
-                    sink.row(s.last_row()).map_err(|e| e.to_string())
+                    sink.row(s.last_row()).map_err(SimError::from)
                 }),
             };
             slicer.measured(steps, t0.elapsed());
@@ -147,19 +145,22 @@ impl AppState {
                 Ok(false) if start.elapsed() < budget => continue,
                 Ok(false) => return,
                 Ok(true) => break Ok(()),
-                Err(e) => break Err(e.to_string()),
+                Err(e) => break Err(SimError::from(e)),
             }
         };
         let job = self.run.jobs.remove(0);
         self.finish_job(job, outcome);
     }
 
-    fn finish_job(&mut self, job: Job, outcome: Result<(), String>) {
+    fn finish_job(&mut self, job: Job, outcome: Result<(), SimError>) {
         let ms = job.started.elapsed().as_secs_f64() * 1e3;
         match (job.purpose, outcome) {
             (Purpose::Reselect, Ok(())) => {
                 if let Err(e) = self.sim.adopt(job.rerun) {
-                    self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
+                    self.warn(
+                        "msg-plot-failed",
+                        &[("why", self.why(&SimError::Refused(e)))],
+                    );
                     self.restore_recorder();
                 } else if ms > 1000.0 {
                     let t_s = self.sim.t_s();
@@ -171,7 +172,7 @@ impl AppState {
                 }
             }
             (Purpose::Reselect, Err(e)) => {
-                self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
+                self.warn("msg-plot-failed", &[("why", self.why(&e))]);
                 self.restore_recorder();
             }
             (Purpose::ExportCsv { name, sink }, Ok(())) => {
@@ -180,11 +181,11 @@ impl AppState {
                     .map(|(bytes, rows)| (bytes, self.word("msg-csv-rows", &[("n", rows.into())])));
                 match result {
                     Ok((bytes, what)) => self.save(&name, bytes, Ok(what)),
-                    Err(e) => self.warn("msg-export-failed", &[("why", e.to_string().into())]),
+                    Err(e) => self.warn("msg-export-failed", &[("why", self.why(&e))]),
                 }
             }
             (Purpose::ExportCsv { .. }, Err(e)) => {
-                self.warn("msg-export-failed", &[("why", e.to_string().into())]);
+                self.warn("msg-export-failed", &[("why", self.why(&e))]);
             }
         }
     }

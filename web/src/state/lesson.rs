@@ -95,7 +95,7 @@ impl AppState {
         let mut params = match attlab::lessons::step_params(lab, step) {
             Ok(p) => p,
             Err(e) => {
-                self.warn("msg-lesson-bad-step", &[("why", e.into())]);
+                self.warn("msg-lesson-bad-step", &[("why", self.why(&e))]);
                 return;
             }
         };

@@ -3,7 +3,7 @@
 //! list of the lab's forty internal names.
 
 use attlab::i18n::{self, FluentValue, Lang};
-use attlab::model::{Lab, ParamError, ParamKind, ParamSpec, ParamValues};
+use attlab::model::{Lab, ParamError, ParamSpec, ParamValues};
 use attlab::state::UrlStateError;
 
 /// What a link's bad item says on the page, in `lang`.
@@ -53,79 +53,8 @@ pub fn link_problem(lang: Lang, lab: &dyn Lab, e: &UrlStateError) -> String {
     i18n::t_with(lang, id, &args)
 }
 
-/// Why a value for one of `specs` (the lab's sliders, or its log format's unit choices) was
-/// refused, in `lang`: named by the control's label with its range, not by its key (only a
-/// key no control has is said as given). The run and the choice stay as they were.
-pub fn param_problem(lang: Lang, lab: &dyn Lab, specs: &[ParamSpec], e: &ParamError) -> String {
-    let key = match e {
-        ParamError::Malformed { text } => {
-            return i18n::t_with(lang, "param-malformed", &[("text", text.clone().into())]);
-        }
-        ParamError::Unknown { key, .. }
-        | ParamError::NotANumber { key, .. }
-        | ParamError::NotFinite { key }
-        | ParamError::OutOfRange { key, .. }
-        | ParamError::NotInteger { key, .. }
-        | ParamError::NoSuchOption { key, .. } => key,
-    };
-    let Some(spec) = specs.iter().find(|s| s.key == key.as_str()) else {
-        return i18n::t_with(lang, "param-unknown", &[("key", key.clone().into())]);
-    };
-    let choice = matches!(spec.kind, ParamKind::Choice(_));
-    let (id, given) = match e {
-        // A choice is said by its options, whatever number was asked for.
-        ParamError::OutOfRange { value, .. } | ParamError::NotInteger { value, .. } if choice => {
-            ("param-no-option", i18n::number(lang, &value.to_string()))
-        }
-        ParamError::NotANumber { text, .. } => ("param-not-a-number", text.clone()),
-        ParamError::NoSuchOption { text, .. } => ("param-no-option", text.clone()),
-        ParamError::OutOfRange { value, .. } => ("param-out-of-range", shown(lang, spec, *value)),
-        ParamError::NotInteger { value, .. } => {
-            ("param-not-whole", i18n::number(lang, &value.to_string()))
-        }
-        _ => ("param-not-finite", String::new()),
-    };
-    let args = [
-        ("label", label(lang, lab, spec).into()),
-        ("range", range(lang, lab, spec).into()),
-        ("given", given.into()),
-    ];
-    i18n::t_with(lang, id, &args)
-}
-
-/// What a control takes, in `lang`: its options, or its range with the unit.
-fn range(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
-    match spec.kind {
-        ParamKind::Choice(options) => (0..options.len())
-            .map(|i| {
-                let id = i18n::param_option_id(lab.id(), spec.key, i);
-                i18n::lab_text(lang, &id, options[i])
-            })
-            .collect::<Vec<_>>()
-            .join(", "),
-        _ => format!(
-            "{} … {} {}",
-            i18n::number(lang, &spec.min.to_string()),
-            i18n::number(lang, &spec.max.to_string()),
-            i18n::unit(lang, spec.unit)
-        )
-        .trim_end()
-        .to_string(),
-    }
-}
-
-/// A parameter's label in `lang`.
-fn label(lang: Lang, lab: &dyn Lab, spec: &ParamSpec) -> String {
-    i18n::lab_text(lang, &i18n::param_label_id(lab.id(), spec.key), spec.label)
-}
-
-/// A value as the slider shows it, with its unit in `lang`.
-fn shown(lang: Lang, spec: &ParamSpec, v: f64) -> String {
-    let v = i18n::number(lang, &v.to_string());
-    format!("{v} {}", i18n::unit(lang, spec.unit))
-        .trim_end()
-        .to_string()
-}
+pub use attlab::i18n::errors::param_problem;
+use attlab::i18n::errors::{param_label as label, param_range as range, param_shown as shown};
 
 /// The lab's parameter whose key, or whose label spelled as a key, is nearest to `key` (an
 /// edit distance of at most a third of its length), if any: `gyro_sigma_deg_s` is paper

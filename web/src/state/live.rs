@@ -300,7 +300,7 @@ impl AppState {
                     self.run.sweep = None;
                     self.io.replaying = None;
                 }
-                Err(why) => return self.warn("msg-live-failed", &[("why", why.into())]),
+                Err(why) => return self.warn("msg-live-failed", &[("why", self.why(&why))]),
             }
         }
         if !self.live.as_ref().is_some_and(|l| l.bound) || !self.run.playing {

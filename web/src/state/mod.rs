@@ -309,4 +309,9 @@ impl AppState {
         let text = self.word(id, args);
         self.error(text);
     }
+
+    /// A failure in the reader's language and the lab's words, for a message's `why`.
+    fn why(&self, e: &dyn attlab::i18n::errors::Worded) -> attlab::i18n::FluentValue<'static> {
+        e.words(self.view.lang(), self.sim.lab()).into()
+    }
 }

@@ -104,7 +104,7 @@ impl AppState {
             sweep_workers::cancel();
             self.run.pool = None;
             self.run.sweep_timing.workers = 0;
-            self.warn("msg-workers-failed", &[("why", why.into())]);
+            self.warn("msg-workers-failed", &[("why", self.why(&why))]);
             return false;
         }
         true

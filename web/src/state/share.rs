@@ -52,9 +52,44 @@ pub struct QrModules {
     pub dark: Vec<bool>,
 }
 
+/// Why a link has no QR code.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QrError {
+    /// The link is longer than a QR code holds.
+    TooLong {
+        /// The link's length in bytes.
+        bytes: usize,
+    },
+    /// The encoder's other refusals (its own words; none can happen for a link's bytes).
+    Other {
+        /// What the encoder said.
+        detail: String,
+    },
+}
+
+impl QrError {
+    /// The reason in `lang`.
+    pub fn words(&self, lang: attlab::i18n::Lang) -> String {
+        use attlab::i18n::t_with;
+        match self {
+            QrError::TooLong { bytes } => {
+                t_with(lang, "error-qr-too-long", &[("bytes", (*bytes).into())])
+            }
+            QrError::Other { detail } => {
+                t_with(lang, "error-qr-other", &[("detail", detail.clone().into())])
+            }
+        }
+    }
+}
+
 /// The QR code of `text` (error correction level M), or why it cannot be made.
-pub fn qr(text: &str) -> Result<QrModules, String> {
-    let code = qrcode::QrCode::new(text.as_bytes()).map_err(|e| e.to_string())?;
+pub fn qr(text: &str) -> Result<QrModules, QrError> {
+    let code = qrcode::QrCode::new(text.as_bytes()).map_err(|e| match e {
+        qrcode::types::QrError::DataTooLong => QrError::TooLong { bytes: text.len() },
+        other => QrError::Other {
+            detail: other.to_string(),
+        },
+    })?;
     let dark = code
         .to_colors()
         .into_iter()

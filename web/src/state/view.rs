@@ -200,7 +200,7 @@ impl AppState {
             // A PNG capture shows each tab for a few frames with the run held: re-run at
             // once, so the picture has the tab's whole history.
             if let Err(e) = self.sim.reselect(selection) {
-                self.warn("msg-plot-failed", &[("why", e.to_string().into())]);
+                self.warn("msg-plot-failed", &[("why", self.why(&e))]);
             }
         } else {
             self.start_reselect(selection);

@@ -32,7 +32,7 @@ pub struct PointDone {
     /// The point (none when it could not be run).
     pub points: Vec<SweepPoint>,
     /// Why it could not be run.
-    pub skipped: Vec<String>,
+    pub skipped: Vec<super::Skipped>,
     /// The legends of the spec's series.
     pub legends: Vec<String>,
 }
@@ -132,17 +132,26 @@ impl From<Sweep> for PointDone {
 pub fn run_point_job(
     lab: &'static dyn crate::model::Lab,
     job: &PointJob,
-) -> Result<PointDone, String> {
+) -> Result<PointDone, super::SweepError> {
     if lab.id() != job.lab {
-        return Err(format!("the job is for lab {}, not {}", job.lab, lab.id()));
+        return Err(super::SweepError::WrongLab {
+            job: job.lab.clone(),
+            lab: lab.id().to_string(),
+        });
     }
     let spec = lab
         .sweeps()
         .get(job.sweep)
-        .ok_or_else(|| format!("lab {} has no sweep {}", job.lab, job.sweep))?;
+        .ok_or_else(|| super::SweepError::NoSweep {
+            lab: job.lab.clone(),
+            sweep: job.sweep,
+        })?;
     let sweep = Sweep::new(lab, *spec, job.base.clone(), job.seed).with_values(job.values.clone());
     if job.point >= sweep.point_count() {
-        return Err(format!("sweep {} has no point {}", job.sweep, job.point));
+        return Err(super::SweepError::NoPoint {
+            sweep: job.sweep,
+            point: job.point,
+        });
     }
     Ok(sweep.template().one_point(job.point).run_in_order().into())
 }

@@ -112,7 +112,8 @@ pub(super) fn run(
             duration_s,
             &file,
             std::io::BufWriter::new(out),
-        )?;
+        )
+        .map_err(|e| format!("{}: {e}", csv_path.display()))?;
         println!(
             "wrote the paper's output file, {rows} rows ({}) to {}{}",
             file.headers.join(", "),

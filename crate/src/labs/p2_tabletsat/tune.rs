@@ -6,7 +6,9 @@
 
 use super::sets::{FILTERS, FilterRow, QSource};
 use crate::estimators::{MekfConfig, MekfTuning};
-use crate::model::{ParamNote, ParamValues, SeriesKey, SweepScoring, SweepSpec, fmt_sig, q};
+use crate::model::{
+    ParamNote, ParamValues, ScoreError, SeriesKey, SweepScoring, SweepSpec, fmt_sig, q,
+};
 
 /// The tuned filter's id.
 pub const TUNED_ID: &str = "tuned";
@@ -93,8 +95,8 @@ pub(super) fn notes(p: &ParamValues) -> Vec<ParamNote> {
 }
 
 /// The tuned filter's attitude σ over the last 60 s of each run (deg).
-fn score_run(_: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, String> {
-    let end = t_s.last().copied().ok_or("an empty run")?;
+fn score_run(_: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, ScoreError> {
+    let end = t_s.last().copied().ok_or(ScoreError::EmptyRun)?;
     let window: Vec<f64> = t_s
         .iter()
         .zip(&columns[0])
@@ -102,7 +104,7 @@ fn score_run(_: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f
         .map(|(_, e)| *e)
         .collect();
     if window.iter().any(|e| !e.is_finite()) {
-        return Err("the tuned filter's error is not a number (diverged)".into());
+        return Err(ScoreError::Diverged);
     }
     let rms = (window.iter().map(|e| e * e).sum::<f64>() / window.len().max(1) as f64).sqrt();
     Ok(vec![rms])

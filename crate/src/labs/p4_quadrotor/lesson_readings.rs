@@ -6,11 +6,12 @@
 use super::reproduce::{best_of_grid, score_params};
 use super::{QuadrotorRoll, keys, tuning};
 use crate::analysis::sweep::Sweep;
-use crate::model::{Lab, ParamValues};
+use crate::model::{Lab, ParamValues, ReadingError};
 
 /// Reading `name` of the run of `params` (`None` for a name this lab does not know).
-pub(super) fn reading(name: &str, params: &ParamValues) -> Option<Result<f64, String>> {
-    let score = || score_params(params.clone(), params.get(keys::GAMMA)).map_err(|e| e.to_string());
+pub(super) fn reading(name: &str, params: &ParamValues) -> Option<Result<f64, ReadingError>> {
+    let score =
+        || score_params(params.clone(), params.get(keys::GAMMA)).map_err(ReadingError::from);
     Some(match name {
         // |mean θ̂ − θ| over the settled seconds (deg).
         "offset" => score().map(|s| s.offset_deg),
@@ -21,7 +22,7 @@ pub(super) fn reading(name: &str, params: &ParamValues) -> Option<Result<f64, St
         // MSE over θ and ω (deg² + (deg/s)²).
         "mse" => score().map(|s| s.mse),
         // The γ of the paper's four with the least J(0.5, 0.5).
-        "best-of-grid" => best_of_grid(params).map_err(|e| e.to_string()),
+        "best-of-grid" => best_of_grid(params).map_err(ReadingError::from),
         // The γ of the page's finer sweep with the least J(0.5, 0.5).
         "best-of-sweep" => Ok(best_of_sweep(params)),
         _ => return None,

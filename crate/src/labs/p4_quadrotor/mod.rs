@@ -338,7 +338,7 @@ impl Study for QuadrotorRoll {
         name: &str,
         params: &ParamValues,
         _seed: u64,
-    ) -> Option<Result<f64, String>> {
+    ) -> Option<Result<f64, crate::model::ReadingError>> {
         lesson_readings::reading(name, params)
     }
 }

@@ -100,7 +100,7 @@ pub fn score_params(
     .with_values(vec![gamma])
     .run_to_end();
     if let Some(reason) = sweep.skipped.first() {
-        return Err(AnalysisError::Scenario(reason.clone()));
+        return Err(AnalysisError::Scenario(reason.to_string()));
     }
     let point = sweep
         .points

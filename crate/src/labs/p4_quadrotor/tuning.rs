@@ -15,7 +15,9 @@
 
 use super::keys as roll_keys;
 use crate::analysis::stats;
-use crate::model::{ParamValues, SeriesKey, SweepScoring, SweepSpec, q};
+use crate::model::{
+    ParamValues, ScoreError, Scored, SeriesKey, StatsError, SweepScoring, SweepSpec, q,
+};
 
 /// The series the simulated runs are scored on.
 const SCORED: &[SeriesKey] = &[
@@ -119,20 +121,28 @@ pub const SWEEPS: &[SweepSpec] = &[
 
 /// MSE, t_tr, offset and noise of one run; `columns` are those of `SCORED` (the true angle,
 /// the KF's error and its rate error).
-pub fn score_run(p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, String> {
+pub fn score_run(
+    p: &ParamValues,
+    t_s: &[f64],
+    columns: &[Vec<f64>],
+) -> Result<Vec<f64>, ScoreError> {
     let [angle, err_angle, err_rate] = columns else {
-        return Err(format!("expected 3 series, got {}", columns.len()));
+        return Err(ScoreError::Columns {
+            expected: 3,
+            got: columns.len(),
+        });
     };
     let step_at = p.get("step_period_s");
     let step_deg = p.get("setpoint_deg");
     if step_deg <= 0.0 {
-        return Err("the set-point step is 0°, so there is no transient to time".into());
+        return Err(ScoreError::NoStep);
     }
     let t_end = t_s.last().copied().unwrap_or(0.0);
     if t_end < step_at + 1.0 {
-        return Err(format!(
-            "the run ends at {t_end:.1} s, too soon after the step at {step_at:.1} s"
-        ));
+        return Err(ScoreError::EndsTooSoon {
+            end_s: t_end,
+            step_s: step_at,
+        });
     }
     let dt = t_s.windows(2).next().map_or(0.01, |w| w[1] - w[0]);
     // The settled window ends at the next step (back to 0) or at the end of the run.
@@ -146,7 +156,7 @@ pub fn score_run(p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<V
         .zip(err_rate)
         .map(|(a, r)| a * a + r * r)
         .collect();
-    let mse = stats::mean(&sq).map_err(|e| format!("MSE: {e}"))?;
+    let mse = stats::mean(&sq).map_err(stat(Scored::Mse))?;
     let t_tr = transient_time(t_s, angle, step_at, step_deg, settle_end)?;
     let window = |from: f64, to: f64| -> Vec<f64> {
         t_s.iter()
@@ -157,13 +167,13 @@ pub fn score_run(p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<V
     };
     let still = window(step_at - 1.0, step_at);
     let settled = window(settle_end - 1.0, settle_end);
-    let before = stats::mean(&still).map_err(|e| format!("offset before the step: {e}"))?;
-    let after = stats::mean(&settled).map_err(|e| format!("offset after the step: {e}"))?;
+    let before = stats::mean(&still).map_err(stat(Scored::OffsetBefore))?;
+    let after = stats::mean(&settled).map_err(stat(Scored::OffsetAfter))?;
     let steps: Vec<f64> = still
         .windows(2)
         .map(|w| (w[1] - w[0]) / std::f64::consts::SQRT_2)
         .collect();
-    let noise = stats::rms(&steps).map_err(|e| format!("noise: {e}"))?;
+    let noise = stats::rms(&steps).map_err(stat(Scored::Noise))?;
     Ok(vec![mse, t_tr, (before.abs() + after.abs()) / 2.0, noise])
 }
 
@@ -174,7 +184,7 @@ fn transient_time(
     step_at: f64,
     step_deg: f64,
     settle_end: f64,
-) -> Result<f64, String> {
+) -> Result<f64, ScoreError> {
     let band = 0.05 * step_deg;
     let half = 5usize;
     let mut last_out = step_at;
@@ -185,7 +195,7 @@ fn transient_time(
         }
         last_t = *t;
         let window = &angle[k.saturating_sub(half)..(k + half + 1).min(angle.len())];
-        let mean = stats::mean(window).map_err(|e| format!("t_tr: {e}"))?;
+        let mean = stats::mean(window).map_err(stat(Scored::TransientTime))?;
         if (mean - step_deg).abs() >= band {
             last_out = *t;
         }
@@ -198,9 +208,12 @@ fn transient_time(
 }
 
 /// RMS of θ̂ against the zero-phase-smoothed accelerometer angle, and θ̂'s jitter.
-fn score_log(_p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, String> {
+fn score_log(_p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<f64>, ScoreError> {
     let [angle, accel] = columns else {
-        return Err(format!("expected 2 series, got {}", columns.len()));
+        return Err(ScoreError::Columns {
+            expected: 2,
+            got: columns.len(),
+        });
     };
     // Samples where both are known (a log's first step may deliver nothing yet).
     let (mut a, mut r, mut t) = (Vec::new(), Vec::new(), Vec::new());
@@ -212,10 +225,7 @@ fn score_log(_p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<
         }
     }
     if a.len() < 20 {
-        return Err(format!(
-            "only {} samples have both θ̂ and the accelerometer angle",
-            a.len()
-        ));
+        return Err(ScoreError::FewSamples { n: a.len() });
     }
     let dt = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
     let reference = zero_phase_low_pass(&r, dt, 1.0);
@@ -226,9 +236,14 @@ fn score_log(_p: &ParamValues, t_s: &[f64], columns: &[Vec<f64>]) -> Result<Vec<
         .map(|w| (w[2] - 2.0 * w[1] + w[0]) / 6f64.sqrt())
         .collect();
     Ok(vec![
-        stats::rms(&diff).map_err(|e| e.to_string())?,
-        stats::rms(&jitter).map_err(|e| e.to_string())?,
+        stats::rms(&diff).map_err(stat(Scored::Rms))?,
+        stats::rms(&jitter).map_err(stat(Scored::Jitter))?,
     ])
+}
+
+/// A failed statistic of `of` as a scoring error.
+fn stat(of: Scored) -> impl Fn(StatsError) -> ScoreError {
+    move |source| ScoreError::Stat { of, source }
 }
 
 /// A first-order low-pass at `cutoff_hz` run forwards and then backwards (no lag).

@@ -11,6 +11,7 @@ use super::{arg, lab_word, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::analysis::sweep::{Sweep, SweepPoint};
 use attlab::i18n;
+use attlab::i18n::errors::Worded;
 use attlab::model::SweepSpec;
 use egui::{RichText, Ui};
 use egui_plot::{Legend, Line, Plot, Points};
@@ -168,18 +169,15 @@ fn problems(ui: &mut Ui, app: &AppState, s: &Sweep) {
         let at = arg(w.at(spec, p));
         ui.colored_label(error, tr_with(app, "sweep-diverged", &[("at", at)]));
     }
+    let (lang, lab) = (app.view().lang(), app.sim().lab());
     for p in s.points.iter().filter(|p| !p.unscored.is_empty()) {
-        let args = [
-            ("at", arg(w.at(spec, p))),
-            ("why", arg(p.unscored.join("; "))),
-        ];
+        let why: Vec<String> = p.unscored.iter().map(|u| u.words(lang, lab)).collect();
+        let args = [("at", arg(w.at(spec, p))), ("why", arg(why.join("; ")))];
         ui.colored_label(error, tr_with(app, "sweep-unscored", &args));
     }
-    for reason in &s.skipped {
-        ui.colored_label(
-            error,
-            tr_with(app, "sweep-skipped", &[("why", arg(reason))]),
-        );
+    for skipped in &s.skipped {
+        let why = skipped.words(lang, lab);
+        ui.colored_label(error, tr_with(app, "sweep-skipped", &[("why", arg(why))]));
     }
 }
 
