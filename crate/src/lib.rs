@@ -31,6 +31,7 @@ pub mod labs;
 pub mod lessons;
 pub mod math;
 pub mod model;
+pub mod page;
 pub mod record;
 pub mod sensors;
 pub mod sim;

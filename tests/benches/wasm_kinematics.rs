@@ -49,7 +49,7 @@ mod wasm {
     /// motion without that feedback, so its filters see another motion than the page's; they
     /// do the same arithmetic on it).
     fn estimators_and_trace(
-        lab: &'static dyn attlab::model::Lab,
+        lab: &'static dyn attlab::page::Lab,
         params: &ParamValues,
     ) -> (Vec<Box<dyn Estimator>>, Vec<Measurements>) {
         let mut rng = ChaCha8Rng::seed_from_u64(1);
@@ -60,7 +60,7 @@ mod wasm {
 
     /// The same estimators again, as they were before their first step.
     fn estimators_afresh(
-        lab: &'static dyn attlab::model::Lab,
+        lab: &'static dyn attlab::page::Lab,
         params: &ParamValues,
     ) -> Vec<Box<dyn Estimator>> {
         lab.build(params, &mut ChaCha8Rng::seed_from_u64(1))

@@ -3,7 +3,8 @@
 
 use attlab::analysis::scenario::{Trace, run_trace};
 use attlab::labs;
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 use attlab::sim::{Selection, SimOptions, Simulation};
 use std::f64::consts::{PI, TAU};
 

@@ -9,7 +9,8 @@ use crate::state::{
     AppState, Command, Effect, IoCommand, Message, PngTarget, RunCommand, STEP_BUDGET,
     SWEEP_BUDGET, UrlCommand, View, ViewCommand,
 };
-use attlab::model::{Lab, ParamValues, ViewKind};
+use attlab::model::ParamValues;
+use attlab::page::{Lab, ViewKind};
 use web_time::Instant;
 
 /// The app: the state, the widgets' view, and what only the frame loop needs.

@@ -214,7 +214,7 @@ pub enum WorkerError {
 }
 
 impl attlab::i18n::errors::Worded for WorkerError {
-    fn words(&self, lang: attlab::i18n::Lang, lab: &dyn attlab::model::Lab) -> String {
+    fn words(&self, lang: attlab::i18n::Lang, lab: &dyn attlab::page::Lab) -> String {
         use attlab::i18n::t_with;
         let detail =
             |id: &str, detail: &str| t_with(lang, id, &[("detail", detail.to_string().into())]);

@@ -11,7 +11,8 @@ mod error;
 
 pub use error::{FuzzError, Rule};
 
-use crate::model::{Lab, ParamKind, ParamSpec, ParamValues, Scale};
+use crate::model::{ParamKind, ParamSpec, ParamValues, Scale};
+use crate::page::Lab;
 use crate::sim::{SimOptions, Simulation};
 use nalgebra::DMatrix;
 use rand::{Rng, SeedableRng};

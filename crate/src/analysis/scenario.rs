@@ -3,7 +3,8 @@
 //! series is an error, never an empty list or a NaN.
 
 use super::AnalysisError;
-use crate::model::{Lab, ParamValues, SeriesRef};
+use crate::model::{ParamValues, SeriesRef};
+use crate::page::Lab;
 use crate::sim::{SimOptions, Simulation};
 
 /// The lab's defaults with `assignments` (`key=value`) applied; any bad assignment is an

@@ -6,8 +6,9 @@
 
 use super::stats;
 use crate::model::{
-    Lab, ParamValues, ScoreError, SeriesKey, SeriesSpec, SweepScoring, SweepSpec, Unscored,
+    ParamValues, ScoreError, SeriesKey, SeriesSpec, SweepScoring, SweepSpec, Unscored,
 };
+use crate::page::Lab;
 use crate::sensors::RateLog;
 use crate::sim::{SimOptions, Simulation};
 

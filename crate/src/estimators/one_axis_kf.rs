@@ -17,7 +17,7 @@ use super::kf::Innovation;
 use super::kf_cycle::CycleRecorder;
 use crate::model::{
     Covariance, Estimate, Estimator, EstimatorStatus, Extras, KalmanCycle, Measurements,
-    ParamValues, Quantity, StateInfo, StateKind, Trouble, Tuner,
+    ParamValues, Quantity, StateInfo, StateKind, Teaching, Trouble, Tuner,
 };
 use nalgebra::{Matrix1, Matrix1x2, Matrix2, Vector1, Vector2, Vector3};
 
@@ -170,6 +170,12 @@ impl OneAxisKf {
     }
 }
 
+impl Teaching for OneAxisKf {
+    fn cycle(&self) -> &KalmanCycle {
+        self.cycle.cycle()
+    }
+}
+
 impl Estimator for OneAxisKf {
     fn id(&self) -> &'static str {
         match self.model {
@@ -225,8 +231,8 @@ impl Estimator for OneAxisKf {
         &self.status
     }
 
-    fn cycle(&self) -> Option<&KalmanCycle> {
-        Some(self.cycle.cycle())
+    fn teaching(&self) -> Option<&dyn Teaching> {
+        Some(self)
     }
 
     fn apply_params(&mut self, p: &ParamValues) {

@@ -18,7 +18,7 @@ use super::kf::{KalmanState, LinearObservation};
 use super::kf_cycle::CycleRecorder;
 use crate::model::{
     Covariance, Estimate, Estimator, EstimatorStatus, Extras, KalmanCycle, Measurements,
-    ParamValues, Quantity, StateInfo, StateKind, Tuner,
+    ParamValues, Quantity, StateInfo, StateKind, Teaching, Tuner,
 };
 use nalgebra::{SMatrix, SVector, Vector3};
 
@@ -180,6 +180,12 @@ impl<const N: usize> RollKf<N> {
     }
 }
 
+impl<const N: usize> Teaching for RollKf<N> {
+    fn cycle(&self) -> &KalmanCycle {
+        self.cycle.cycle()
+    }
+}
+
 impl<const N: usize> Estimator for RollKf<N> {
     fn id(&self) -> &'static str {
         self.id
@@ -259,8 +265,8 @@ impl<const N: usize> Estimator for RollKf<N> {
         if N == 3 { STATES_3 } else { STATES_2 }
     }
 
-    fn cycle(&self) -> Option<&KalmanCycle> {
-        Some(self.cycle.cycle())
+    fn teaching(&self) -> Option<&dyn Teaching> {
+        Some(self)
     }
 
     fn covariance(&self) -> Option<Covariance<'_>> {

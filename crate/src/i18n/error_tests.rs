@@ -8,7 +8,7 @@ use crate::model::{ScoreError, StatsError, Unscored};
 use crate::sim::SimError;
 
 /// Each example, by its English `Display`, with its words in both languages.
-fn said(examples: Vec<(String, &dyn Worded)>) -> Vec<(String, String, String)> {
+pub(crate) fn said(examples: Vec<(String, &dyn Worded)>) -> Vec<(String, String, String)> {
     let lab = crate::labs::find("p4").expect("registered");
     examples
         .into_iter()
@@ -17,7 +17,7 @@ fn said(examples: Vec<(String, &dyn Worded)>) -> Vec<(String, String, String)> {
 }
 
 /// What is wrong with one error's words, if anything.
-fn problem(english: &str, en: &str, ru: &str) -> Option<String> {
+pub(crate) fn problem(english: &str, en: &str, ru: &str) -> Option<String> {
     let unfilled = |s: &str| s.contains('{') || s.contains('$') || s.contains("error-");
     let cyrillic = ru
         .chars()
@@ -48,7 +48,6 @@ fn every_error_a_page_reader_meets_is_said_in_both_languages() {
             why: why.clone(),
         })
         .collect();
-    let lessons = crate::lessons::LessonError::examples();
     let mut all: Vec<(String, &dyn Worded)> = Vec::new();
     all.extend(sims.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(scores.iter().map(|e| (e.to_string(), e as &dyn Worded)));
@@ -56,8 +55,7 @@ fn every_error_a_page_reader_meets_is_said_in_both_languages() {
     all.extend(stats.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(sweeps.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(skipped.iter().map(|e| (e.to_string(), e as &dyn Worded)));
-    all.extend(lessons.iter().map(|e| (e.to_string(), e as &dyn Worded)));
-    assert!(all.len() >= 30, "only {} examples", all.len());
+    assert!(all.len() >= 27, "only {} examples", all.len());
     let problems: Vec<String> = said(all)
         .iter()
         .filter_map(|(english, en, ru)| problem(english, en, ru))

@@ -6,7 +6,8 @@
 
 use super::{FluentValue, Lang};
 use crate::analysis::sweep::{Skipped, SweepError};
-use crate::model::{Lab, ParamError, ParamKind, ParamSpec, ScoreError, StatsError, Unscored};
+use crate::model::{ParamError, ParamKind, ParamSpec, ScoreError, StatsError, Unscored};
+use crate::page::Lab;
 use crate::sim::{SimError, UnknownSeries};
 
 /// An error said in the reader's language.

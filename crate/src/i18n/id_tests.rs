@@ -3,7 +3,8 @@
 //! put in another order keeps each translation on its own item.
 
 use super::*;
-use crate::model::{Lab, LabRun, LabSpec, Lesson, Page, ParamValues};
+use crate::model::{LabRun, LabSpec, ParamValues};
+use crate::page::{Lab, Lesson, Page};
 use rand_chacha::ChaCha8Rng;
 use std::collections::{BTreeMap, HashSet};
 
@@ -96,7 +97,7 @@ impl Lab for Reversed {
     fn study(&self) -> Option<&dyn crate::model::Study> {
         self.0.study()
     }
-    fn accuracy_table(&self) -> Option<crate::model::AccuracyTable> {
+    fn accuracy_table(&self) -> Option<crate::page::AccuracyTable> {
         self.0.accuracy_table()
     }
     fn lesson(&self) -> Option<&'static Lesson> {

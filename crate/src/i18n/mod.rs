@@ -235,7 +235,7 @@ pub fn log_format_id(lab_id: &str, part: &str) -> String {
 /// title, summary, parameters (label, options, help), presets (name, help), plot tabs,
 /// outages, sweeps (title, help, scores, objectives), log format, and (see
 /// [`lab_series_words`]) its estimators' names and its series' quantities.
-pub fn lab_words(lab: &'static dyn crate::model::Lab) -> Vec<(String, &'static str)> {
+pub fn lab_words(lab: &'static dyn crate::page::Lab) -> Vec<(String, &'static str)> {
     let id = lab.id();
     let mut out = vec![
         (lab_title_id(id), lab.title()),
@@ -298,7 +298,7 @@ pub fn lesson_id(lab_id: &str, step: Option<&str>, part: &str) -> String {
 }
 
 /// A lesson's words: its title, each step's title and text, and each question's words.
-fn lesson_words(lab_id: &str, lesson: &crate::model::Lesson) -> Vec<(String, &'static str)> {
+fn lesson_words(lab_id: &str, lesson: &crate::page::Lesson) -> Vec<(String, &'static str)> {
     let mut out = vec![(lesson_id(lab_id, None, "title"), lesson.title)];
     for step in lesson.steps {
         let n = Some(step.id);
@@ -330,7 +330,7 @@ fn param_words(lab_id: &str, spec: &crate::model::ParamSpec) -> Vec<(String, &'s
 }
 
 /// A lab's default parameters.
-fn defaults(lab: &dyn crate::model::Lab) -> crate::model::ParamValues {
+fn defaults(lab: &dyn crate::page::Lab) -> crate::model::ParamValues {
     crate::model::ParamValues::defaults(lab.params())
 }
 

@@ -42,7 +42,7 @@ pub fn list_separator(lang: Lang) -> &'static str {
 /// assert_eq!(diagram_detail(Lang::En, &detail), "Δt = 1 s, ε = 0.1");
 /// assert_eq!(diagram_detail(Lang::Ru, &detail), "Δt = 1 с; ε = 0,1");
 /// ```
-pub fn diagram_detail(lang: Lang, detail: &[crate::model::DiagramSetting]) -> String {
+pub fn diagram_detail(lang: Lang, detail: &[crate::page::DiagramSetting]) -> String {
     let parts: Vec<String> = (detail.iter())
         .map(|(symbol, value, unit)| {
             let value = number(lang, &value.to_string());

@@ -8,9 +8,8 @@
 //! of every lab does), so a translation can never name a different thing than the English.
 
 use super::{Lang, has, lab_text, t, t_with};
-use crate::model::{
-    Lab, Measure, ParamValues, SENSORS, SeriesSpec, StateInfo, StateKind, TIME, TRUTH,
-};
+use crate::model::{Measure, ParamValues, SENSORS, SeriesSpec, StateInfo, StateKind, TIME, TRUTH};
+use crate::page::Lab;
 use crate::sim::Simulation;
 
 /// The id of an estimator's name in the catalogue.

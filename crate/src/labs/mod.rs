@@ -16,7 +16,8 @@ pub use p3_wz_sphere::WzSphere;
 pub use p4_quadrotor::QuadrotorRoll;
 pub use p5_sensitivity::SensitivityLab;
 
-use crate::model::{Lab, LogFormat, LogRefusal, OtherFormat};
+use crate::model::{LogFormat, LogRefusal, OtherFormat};
+use crate::page::Lab;
 
 /// Every lab, in menu order.
 pub fn all() -> &'static [&'static dyn Lab] {

@@ -1,10 +1,11 @@
 //! Lessons as the page and the tests use them: the parameters a step sets (the lab's
 //! defaults, then its preset, then its own values) and a check that every step names only
 //! what its lab has. The steps themselves are data in each lab's folder (`lesson.rs`,
-//! [`crate::model::Lesson`]).
+//! [`crate::page::Lesson`]).
 
 use crate::i18n::errors::Worded;
-use crate::model::{Lab, Lesson, LessonStep, ParamError, ParamValues, PlotTab, SeriesGroup};
+use crate::model::{ParamError, ParamValues, PlotTab, SeriesGroup};
+use crate::page::{Lab, Lesson, LessonStep};
 use crate::sim::Simulation;
 
 #[cfg(feature = "study")]
@@ -231,7 +232,7 @@ fn step_problems(lab: &'static dyn Lab, step: &LessonStep) -> Vec<String> {
         }
     }
     if let Some(speed) = step.speed {
-        let (lo, hi) = crate::sim::SPEED_RANGE;
+        let (lo, hi) = crate::page::SPEED_RANGE;
         if !(lo..=hi).contains(&speed) {
             out.push(format!("speed {speed} outside {lo}–{hi}"));
         }
@@ -264,6 +265,21 @@ fn tab_problem(lab: &dyn Lab, sim: &Simulation, tab: Option<PlotTab>) -> Option<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_lesson_error_is_said_in_both_languages() {
+        use crate::i18n::Lang;
+        let lab = crate::labs::find("p4").expect("registered");
+        for e in LessonError::examples() {
+            let (en, ru) = (e.words(Lang::En, lab), e.words(Lang::Ru, lab));
+            assert!(!en.contains('{') && !en.contains("error-"), "{e}: {en}");
+            assert!(
+                !ru.contains('{') && !ru.contains("error-") && ru != en,
+                "{e}: {ru}"
+            );
+            assert!(ru.chars().any(|c| ('а'..='я').contains(&c)), "{e}: {ru}");
+        }
+    }
 
     #[test]
     fn every_lab_has_a_lesson_whose_steps_name_only_what_the_lab_has() {

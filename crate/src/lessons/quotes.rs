@@ -11,9 +11,8 @@ pub use error::QuoteError;
 
 use crate::analysis::scenario::run_trace_with;
 use crate::i18n::{self, Lang};
-use crate::model::{
-    Holds, Lab, LessonStep, ParamValues, Quote, QuoteSource, Reading, ReadingError, SeriesKey, q,
-};
+use crate::model::{ParamValues, ReadingError, SeriesKey, q};
+use crate::page::{Holds, Lab, LessonStep, Quote, QuoteSource, Reading};
 
 /// The seed a lesson step opens with (the page's, unless its link names another).
 pub const SEED: u64 = 1;

@@ -75,3 +75,10 @@ impl KalmanCycle {
         self.states.len().min(CYCLE_STATES)
     }
 }
+
+/// What a filter small enough to teach with shows of itself, beyond the estimate every
+/// estimator publishes: an optional part of an estimator ([`super::Estimator::teaching`]).
+pub trait Teaching {
+    /// The last predict/update cycle as numbers.
+    fn cycle(&self) -> &KalmanCycle;
+}

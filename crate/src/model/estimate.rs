@@ -1,6 +1,6 @@
 //! What sensors deliver and what estimators publish.
 
-use super::cycle::KalmanCycle;
+use super::cycle::Teaching;
 use super::data::LabData;
 use super::params::ParamValues;
 use super::quantity::{Quantity, StateInfo, StateKind};
@@ -269,9 +269,9 @@ pub trait Estimator: Send {
     }
     /// Writes the internals of [`Estimator::extra_quantities`] into `out` (same length).
     fn extras(&self, _out: &mut Extras<'_>) {}
-    /// The last predict/update cycle as numbers, for a filter small enough to show one
-    /// (the page's step-through panel).
-    fn cycle(&self) -> Option<&KalmanCycle> {
+    /// What the filter shows of its own working, if it is small enough to teach with (the
+    /// page's step-through panel): none by default.
+    fn teaching(&self) -> Option<&dyn Teaching> {
         None
     }
 }

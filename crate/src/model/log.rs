@@ -283,7 +283,7 @@ impl RateLog {
 /// A kind of recorded log a lab reads: what it is, the unit choices of its columns (choice
 /// parameters, named as the CLI's `--<name>` flags: `rate_unit` is `--rate-unit`), and its
 /// parser. Formats live beside their parsers (`sensors/`); a lab names the one it reads in
-/// [`super::Page::log_format`].
+/// `page::Page::log_format`.
 #[derive(Clone, Copy, Debug)]
 pub struct LogFormat {
     /// Stable id.

@@ -267,7 +267,7 @@ impl SeriesSpec {
 /// A plot tab of the page: one of the lab's figures, or every series of a group.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PlotTab {
-    /// The lab's figure with this id ([`super::Figure::id`]).
+    /// The lab's figure with this id (`page::Figure::id`).
     Figure(&'static str),
     /// All series of a group.
     Group(SeriesGroup),

@@ -2,7 +2,8 @@
 //! over the last window, its own √max diag P, and the paper's value beside them.
 
 use crate::math::small_angle_error_body;
-use crate::model::{AccuracyTable, Estimate, Estimator, StateKind, TruthState};
+use crate::model::{Estimate, Estimator, StateKind, TruthState};
+use crate::page::AccuracyTable;
 use std::collections::VecDeque;
 
 /// One estimator's row.

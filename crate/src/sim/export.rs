@@ -3,7 +3,8 @@
 
 use super::rerun::{RerunError, RerunItem};
 use super::{CsvSink, Selection, SimError, SimOptions, Simulation, csv_cell};
-use crate::model::{Lab, ParamValues};
+use crate::model::ParamValues;
+use crate::page::Lab;
 
 impl Simulation {
     /// Writes every sample of every series of the run so far as CSV (see

@@ -30,15 +30,11 @@ pub use layout::Layout;
 pub use rerun::{RerunError, RerunItem, RerunJob};
 pub use selection::{Selection, UnknownSeries};
 
-/// Speeds the page offers (simulated seconds per wall-clock second): up to an orbit of
-/// paper 2 (5 800 s) a second; where the steps do not fit the frame, the page says it is
-/// behind.
-pub const SPEED_RANGE: (f64, f64) = (0.1, 10_000.0);
-
 use crate::model::{
-    Estimate, EstimatorStatus, Lab, LabRun, ParamError, ParamValues, PlotTab, SceneExtras,
-    SeriesGroup, SeriesKey, SeriesSpec, TruthState,
+    Estimate, EstimatorStatus, LabRun, ParamError, ParamValues, SceneExtras, SeriesKey, SeriesSpec,
+    TruthState,
 };
+use crate::page::Lab;
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
 use health::Health;
 use journal::Journal;
@@ -68,7 +64,11 @@ impl SimOptions {
     /// What the page records for its first tab (the lab's first figure, or the errors).
     pub fn page(lab: &dyn Lab, available: &[SeriesSpec]) -> Self {
         Self {
-            selection: Selection::for_tab(lab, available, default_tab(lab)),
+            selection: Selection::View(crate::page::tab_series(
+                lab,
+                available,
+                crate::page::default_tab(lab),
+            )),
             budget_bytes: DEFAULT_BUDGET_BYTES,
         }
     }
@@ -82,26 +82,12 @@ impl SimOptions {
     }
 }
 
-/// The tab a lab opens on: its first figure, or the errors when it has none.
-pub fn default_tab(lab: &dyn Lab) -> PlotTab {
-    lab.page()
-        .figures
-        .first()
-        .map_or(PlotTab::Group(SeriesGroup::Error), |f| {
-            PlotTab::Figure(f.id)
-        })
-}
-
 /// The column layout of `run` for `options.selection` (with the series `lab`'s figures
 /// draw, and the sphere's where the lab has one).
 fn layout_of(lab: &dyn Lab, run: &LabRun, options: &SimOptions) -> Result<Layout, UnknownSeries> {
     // The standard selection keeps what the figures draw and what the plots shade (the
     // lab's outages, a replay's gaps).
-    let shaded = lab
-        .page()
-        .outages
-        .iter()
-        .chain([&crate::model::REPLAY_GAPS]);
+    let shaded = lab.page().outages.iter().chain([&crate::page::REPLAY_GAPS]);
     let figure_series: Vec<SeriesKey> = lab
         .page()
         .figures

@@ -3,9 +3,10 @@
 
 use super::{SimError, SimOptions, Simulation, layout_of};
 use crate::model::{
-    Extras, LOGGED_SAMPLE, Lab, LabData, Measurements, ParamValues, Quantity, SensorModel,
-    SeriesGroup, SeriesKey, SeriesSpec, TruthModel, TruthState,
+    Extras, LabData, Measurements, ParamValues, Quantity, SensorModel, SeriesGroup, SeriesKey,
+    SeriesSpec, TruthModel, TruthState,
 };
+use crate::page::{LOGGED_SAMPLE, Lab};
 use crate::sensors::RateLog;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use rand::SeedableRng;

@@ -4,7 +4,7 @@
 
 use super::{ALL_CONTROLS, LessonLink, LinkFault, UrlState, UrlStateError};
 use crate::labs;
-use crate::model::Lab;
+use crate::page::Lab;
 
 /// Ids of the labs that have a lesson (for error messages).
 fn lesson_ids() -> String {

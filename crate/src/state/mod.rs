@@ -7,7 +7,8 @@
 
 use crate::i18n::Lang;
 use crate::labs;
-use crate::model::{Lab, ParamError, ParamValues};
+use crate::model::{ParamError, ParamValues};
+use crate::page::Lab;
 use thiserror::Error;
 
 mod fault;
@@ -97,7 +98,7 @@ impl Theme {
     }
 }
 
-pub use crate::sim::SPEED_RANGE;
+pub use crate::page::SPEED_RANGE;
 
 /// One bad item in a URL fragment.
 #[derive(Clone, Debug, Error, PartialEq)]

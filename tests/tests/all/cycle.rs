@@ -103,7 +103,9 @@ fn every_cycle_a_filter_shows_is_its_own_state_and_obeys_its_equations() {
         for step in 0..3000 {
             sim.step();
             for e in sim.estimators() {
-                let Some(cycle) = e.cycle() else { continue };
+                let Some(cycle) = e.teaching().map(|t| t.cycle()) else {
+                    continue;
+                };
                 let est = e.estimate();
                 let x = [
                     est.angle_rad.unwrap(),

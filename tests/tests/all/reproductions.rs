@@ -7,7 +7,8 @@
 
 use attlab::analysis::readme;
 use attlab::labs;
-use attlab::model::{Lab, Outcome, Row};
+use attlab::model::{Outcome, Row};
+use attlab::page::Lab;
 
 /// What is wrong with `lab`'s reproduction or its chapter's table, if anything.
 fn reproduction_problem(lab: &dyn Lab) -> Option<String> {

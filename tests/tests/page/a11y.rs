@@ -11,7 +11,8 @@
 //! about 90 s, 41 Tabs).
 
 use super::*;
-use attlab::model::{Lab, ParamKind};
+use attlab::model::ParamKind;
+use attlab::page::Lab;
 
 /// The slider the walk moves, and what it expects of it.
 const WALK_LAB: &str = "p5";
@@ -257,7 +258,7 @@ fn diagram_index() -> usize {
             let views = &lab.page().views;
             views
                 .iter()
-                .position(|v| *v == attlab::model::ViewKind::WPlane)
+                .position(|v| *v == attlab::page::ViewKind::WPlane)
         })
         .unwrap_or(usize::MAX)
 }

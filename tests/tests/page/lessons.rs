@@ -9,7 +9,7 @@ use super::*;
 const PAUSE_TIMEOUT: Duration = Duration::from_secs(90);
 
 /// The link of step `n` of `lab`'s lesson with the answer the run shows chosen.
-fn link(base: &str, lab: &dyn attlab::model::Lab, n: usize) -> String {
+fn link(base: &str, lab: &dyn attlab::page::Lab, n: usize) -> String {
     let answer = lab
         .lesson()
         .and_then(|l| l.step(n))

@@ -9,7 +9,7 @@ use crate::render::palette::{self, Palette};
 use crate::render::{body3d, plots, riemann_sphere, scene, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
 use attlab::math::WzChart;
-use attlab::model::ViewKind;
+use attlab::page::ViewKind;
 use egui::{Pos2, Rect, Ui, Vec2};
 use std::cell::OnceCell;
 

@@ -6,7 +6,8 @@
 use super::{arg, estimator_name, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand, ViewCommand};
 use attlab::i18n::Lang;
-use attlab::model::{CycleTerm, KalmanCycle, StateMatrix};
+use attlab::model::{KalmanCycle, StateMatrix};
+use attlab::page::CycleTerm;
 use egui::{RichText, Ui};
 
 /// The panel, while it is open and the run has a filter that keeps its cycle.
@@ -61,7 +62,7 @@ pub fn shown_filter(app: &AppState) -> Option<(usize, &KalmanCycle)> {
         .iter()
         .enumerate()
         .filter(|(i, _)| !app.view().hidden.contains(&(i + 1)))
-        .find_map(|(i, e)| Some((i, e.cycle()?)))
+        .find_map(|(i, e)| Some((i, e.teaching()?.cycle())))
 }
 
 /// A number as the panel prints it: four significant digits, in the reader's language

@@ -36,7 +36,7 @@ fn lab_list(app: &AppState) -> egui::ComboBox<'static> {
 }
 
 /// A lab's title in the reader's language.
-fn lab_title(app: &AppState, lab: &dyn attlab::model::Lab) -> String {
+fn lab_title(app: &AppState, lab: &dyn attlab::page::Lab) -> String {
     i18n::lab_text(
         app.view().lang(),
         &i18n::lab_title_id(lab.id()),

@@ -128,7 +128,7 @@ fn table_tabs(ui: &mut Ui, app: &AppState, rows: &[AccuracyRow]) -> Option<u8> {
 
 /// One of the lab's diagrams (e.g. the eigenvalues of a linearised update on the unit
 /// circle), filling `ui`, with its title above; a point of an estimator in its colour.
-pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
+pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::page::Diagram) {
     let colours = crate::render::palette::of(ui.visuals());
     ui.label(egui::RichText::new(diagram_heading(app, d)).small());
     // The legend goes below the diagram, so it covers no point.
@@ -190,7 +190,7 @@ pub fn diagram(ui: &mut Ui, app: &AppState, d: &attlab::model::Diagram) {
 
 /// A diagram's title in the reader's language, with its detail in the paper's notation (its
 /// numbers and units in the reader's words: "Δt = 1 с; ε = 0,1").
-pub fn diagram_heading(app: &AppState, d: &attlab::model::Diagram) -> String {
+pub fn diagram_heading(app: &AppState, d: &attlab::page::Diagram) -> String {
     let title = lab_word(app, &i18n::diagram_id(app.sim().lab().id(), d.id), d.title);
     if d.detail.is_empty() {
         title

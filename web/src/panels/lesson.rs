@@ -5,7 +5,7 @@
 use super::{arg, lab_word, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, LessonCommand, ShareCommand, ViewCommand};
 use attlab::i18n::lesson_id;
-use attlab::model::{Lesson, Question};
+use attlab::page::{Lesson, Question};
 use egui::{RichText, Ui};
 
 /// The lesson's word `part` of step number `n` (or of the lesson, `n` = `None`), by the
@@ -180,7 +180,11 @@ fn tools(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         } else {
             RichText::new(tr(app, "cycle-open"))
         };
-        if app.sim().estimators().iter().any(|e| e.cycle().is_some())
+        if app
+            .sim()
+            .estimators()
+            .iter()
+            .any(|e| e.teaching().is_some())
             && ui.small_button(label).clicked()
         {
             commands.push(ViewCommand::SetCycle(!app.view().cycle_open).into());

@@ -207,10 +207,10 @@ pub fn body_captions(app: &AppState, ghost: Option<&str>) -> Vec<String> {
 }
 
 /// The outages the plots shade: the lab's, and a replay's steps without a logged sample.
-pub fn outages(app: &AppState) -> Vec<attlab::model::Outage> {
+pub fn outages(app: &AppState) -> Vec<attlab::page::Outage> {
     let mut all = app.sim().lab().page().outages.to_vec();
     if app.sim().replay_log().is_some() {
-        all.push(attlab::model::REPLAY_GAPS);
+        all.push(attlab::page::REPLAY_GAPS);
     }
     all
 }
@@ -389,7 +389,7 @@ mod tests {
                 let names: Vec<String> = (0..app.sim().estimators().len())
                     .map(|i| estimator_name(&app, i))
                     .collect();
-                let dial = lab.page().views.contains(&attlab::model::ViewKind::Dial);
+                let dial = lab.page().views.contains(&attlab::page::ViewKind::Dial);
                 let dial = dial.then_some(crate::render::single_axis::DIAL_NAME);
                 for max in std::iter::once(SHORT_NAME).chain(dial) {
                     let cuts = distinct_cuts(&names, max);

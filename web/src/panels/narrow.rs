@@ -4,7 +4,7 @@
 
 use super::{controls, tr};
 use crate::state::{AppState, Command, ViewCommand};
-use attlab::model::ViewKind;
+use attlab::page::ViewKind;
 use egui::Ui;
 
 /// Below this width in CSS pixels the page stacks (a phone is 360–430 px wide).

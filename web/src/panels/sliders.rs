@@ -6,7 +6,7 @@ use super::param_widget::param_widget;
 use super::{arg, num_arg, tr, tr_with};
 use crate::state::{AppState, Command, RunCommand};
 use attlab::i18n;
-use attlab::model::ParamNote;
+use attlab::page::ParamNote;
 use egui::{RichText, Ui};
 
 /// The lab's sliders (only `only`'s when given) less those the link hides; those it locks

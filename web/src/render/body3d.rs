@@ -6,7 +6,8 @@ use super::mesh::{
     Triangle, Vertex, body_mesh, hex_prism_mesh, place, rod, sorted_vertices, string_mesh,
 };
 use super::scene::Scene;
-use attlab::model::BodyShape;
+use attlab::model::Direction;
+use attlab::page::BodyShape;
 use eframe::egui_wgpu::{self, wgpu};
 use egui::{Color32, Pos2, Rect, Sense, Ui};
 use nalgebra::{Matrix4, Point3, UnitQuaternion, Vector3};
@@ -332,7 +333,7 @@ fn scene_triangles<'a>(scene: &'a Scene<'a>, eye: &Point3<f64>) -> (Vec<Placed>,
     let mut rods = Vec::new();
     for (k, v) in scene.vectors.iter().enumerate() {
         let tip = truth_at + v.dir_ref * 1.5;
-        let [r, g, b] = v.rgb;
+        let [r, g, b] = direction_rgb(v.kind);
         let color = [
             f32::from(r) / 255.0,
             f32::from(g) / 255.0,
@@ -403,4 +404,13 @@ fn to_screen(vp: &Matrix4<f64>, rect: Rect, p: &Vector3<f64>) -> Option<Pos2> {
         rect.left() + ((x + 1.0) / 2.0) as f32 * rect.width(),
         rect.top() + ((1.0 - y) / 2.0) as f32 * rect.height(),
     ))
+}
+
+/// A reference direction's colour (sRGB): the Sun yellow, the field blue, the nadir green.
+fn direction_rgb(kind: Direction) -> [u8; 3] {
+    match kind {
+        Direction::Sun => [255, 210, 60],
+        Direction::MagneticField => [90, 200, 255],
+        Direction::Nadir => [120, 220, 120],
+    }
 }

@@ -11,7 +11,7 @@ use super::outages;
 use super::palette;
 use super::plot_state::{PlotState, PlotWords};
 use attlab::i18n::LegendParts;
-use attlab::model::Outage;
+use attlab::page::Outage;
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
 use egui_plot::{LineStyle, MarkerShape};

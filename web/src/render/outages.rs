@@ -4,7 +4,7 @@
 //! drawn straight over the lines (paper 2's "star tracker out" over the dashed ST+Gyro).
 
 use super::palette::Palette;
-use attlab::model::Outage;
+use attlab::page::Outage;
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
 use egui_plot::{PlotTransform, PlotUi, Span};

@@ -2,7 +2,8 @@
 //! draws in the reader's language — what both the plot and its legend read.
 
 use attlab::i18n::LegendParts;
-use attlab::model::{Lab, SeriesGroup, SeriesSpec};
+use attlab::model::{SeriesGroup, SeriesSpec};
+use attlab::page::Lab;
 
 pub use attlab::model::PlotTab as Tab;
 
@@ -23,7 +24,7 @@ impl PlotState {
     /// A lab with figures opens on its first figure, others on the error plot.
     pub fn for_lab(lab: &dyn Lab) -> Self {
         Self {
-            tab: attlab::sim::default_tab(lab),
+            tab: attlab::page::default_tab(lab),
             log_covariance: true,
             show_bands: true,
             show_outages: true,

@@ -5,7 +5,8 @@
 use super::outages;
 use super::palette::{self, Palette};
 pub use super::plot_state::{PlotState, PlotWords, Tab};
-use attlab::model::{Figure, Outage, SeriesGroup, SeriesSpec};
+use attlab::model::{SeriesGroup, SeriesSpec};
+use attlab::page::{Figure, Outage};
 use attlab::record::Recorder;
 use egui::{Color32, Ui};
 use egui_plot::Plot;

@@ -2,7 +2,8 @@
 //! orbit, its words — and where the page puts a view's PNG button, which the view's
 //! captions and the orbit inset keep clear of.
 
-use attlab::model::{BodyShape, OrbitPicture, SceneVector};
+use attlab::model::{OrbitPicture, SceneVector};
+use attlab::page::BodyShape;
 use egui::Rect;
 use nalgebra::{UnitQuaternion, Vector3};
 

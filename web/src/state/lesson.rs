@@ -1,12 +1,13 @@
 //! The lesson part: which step of the lab's lesson is open, the answers chosen, and what a
-//! step does to the run and the view. A step is absolute (see [`attlab::model::Lesson`]):
+//! step does to the run and the view. A step is absolute (see [`attlab::page::Lesson`]):
 //! entering one restarts the run from t = 0 with the step's parameters, shows its tab and
 //! filters at its speed, and pauses where it says, so every student sees the same picture.
 //! A question step waits for an answer before it runs; the answer stays (in the link too).
 
 use super::{AppState, run::simulation};
-use attlab::model::{LessonStep, ParamValues, SeriesKey};
-use attlab::sim::default_tab;
+use attlab::model::{ParamValues, SeriesKey};
+use attlab::page::LessonStep;
+use attlab::page::default_tab;
 use attlab::state::LessonLink;
 
 /// The lesson under way.

@@ -3,7 +3,8 @@
 //! list of the lab's forty internal names.
 
 use attlab::i18n::{self, FluentValue, Lang};
-use attlab::model::{Lab, ParamError, ParamSpec, ParamValues};
+use attlab::model::{ParamError, ParamSpec, ParamValues};
+use attlab::page::Lab;
 use attlab::state::UrlStateError;
 
 /// What a link's bad item says on the page, in `lang`.

@@ -36,7 +36,8 @@ pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};
 
 use crate::render::{body3d, riemann_sphere, single_axis};
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 use attlab::sim::Simulation;
 use attlab::state::UrlState;
 

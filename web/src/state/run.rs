@@ -5,8 +5,10 @@
 use super::slicer::Slicer;
 use super::{AppState, ViewState, jobs::Job};
 use attlab::analysis::sweep::Sweep;
-use attlab::model::{Lab, ParamValues, PlotTab, SeriesKey};
-use attlab::sim::{Simulation, default_tab};
+use attlab::model::{ParamValues, PlotTab, SeriesKey};
+use attlab::page::Lab;
+use attlab::page::default_tab;
+use attlab::sim::Simulation;
 use web_time::{Duration, Instant};
 
 /// Time the simulation may take per frame before it falls behind real time.

@@ -5,7 +5,8 @@
 use super::AppState;
 use crate::render::plots::PlotState;
 use attlab::i18n::Lang;
-use attlab::model::{Lab, PlotTab, SeriesKey};
+use attlab::model::{PlotTab, SeriesKey};
+use attlab::page::Lab;
 use attlab::sim::{Selection, Simulation};
 use attlab::state::Theme;
 
@@ -208,14 +209,10 @@ impl AppState {
     }
 }
 
-/// What the page records while `tab` is shown (see [`Selection::for_tab`]), and the lesson
-/// step's `tiles`.
+/// What the page records while `tab` is shown ([`attlab::page::tab_series`]), and the
+/// lesson step's `tiles`.
 pub fn view_selection(sim: &Simulation, tab: PlotTab, tiles: &[SeriesKey]) -> Selection {
-    match Selection::for_tab(sim.lab(), sim.available_specs(), tab) {
-        Selection::View(mut names) => {
-            names.extend(tiles.iter().map(SeriesKey::name));
-            Selection::View(names)
-        }
-        other => other,
-    }
+    let mut names = attlab::page::tab_series(sim.lab(), sim.available_specs(), tab);
+    names.extend(tiles.iter().map(SeriesKey::name));
+    Selection::View(names)
 }

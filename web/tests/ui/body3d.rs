@@ -3,7 +3,8 @@
 //! at the view's edge and none hides another or is hidden by the inset.
 
 use attlab::i18n::{self, FluentValue, Lang};
-use attlab::model::{BodyShape, OrbitPicture};
+use attlab::model::OrbitPicture;
+use attlab::page::BodyShape;
 use attlab_web::render::body3d::{self, OrbitCamera};
 use attlab_web::render::scene::{self, Scene, SceneWords};
 use egui::epaint::Shape;

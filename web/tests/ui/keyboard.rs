@@ -187,6 +187,6 @@ fn keyboard_shortcuts_pause_step_switch_tabs_and_focus_one_view() {
     // p4 turns about one axis: its views are the 3D body, the dial and the phase portrait.
     assert_eq!(
         h.state().state.sim().lab().page().views,
-        attlab::model::SINGLE_AXIS_VIEWS
+        attlab::page::SINGLE_AXIS_VIEWS
     );
 }

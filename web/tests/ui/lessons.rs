@@ -2,8 +2,8 @@
 //! filter's cycle panel against the filter's own state.
 
 use super::*;
-use attlab::model::{Lab, LessonStep};
-use attlab::sim::default_tab;
+use attlab::page::default_tab;
+use attlab::page::{Lab, LessonStep};
 use attlab::state::{ALL_CONTROLS, UrlState};
 use attlab_web::state::{AppState, Command, LessonCommand, ShareCommand, ViewCommand, qr};
 
@@ -252,7 +252,11 @@ fn the_cycle_panel_prints_the_filters_own_state_at_this_sample() {
     let x_shown = if n == 2 {
         x_text
     } else {
-        attlab_web::panels::cycle_vector(lang, &[x[0], x[1], filter.cycle().unwrap().x_after[2]], 3)
+        attlab_web::panels::cycle_vector(
+            lang,
+            &[x[0], x[1], filter.teaching().unwrap().cycle().x_after[2]],
+            3,
+        )
     };
     assert!(
         h.query_by_label(&x_shown).is_some(),

@@ -349,7 +349,7 @@ fn every_labs_legend_shows_human_labels_with_units() {
             h.state_mut().apply(RunCommand::StepOnce.into());
         }
         h.run();
-        let tab = attlab::sim::default_tab(*lab);
+        let tab = attlab::page::default_tab(*lab);
         let sim = &h.state().state.sim();
         let shown: Vec<&attlab::model::SeriesSpec> = match tab {
             attlab::model::PlotTab::Figure(id) => (lab.page().figure(id))

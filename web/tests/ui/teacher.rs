@@ -4,7 +4,8 @@
 //! clicker sends walk the steps; steps and labs are history entries.
 
 use super::*;
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 use attlab_web::state::{AppState, Command, LessonCommand, ShareCommand, UrlCommand, ViewCommand};
 use egui::{Key, Modifiers};
 

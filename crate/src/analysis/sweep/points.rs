@@ -87,7 +87,7 @@ impl Sweep {
 
 /// A sweep before its first run, from which each point's own sweep is made.
 pub(super) struct Template {
-    lab: &'static dyn crate::model::Lab,
+    lab: &'static dyn crate::page::Lab,
     spec: crate::model::SweepSpec,
     base: ParamValues,
     seed: u64,
@@ -130,7 +130,7 @@ impl From<Sweep> for PointDone {
 /// Runs `job` (in a worker) on `lab`, the lab it names (the caller looks it up in the
 /// registry): its sweep from its base, to the end of its point.
 pub fn run_point_job(
-    lab: &'static dyn crate::model::Lab,
+    lab: &'static dyn crate::page::Lab,
     job: &PointJob,
 ) -> Result<PointDone, super::SweepError> {
     if lab.id() != job.lab {

@@ -4,7 +4,8 @@
 use super::run::all_series;
 use attlab::analysis::sweep::Sweep;
 use attlab::labs;
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 use attlab::sim::{SimOptions, Simulation};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

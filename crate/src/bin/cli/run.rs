@@ -3,7 +3,8 @@
 
 use super::find_lab;
 use attlab::i18n::{self, FluentValue, Lang};
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 use attlab::sim::{CsvSink, Selection, SimOptions, Simulation, csv_cell};
 use std::path::Path;
 

@@ -1,12 +1,11 @@
 //! The lesson of the foundation lab: Euler's equations of a free body, then what integrating a
 //! gyro can and cannot do (bias → drift, noise → random walk). Steps are data (see
-//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
+//! crate::page::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::truth::{ENERGY_J, MOMENTUM_N_M_S};
 use crate::estimators::ATTITUDE_AXES;
-use crate::model::{
-    Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesGroup, SeriesKey, q,
-};
+use crate::model::{PlotTab, SeriesGroup, SeriesKey, q};
+use crate::page::{Lesson, LessonStep, Question, Quote, Reading};
 
 pub(super) static LESSON: Lesson = Lesson {
     title: "Free rotation: Euler's equations, and what integrating a gyro can and cannot do",

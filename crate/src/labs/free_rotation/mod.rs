@@ -14,8 +14,9 @@ mod truth;
 use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
 use crate::model::{
-    Estimator, Lab, LabRun, LabSpec, LabWords, Page, ParamValues, SensorModel, Study, TruthModel,
+    Estimator, LabRun, LabSpec, LabWords, ParamValues, SensorModel, Study, TruthModel,
 };
+use crate::page::{Lab, Page};
 use crate::sensors::{Gyro3, Gyro3Config};
 use rand_chacha::ChaCha8Rng;
 use sensors::GyroSensors;
@@ -57,7 +58,7 @@ const PAGE: Page = Page {
 };
 
 impl Lab for FreeRotation {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {

@@ -1,6 +1,7 @@
 //! What the free-rotation lab shows beside the standard tabs: its figures.
 
-use crate::model::{Figure, SeriesKey, q};
+use crate::model::{SeriesKey, q};
+use crate::page::Figure;
 
 pub(super) const FIGURES: &[Figure] = &[
     Figure::new(

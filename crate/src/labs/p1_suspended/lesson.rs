@@ -1,12 +1,11 @@
 //! The lesson of paper 1: a body twisting on a string, a one-axis gyro, and the two adaptive
 //! Kalman filters (Q = 0, then covariance matching over a window N). Steps are data (see
-//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
+//! crate::page::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::PERIOD_S;
 use crate::estimators::one_axis_kf::{ANGLE_MINUS_INT_DEG, STATE_PHIDOT};
-use crate::model::{
-    CycleTerm, Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q,
-};
+use crate::model::{PlotTab, SeriesKey, q};
+use crate::page::{CycleTerm, Lesson, LessonStep, Question, Quote, Reading};
 
 /// Both filters' distance from the integrated angle φ_int (the paper's error panel).
 const FROM_INT: &[SeriesKey] = &[

@@ -16,9 +16,10 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, LabWords, Measurements, Page, ParamNote,
-    ParamValues, SINGLE_AXIS_VIEWS, SensorModel, SeriesKey, Study, SweepSpec, TruthState, q,
+    Estimator, ExampleLog, LabRun, LabSpec, LabWords, Measurements, ParamValues, SensorModel,
+    SeriesKey, Study, SweepSpec, TruthState, q,
 };
+use crate::page::{Figure, Lab, Page, ParamNote, SINGLE_AXIS_VIEWS};
 use crate::sensors::{Averager, WhiteNoise, quantize};
 use nalgebra::Vector2;
 use rand_chacha::ChaCha8Rng;
@@ -202,7 +203,7 @@ const PAGE: Page = Page {
 };
 
 impl Lab for SuspendedMockup {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {

@@ -7,9 +7,8 @@ use crate::dynamics::{
     STRING_MATERIALS, StringMaterial, TorsionPendulum, min_string_diameter_m, string_safety_factor,
     string_stiffness_n_m_per_rad,
 };
-use crate::model::{
-    OutputFile, ParamNote, ParamSpec, ParamValues, Preset, SeriesKey, TIME, fmt_sig, q,
-};
+use crate::model::{OutputFile, ParamSpec, ParamValues, Preset, SeriesKey, TIME, fmt_sig, q};
+use crate::page::ParamNote;
 use nalgebra::{Matrix2, Vector2};
 
 /// The choice between the period from the string and a typed one.

@@ -12,7 +12,8 @@ use crate::analysis::scenario::params_with;
 use crate::analysis::scenario::run_trace;
 use crate::analysis::stats;
 use crate::estimators::one_axis_kf;
-use crate::model::{Lab, SeriesKey, q};
+use crate::model::{SeriesKey, q};
+use crate::page::Lab;
 
 /// Seeds over which the window rows take their median.
 const SEEDS: [u64; 5] = [1, 2, 3, 4, 5];

@@ -13,7 +13,8 @@ use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::{StateSet, mekf};
-use crate::model::{Lab, Quantity, SeriesKey, StateInfo, q};
+use crate::model::{Quantity, SeriesKey, StateInfo, q};
+use crate::page::Lab;
 
 /// Run length (s).
 pub(super) const RUN_S: f64 = 200.0;

@@ -11,7 +11,8 @@
 use super::TabletSat;
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::{AnalysisError, StatsContext, stats};
-use crate::model::{Expectation, Lab, Row, SeriesKey, q};
+use crate::model::{Expectation, Row, SeriesKey, q};
+use crate::page::Lab;
 
 /// The run: the gain freezes at the default 150 s; the window is 750–950 s after it, when
 /// the field has turned ≈ 100° in the orbital frame.

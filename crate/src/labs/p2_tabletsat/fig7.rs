@@ -10,7 +10,8 @@ use super::sensors::MAG_TURN;
 use crate::analysis::scenario::{Trace, run_trace};
 use crate::analysis::{AnalysisError, StatsContext, stats};
 use crate::estimators::mekf::{MTURN_X_DEG, MTURN_Y_DEG, MTURN_Z_DEG};
-use crate::model::{Expectation, Lab, Row, SeriesKey};
+use crate::model::{Expectation, Row, SeriesKey};
+use crate::page::Lab;
 
 const FILTER: &str = "mag-sun-gyro-mturn";
 const RUN_S: f64 = 200.0;

@@ -1,10 +1,11 @@
 //! The lesson of paper 2: which sensors TabletSat's Kalman filter needs (Tables 2–3), what
 //! happens when one fails, and the bias and disturbance estimates. Steps are data (see
-//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
+//! crate::page::Lesson); the Russian is in this folder's ru.ftl.
 
 use super::sensors::{GYRO_BIAS, STAR_AVAILABLE};
 use crate::estimators::mekf;
-use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
+use crate::model::{PlotTab, SeriesKey, q};
+use crate::page::{Lesson, LessonStep, Question, Quote, Reading};
 
 /// The last minute of a 200-s step, where its σ is measured (the accuracy table's window).
 const LAST_MINUTE: (f64, f64) = (140.0, 200.0);

@@ -25,9 +25,9 @@ use crate::estimators::mekf;
 use crate::estimators::mekf::Retune;
 use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
-    AccuracyTable, BodyShape, Estimator, Lab, LabRun, LabSpec, LabWords, Outage, Page, ParamSpec,
-    ParamValues, SeriesKey, Study, SweepSpec, q,
+    Estimator, LabRun, LabSpec, LabWords, ParamSpec, ParamValues, SeriesKey, Study, SweepSpec, q,
 };
+use crate::page::{AccuracyTable, BodyShape, Lab, Outage, Page};
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -225,7 +225,7 @@ fn random_axis(rng: &mut ChaCha8Rng) -> Vector3<f64> {
 }
 
 impl Lab for TabletSat {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {
@@ -284,7 +284,7 @@ impl Lab for TabletSat {
         &PAGE
     }
 
-    fn param_notes(&self, params: &ParamValues) -> Vec<crate::model::ParamNote> {
+    fn param_notes(&self, params: &ParamValues) -> Vec<crate::page::ParamNote> {
         tune::notes(params)
     }
 

@@ -2,7 +2,8 @@
 //! student switches to (model error, outages, the constant gain, Fig. 7's bias model).
 
 use super::{mekf, sensors, truth};
-use crate::model::{Figure, Preset, SeriesKey, q};
+use crate::model::{Preset, SeriesKey, q};
+use crate::page::Figure;
 
 /// The start of a run the errors' figures leave out of their scale: the filters' first
 /// readings (the sensors at 1 Hz) and a few seconds more.

@@ -18,8 +18,9 @@ use crate::analysis::stats;
 use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::mekf;
 use crate::model::{
-    Calibration, Expectation, Lab, ParamValues, Reproduction, Row, SENSITIVITY_FACTORS, SeriesKey,
+    Calibration, Expectation, ParamValues, Reproduction, Row, SENSITIVITY_FACTORS, SeriesKey,
 };
+use crate::page::Lab;
 
 /// Seconds after which |estimate − truth| of a bias stays below `tol` (NaN if never).
 fn convergence_time(

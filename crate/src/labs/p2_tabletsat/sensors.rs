@@ -21,8 +21,8 @@ use crate::dynamics::{
 };
 use crate::estimators::Onboard;
 use crate::model::{
-    Extras, LabData, Measurements, OrbitPicture, ParamValues, Quantity, SceneExtras, SceneVector,
-    SensorModel, SeriesGroup, SeriesKey, SeriesSpec, TruthState,
+    Direction, Extras, LabData, Measurements, OrbitPicture, ParamValues, Quantity, SceneExtras,
+    SceneVector, SensorModel, SeriesGroup, SeriesKey, SeriesSpec, TruthState,
 };
 use crate::sensors::{RandomWalk, WhiteNoise};
 use nalgebra::{UnitQuaternion, Vector3};
@@ -330,20 +330,20 @@ fn scene_of(
         vectors.push(SceneVector {
             label: "sun",
             dir_ref: *sun_orbit,
-            rgb: [255, 210, 60],
+            kind: Direction::Sun,
         });
     }
     if let Some(b) = field_orbit_nt.try_normalize(1e-9) {
         vectors.push(SceneVector {
             label: "field",
             dir_ref: b,
-            rgb: [90, 200, 255],
+            kind: Direction::MagneticField,
         });
     }
     vectors.push(SceneVector {
         label: "nadir",
         dir_ref: -Vector3::z(),
-        rgb: [120, 220, 120],
+        kind: Direction::Nadir,
     });
     SceneExtras {
         vectors,

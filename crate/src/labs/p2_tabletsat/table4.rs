@@ -10,7 +10,8 @@ use super::truth::DIST_TRUE;
 use crate::analysis::scenario::run_trace;
 use crate::analysis::{AnalysisError, StatsContext, stats};
 use crate::estimators::mekf::{D_X_S2, D_Y_S2, D_Z_S2};
-use crate::model::{Expectation, Lab, Row, SeriesKey};
+use crate::model::{Expectation, Row, SeriesKey};
+use crate::page::Lab;
 
 /// (filter, Table 4's set, the paper's d accuracy as the OCR left it).
 const SETS: [(&str, &str, &str); 4] = [

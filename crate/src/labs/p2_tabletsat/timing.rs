@@ -7,7 +7,8 @@ use super::{INERTIA_KG_M2, PARAMS, TabletSat, p0, tuning};
 use crate::estimators::{
     FULL_F, FULL_H_NONZEROS, Mekf, MekfConfig, SensorSet, StateSet, full_step_flops,
 };
-use crate::model::{Estimator, Lab, ParamValues, TimingItem};
+use crate::model::{Estimator, ParamValues, TimingItem};
+use crate::page::Lab;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 

@@ -6,9 +6,8 @@
 
 use super::sets::{FILTERS, FilterRow, QSource};
 use crate::estimators::{MekfConfig, MekfTuning};
-use crate::model::{
-    ParamNote, ParamValues, ScoreError, SeriesKey, SweepScoring, SweepSpec, fmt_sig, q,
-};
+use crate::model::{ParamValues, ScoreError, SeriesKey, SweepScoring, SweepSpec, fmt_sig, q};
+use crate::page::ParamNote;
 
 /// The tuned filter's id.
 pub const TUNED_ID: &str = "tuned";
@@ -155,7 +154,7 @@ const REPORTED: [&str; 3] = ["st-gyro", "mag-sun-gyro", "mag-sun"];
 fn optimum(id: &str, assignments: &[String]) -> Result<[f64; 4], crate::analysis::AnalysisError> {
     use crate::analysis::AnalysisError;
     use crate::analysis::sweep::Sweep;
-    let lab: &'static dyn crate::model::Lab = &super::TabletSat;
+    let lab: &'static dyn crate::page::Lab = &super::TabletSat;
     let index = FILTERS
         .iter()
         .position(|f| f.config.id == id)

@@ -1,9 +1,10 @@
 //! The lesson of paper 3: the vertical as w = u + jv on the Riemann sphere, the gyro's drift,
-//! the accelerometers' noise and their blend. Steps are data (see crate::model::Lesson); the
+//! the accelerometers' noise and their blend. Steps are data (see crate::page::Lesson); the
 //! Russian is in this folder's ru.ftl.
 
 use crate::estimators::wz_kalman;
-use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
+use crate::model::{PlotTab, SeriesKey, q};
+use crate::page::{Lesson, LessonStep, Question, Quote, Reading};
 
 /// The (u, v, z) integration's and the truth's `quantity`.
 const fn uvz_and_truth(quantity: &'static crate::model::Quantity) -> (SeriesKey, SeriesKey) {

@@ -22,9 +22,10 @@ use crate::estimators::{
 use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
-    Estimator, Figure, Lab, LabData, LabRun, LabSpec, LabWords, Measurements, Page, ParamValues,
-    SensorModel, SeriesKey, Study, TruthModel, TruthState, q,
+    Estimator, LabData, LabRun, LabSpec, LabWords, Measurements, ParamValues, SensorModel,
+    SeriesKey, Study, TruthModel, TruthState, q,
 };
+use crate::page::{Figure, Lab, Page};
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
 use nalgebra::{Matrix2, Vector3};
 use rand_chacha::ChaCha8Rng;
@@ -165,7 +166,7 @@ const PAGE: Page = Page {
 };
 
 impl Lab for WzSphere {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {

@@ -1,13 +1,12 @@
 //! The lesson of paper 4: one number γ = det Q / det R tunes the roll Kalman filter of an
-//! asymmetric rig. Steps are data (see crate::model::Lesson); the Russian is in
+//! asymmetric rig. Steps are data (see crate::page::Lesson); the Russian is in
 //! this folder's ru.ftl.
 
 use super::keys;
 use super::plant::{U0_NEEDED_RAD_S2, U0_RAD_S2};
 use crate::estimators::roll_kf;
-use crate::model::{
-    CycleTerm, Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q,
-};
+use crate::model::{PlotTab, SeriesKey, q};
+use crate::page::{CycleTerm, Lesson, LessonStep, Question, Quote, Reading};
 
 /// The KF's roll error and its variance of θ (rad²).
 const ROLL_ERROR: SeriesKey = SeriesKey::new("kf", &q::ANGLE_ERR_DEG);

@@ -6,7 +6,8 @@
 use super::reproduce::{best_of_grid, score_params};
 use super::{QuadrotorRoll, keys, tuning};
 use crate::analysis::sweep::Sweep;
-use crate::model::{Lab, ParamValues, ReadingError};
+use crate::model::{ParamValues, ReadingError};
+use crate::page::Lab;
 
 /// Reading `name` of the run of `params` (`None` for a name this lab does not know).
 pub(super) fn reading(name: &str, params: &ParamValues) -> Option<Result<f64, ReadingError>> {

@@ -17,9 +17,10 @@ mod u0_range;
 use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
-    Estimator, ExampleLog, Figure, Lab, LabRun, LabSpec, LabWords, Page, ParamSpec, ParamValues,
-    Preset, SINGLE_AXIS_VIEWS, SeriesKey, Study, SweepSpec, q,
+    Estimator, ExampleLog, LabRun, LabSpec, LabWords, ParamSpec, ParamValues, Preset, SeriesKey,
+    Study, SweepSpec, q,
 };
+use crate::page::{Figure, Lab, Page, SINGLE_AXIS_VIEWS};
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
 use plant::{CONTROLLERS, Plant, RIGS};
 use rand_chacha::ChaCha8Rng;
@@ -247,7 +248,7 @@ const PAGE: Page = Page {
 };
 
 impl Lab for QuadrotorRoll {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {
@@ -300,7 +301,7 @@ impl Lab for QuadrotorRoll {
         }
     }
 
-    fn param_notes(&self, params: &ParamValues) -> Vec<crate::model::ParamNote> {
+    fn param_notes(&self, params: &ParamValues) -> Vec<crate::page::ParamNote> {
         vec![u0_range::note(params)]
     }
 

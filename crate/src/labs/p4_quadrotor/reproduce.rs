@@ -18,7 +18,8 @@ use super::{QuadrotorRoll, tuning};
 use crate::analysis::AnalysisError;
 use crate::analysis::scenario::params_with;
 use crate::analysis::sweep::Sweep;
-use crate::model::{Calibration, Expectation, Lab, Reproduction, Row, SweepSpec, fmt_sig};
+use crate::model::{Calibration, Expectation, Reproduction, Row, SweepSpec, fmt_sig};
+use crate::page::Lab;
 
 /// The paper's γ grid (the exponent of the last one is lost in the OCR; n > 3) and its
 /// Table 1: (MSE, t_tr s).

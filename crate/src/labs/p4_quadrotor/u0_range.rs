@@ -6,7 +6,8 @@
 //! which are all evaluated.
 
 use super::plant::{Plant, Scales};
-use crate::model::{ParamNote, ParamValues, fmt_sig};
+use crate::model::{ParamValues, fmt_sig};
+use crate::page::ParamNote;
 
 /// The parameter: how well the geometry is known (± %).
 pub(super) const UNCERTAINTY_PCT: &str = "geometry_uncertainty_pct";

@@ -1,10 +1,11 @@
 //! The lesson of paper 5: correcting measured rates by one Gauss–Newton step through the
 //! sensitivity matrix U = ∂Λ/∂p at every reference attitude. Steps are data (see
-//! crate::model::Lesson); the Russian is in this folder's ru.ftl.
+//! crate::page::Lesson); the Russian is in this folder's ru.ftl.
 
 use crate::estimators::sensitivity::WITHIN_TOL;
 use crate::estimators::sensitivity::{P_X_DEG_S, P_Y_DEG_S, P_Z_DEG_S};
-use crate::model::{Lesson, LessonStep, PlotTab, Question, Quote, Reading, SeriesKey, q};
+use crate::model::{PlotTab, SeriesKey, q};
+use crate::page::{Lesson, LessonStep, Question, Quote, Reading};
 
 /// When method `id` first comes within the tolerance (its flag rises), in a 30-s run.
 const fn first_within(id: &'static str) -> Reading {

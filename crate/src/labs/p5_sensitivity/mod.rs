@@ -16,9 +16,8 @@ mod truth;
 
 use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
-use crate::model::{
-    Estimator, Lab, LabRun, LabSpec, LabWords, OutputFile, Page, ParamValues, Study,
-};
+use crate::model::{Estimator, LabRun, LabSpec, LabWords, OutputFile, ParamValues, Study};
+use crate::page::{Lab, Page};
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
 use sensors::Sensors;
@@ -64,7 +63,7 @@ const PAGE: Page = Page {
 };
 
 impl Lab for SensitivityLab {
-    fn lesson(&self) -> Option<&'static crate::model::Lesson> {
+    fn lesson(&self) -> Option<&'static crate::page::Lesson> {
         Some(&lesson::LESSON)
     }
     fn spec(&self) -> &'static LabSpec {

@@ -2,7 +2,8 @@
 //! update, and the paper's output file.
 
 use crate::estimators::{Method, linearised_eigenvalues};
-use crate::model::{Diagram, DiagramPoint, Figure, OutputFile, ParamValues, SeriesKey, TIME, q};
+use crate::model::{OutputFile, ParamValues, SeriesKey, TIME, q};
+use crate::page::{Diagram, DiagramPoint, Figure};
 
 use super::params::METHODS;
 use super::truth::ANGLES;

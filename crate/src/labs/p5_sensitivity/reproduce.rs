@@ -16,7 +16,8 @@ use crate::analysis::{AnalysisError, StatsContext};
 use crate::estimators::sensitivity;
 use crate::estimators::{Method, linearised_eigenvalues, sensitivity_finite_difference_check};
 use crate::math::{RK_METHODS, wrap_pi};
-use crate::model::{Calibration, Expectation, Lab, Reproduction, Row, SeriesKey};
+use crate::model::{Calibration, Expectation, Reproduction, Row, SeriesKey};
+use crate::page::Lab;
 
 /// The Δt grid (s).
 const GRID: [f64; 10] = [0.5, 0.8, 1.0, 1.1, 1.15, 1.17, 1.2, 1.25, 1.5, 2.0];

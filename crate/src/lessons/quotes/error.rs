@@ -3,7 +3,7 @@
 use crate::analysis::AnalysisError;
 use crate::model::{ParamError, ReadingError};
 
-/// Why a [`crate::model::Quote`] does not hold for the run its step opens. Worded in English
+/// Why a [`crate::page::Quote`] does not hold for the run its step opens. Worded in English
 /// only because only the CLI and the tests meet it: a page reader never checks quotes.
 #[derive(Clone, Debug, thiserror::Error, PartialEq)]
 pub enum QuoteError {

@@ -2,7 +2,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use attlab::labs;
-use attlab::model::{Extras, Lab, ParamKind, ParamValues, SeriesKey};
+use attlab::model::{Extras, ParamKind, ParamValues, SeriesKey};
+use attlab::page::Lab;
 use attlab::sim::{Selection, SimOptions, Simulation};
 use rand::SeedableRng;
 use std::collections::HashSet;

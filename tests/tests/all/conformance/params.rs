@@ -3,7 +3,8 @@
 
 use super::{run, same_bits};
 use attlab::labs;
-use attlab::model::{Lab, ParamValues};
+use attlab::model::ParamValues;
+use attlab::page::Lab;
 
 /// Runs `lab` 50 steps, changes `key` to `value` live, runs 2000 more steps (some
 /// parameters act only after a while, e.g. an adaptation window) and tells whether any

@@ -3,46 +3,7 @@
 //! and the diagrams beside them. The page (web/) draws from these; the core never reads them
 //! to simulate.
 
-use super::key::SeriesKey;
-use super::log::{ExampleLog, LogFormat};
-use super::params::ParamValues;
-use super::quantity::Quantity;
-use nalgebra::Vector3;
-
-/// A reference direction drawn from the body in the 3D view.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SceneVector {
-    /// Short label at its tip.
-    pub label: &'static str,
-    /// Unit direction in the reference frame.
-    pub dir_ref: Vector3<f64>,
-    /// Colour (sRGB).
-    pub rgb: [u8; 3],
-}
-
-/// Where a satellite is on its orbit, for a small picture of the Earth beside the body.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OrbitPicture {
-    /// Position (ECI, m).
-    pub position_eci_m: Vector3<f64>,
-    /// Unit orbit normal (ECI).
-    pub normal_eci: Vector3<f64>,
-    /// Unit sun direction (ECI).
-    pub sun_eci: Vector3<f64>,
-    /// In the Earth's shadow.
-    pub eclipse: bool,
-    /// Earth radius (m).
-    pub earth_radius_m: f64,
-}
-
-/// What a lab's sensors add to the 3D view.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SceneExtras {
-    /// Reference directions (sun, field, nadir …).
-    pub vectors: Vec<SceneVector>,
-    /// The orbit, if the lab flies one.
-    pub orbit: Option<OrbitPicture>,
-}
+use crate::model::{ExampleLog, LogFormat, ParamValues, Quantity, SeriesKey};
 
 /// The body the 3D view draws.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
