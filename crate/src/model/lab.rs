@@ -227,7 +227,7 @@ pub trait Study: Sync {
     ) -> Option<Result<f64, ReadingError>> {
         None
     }
-    /// The scenario of the lab's golden trace (tests/golden): assignments on top of its
+    /// The scenario of the lab's golden trace (`golden.json` in its folder): assignments on top of its
     /// defaults that switch its sensor errors on where the defaults have none, so the noise
     /// generators are pinned too.
     fn golden_assignments(&self) -> &'static [&'static str] {
