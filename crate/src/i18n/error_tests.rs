@@ -18,7 +18,7 @@ pub(crate) fn said(examples: Vec<(String, &dyn Worded)>) -> Vec<(String, String,
 
 /// What is wrong with one error's words, if anything.
 pub(crate) fn problem(english: &str, en: &str, ru: &str) -> Option<String> {
-    let unfilled = |s: &str| s.contains('{') || s.contains('$') || s.contains("error-");
+    let unfilled = |s: &str| s.contains("{$") || s.contains('$') || s.contains("error-");
     let cyrillic = ru
         .chars()
         .any(|c| ('а'..='я').contains(&c.to_lowercase().next().unwrap_or(c)));

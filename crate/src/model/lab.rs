@@ -170,6 +170,54 @@ pub struct LabWords {
     pub ru: &'static str,
 }
 
+/// `LabWords` of the lab whose folder calls it: `lab_words!()` reads its `ru.ftl`,
+/// `lab_words!(en)` its `en.ftl` too (both beside the calling file). The page's wasm leaves
+/// `ru` empty: it fetches the Russian that `cargo xtask dist` joins.
+macro_rules! lab_words {
+    () => {
+        $crate::model::LabWords {
+            en: "",
+            ru: $crate::model::lab_russian!(),
+        }
+    };
+    (en) => {
+        $crate::model::LabWords {
+            en: include_str!("en.ftl"),
+            ru: $crate::model::lab_russian!(),
+        }
+    };
+}
+pub(crate) use lab_words;
+
+/// The calling lab folder's `ru.ftl` (natively).
+#[cfg(not(target_arch = "wasm32"))]
+macro_rules! lab_russian {
+    () => {
+        include_str!("ru.ftl")
+    };
+}
+/// Nothing in the page's wasm (it fetches the joined Russian).
+#[cfg(target_arch = "wasm32")]
+macro_rules! lab_russian {
+    () => {
+        ""
+    };
+}
+pub(crate) use lab_russian;
+
+/// The `Chapter` of the lab whose folder calls it: its `README.md`, beside the calling file.
+#[cfg(feature = "study")]
+macro_rules! lab_chapter {
+    () => {
+        $crate::model::Chapter {
+            declared_in: file!(),
+            text: include_str!("README.md"),
+        }
+    };
+}
+#[cfg(feature = "study")]
+pub(crate) use lab_chapter;
+
 /// A lab's chapter: `README.md` beside its code — what the paper did, what the lab shows,
 /// its generated reproduction table and what differs and why.
 #[cfg(feature = "study")]

@@ -38,7 +38,10 @@ pub use estimate::{
 pub use key::{Measure, SENSORS, SeriesKey, SeriesRef, TIME, TRUTH, names};
 #[cfg(feature = "study")]
 pub use lab::Chapter;
+#[cfg(feature = "study")]
+pub(crate) use lab::lab_chapter;
 pub use lab::{LabRun, LabSpec, LabWords, Preset, SensorModel, Study, TruthModel, TruthState};
+pub(crate) use lab::{lab_russian, lab_words};
 pub use log::{
     ExampleLog, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
     RateLog,

@@ -293,13 +293,13 @@ fn reproduce(
         })
         .collect();
     let mut reports: Vec<Reproduction> = Vec::new();
-    for (lab, rep) in selected.into_iter().zip(computed) {
+    for (lab, rep) in selected.iter().zip(computed) {
         let rep = rep?;
         if markdown {
             println!("### {}\n\n{}", rep.lab, rep.to_markdown());
         } else {
             println!("{}", rep.to_table());
-            print_timings(lab, 200_000);
+            print_timings(*lab, 200_000);
         }
         reports.push(rep);
     }
@@ -308,8 +308,8 @@ fn reproduce(
         std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     if write_chapters {
-        for (lab, rep) in labs_and_reports(&reports)? {
-            write_chapter(lab, rep)?;
+        for (lab, rep) in selected.iter().zip(&reports) {
+            write_chapter(*lab, rep)?;
         }
     }
     let failures: Vec<String> = reports.iter().flat_map(Reproduction::failures).collect();
@@ -317,16 +317,6 @@ fn reproduce(
         println!("FAILS: {f}");
     }
     Ok(failures.is_empty())
-}
-
-/// Each report beside its lab.
-fn labs_and_reports(
-    reports: &[Reproduction],
-) -> Result<Vec<(&'static dyn Lab, &Reproduction)>, String> {
-    reports
-        .iter()
-        .map(|rep| Ok((find_lab(&rep.lab)?, rep)))
-        .collect()
 }
 
 /// Rewrites `rep`'s table in `lab`'s chapter, found from the workspace this binary was

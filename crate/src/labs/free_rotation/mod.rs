@@ -13,9 +13,7 @@ mod truth;
 
 use crate::estimators::{GyroErrors, IntegrationErrorModel, QuaternionIntegration, WzIntegration};
 use crate::math::WzAttitude;
-use crate::model::{
-    Estimator, LabRun, LabSpec, LabWords, ParamValues, SensorModel, Study, TruthModel,
-};
+use crate::model::{Estimator, LabRun, LabSpec, ParamValues, SensorModel, Study, TruthModel};
 use crate::page::{Lab, Page};
 use crate::sensors::{Gyro3, Gyro3Config};
 use rand_chacha::ChaCha8Rng;
@@ -43,13 +41,7 @@ const SPEC: LabSpec = LabSpec {
     params: params::PARAMS,
     presets: &[],
     default_duration_s: 60.0,
-    words: LabWords {
-        en: "",
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(),
 };
 
 const PAGE: Page = Page {
@@ -121,9 +113,6 @@ impl Study for FreeRotation {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 }

@@ -16,8 +16,8 @@ use crate::estimators::covariance_matching::{AdaptMode, Adaptation};
 use crate::estimators::one_axis_kf;
 use crate::estimators::{AngleIntegration, OneAxisKf, OneAxisModel, OneAxisTuning};
 use crate::model::{
-    Estimator, ExampleLog, LabRun, LabSpec, LabWords, Measurements, ParamValues, SensorModel,
-    SeriesKey, Study, SweepSpec, TruthState, q,
+    Estimator, ExampleLog, LabRun, LabSpec, Measurements, ParamValues, SensorModel, SeriesKey,
+    Study, SweepSpec, TruthState, q,
 };
 use crate::page::{Figure, Lab, Page, ParamNote, SINGLE_AXIS_VIEWS};
 use crate::sensors::{Averager, WhiteNoise, quantize};
@@ -172,13 +172,7 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 600.0,
-    words: LabWords {
-        en: include_str!("en.ftl"),
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(en),
 };
 
 const PAGE: Page = Page {
@@ -272,10 +266,7 @@ impl Study for SuspendedMockup {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 
     fn output_file(&self, _params: &ParamValues) -> Option<crate::model::OutputFile> {

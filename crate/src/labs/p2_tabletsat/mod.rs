@@ -25,7 +25,7 @@ use crate::estimators::mekf;
 use crate::estimators::mekf::Retune;
 use crate::estimators::{Mekf, MekfTuning, StateSet};
 use crate::model::{
-    Estimator, LabRun, LabSpec, LabWords, ParamSpec, ParamValues, SeriesKey, Study, SweepSpec, q,
+    Estimator, LabRun, LabSpec, ParamSpec, ParamValues, SeriesKey, Study, SweepSpec, q,
 };
 use crate::page::{AccuracyTable, BodyShape, Lab, Outage, Page};
 use nalgebra::{Matrix3, SMatrix, UnitQuaternion, Vector3};
@@ -181,13 +181,7 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 600.0,
-    words: LabWords {
-        en: "",
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(),
 };
 
 const PAGE: Page = Page {
@@ -313,10 +307,7 @@ impl Study for TabletSat {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

@@ -22,8 +22,8 @@ use crate::estimators::{
 use crate::estimators::{blended_wz, wz_kalman};
 use crate::math::{WzAttitude, vertical_in_body};
 use crate::model::{
-    Estimator, LabData, LabRun, LabSpec, LabWords, Measurements, ParamValues, SensorModel,
-    SeriesKey, Study, TruthModel, TruthState, q,
+    Estimator, LabData, LabRun, LabSpec, Measurements, ParamValues, SensorModel, SeriesKey, Study,
+    TruthModel, TruthState, q,
 };
 use crate::page::{Figure, Lab, Page};
 use crate::sensors::{Gyro3, Gyro3Config, WhiteNoise};
@@ -149,13 +149,7 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: &[],
     default_duration_s: 100.0,
-    words: LabWords {
-        en: "",
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(),
 };
 
 const PAGE: Page = Page {
@@ -240,10 +234,7 @@ impl Study for WzSphere {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 
     #[cfg(feature = "study")]

@@ -17,8 +17,8 @@ mod u0_range;
 use crate::estimators::roll_kf;
 use crate::estimators::{ComplementaryRoll, RollInput, RollKf, RollTuning};
 use crate::model::{
-    Estimator, ExampleLog, LabRun, LabSpec, LabWords, ParamSpec, ParamValues, Preset, SeriesKey,
-    Study, SweepSpec, q,
+    Estimator, ExampleLog, LabRun, LabSpec, ParamSpec, ParamValues, Preset, SeriesKey, Study,
+    SweepSpec, q,
 };
 use crate::page::{Figure, Lab, Page, SINGLE_AXIS_VIEWS};
 use mpu6050::{ACCEL_RANGES, GYRO_RANGES, Mpu6050, sample_sigma};
@@ -224,13 +224,7 @@ const SPEC: LabSpec = LabSpec {
     params: PARAMS,
     presets: PRESETS,
     default_duration_s: 16.0,
-    words: LabWords {
-        en: include_str!("en.ftl"),
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(en),
 };
 
 const PAGE: Page = Page {
@@ -323,10 +317,7 @@ impl Study for QuadrotorRoll {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 
     fn sweeps(&self) -> &'static [SweepSpec] {

@@ -16,7 +16,7 @@ mod truth;
 
 use crate::estimators::SensitivityCorrection;
 use crate::math::quaternion_from_sequence;
-use crate::model::{Estimator, LabRun, LabSpec, LabWords, OutputFile, ParamValues, Study};
+use crate::model::{Estimator, LabRun, LabSpec, OutputFile, ParamValues, Study};
 use crate::page::{Lab, Page};
 use nalgebra::Vector3;
 use rand_chacha::ChaCha8Rng;
@@ -47,13 +47,7 @@ const SPEC: LabSpec = LabSpec {
     params: params::PARAMS,
     presets: params::PRESETS,
     default_duration_s: 30.0,
-    words: LabWords {
-        en: "",
-        #[cfg(not(target_arch = "wasm32"))]
-        ru: include_str!("ru.ftl"),
-        #[cfg(target_arch = "wasm32")]
-        ru: "",
-    },
+    words: crate::model::lab_words!(),
 };
 
 const PAGE: Page = Page {
@@ -132,10 +126,7 @@ impl Study for SensitivityLab {
 
     #[cfg(feature = "study")]
     fn chapter(&self) -> crate::model::Chapter {
-        crate::model::Chapter {
-            declared_in: file!(),
-            text: include_str!("README.md"),
-        }
+        crate::model::lab_chapter!()
     }
 
     fn output_file(&self, p: &ParamValues) -> Option<OutputFile> {
