@@ -36,3 +36,5 @@ pub mod record;
 pub mod sensors;
 pub mod sim;
 pub mod state;
+#[cfg(all(feature = "study", not(target_arch = "wasm32")))]
+pub mod teacher;

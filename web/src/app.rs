@@ -41,6 +41,8 @@ pub struct AttLabApp {
     narration: panels::Narration,
     /// The language the page's `<html lang>` says.
     lang_set: Option<attlab::i18n::Lang>,
+    /// The page that embeds this one, driving it by `postMessage` (docs/embed.md).
+    host: crate::host::HostLink,
 }
 
 impl AttLabApp {
@@ -57,6 +59,7 @@ impl AttLabApp {
         let gpu_ready = cc.wgpu_render_state.as_ref().map(body3d::init).is_some();
         let mut app = Self::headless(AppState::from_fragment(&platform::initial_fragment()));
         app.gpu_ready = gpu_ready;
+        app.host = crate::host::HostLink::install(&cc.egui_ctx);
         if !gpu_ready {
             app.app_errors
                 .push("no wgpu render state: the 3D view is disabled".into());
@@ -82,6 +85,7 @@ impl AttLabApp {
             keyboard_nav: false,
             narration: panels::Narration::default(),
             lang_set: None,
+            host: crate::host::HostLink::default(),
         }
     }
 
@@ -167,6 +171,7 @@ impl AttLabApp {
         for c in commands.drain(..) {
             self.apply(c);
         }
+        self.host.serve(&mut self.state);
         self.set_zoom_and_theme(ui.ctx());
         // A phone (upright or sideways) or an upright tablet: the phone's bar, one view
         // and the plot, the controls in a sheet.
@@ -179,8 +184,12 @@ impl AttLabApp {
         panels::share_dialog(ui.ctx(), &self.state, &mut commands);
         panels::cycle_panel(ui.ctx(), &self.state, &mut commands);
         panels::link_problems(ui, &self.state, &mut commands);
-        panels::status_line(ui, &self.state, &mut commands);
-        panels::controls_for_the_screen(ui, &self.state, &mut commands);
+        if self.state.view().embed {
+            panels::embed_bar(ui, &self.state, &mut commands);
+        } else {
+            panels::status_line(ui, &self.state, &mut commands);
+            panels::controls_for_the_screen(ui, &self.state, &mut commands);
+        }
         panels::tiles(ui, &self.state);
         self.regions = Regions::default();
         panels::central(
@@ -202,6 +211,10 @@ impl AttLabApp {
         self.apply(UrlCommand::Sync.into());
         if let Some(text) = self.narration.due(&self.state, now) {
             crate::a11y::describe(&text);
+        }
+        if self.host.report(&self.state, now) {
+            // A paused page draws only on input: the host's ticks need a frame a second.
+            ui.ctx().request_repaint_after(crate::host::TICK_EVERY);
         }
         self.frames += 1;
         self.publish(ui.ctx());

@@ -15,6 +15,7 @@
 pub mod a11y;
 pub mod app;
 pub mod export;
+pub mod host;
 pub mod live_io;
 pub mod panels;
 pub mod pick;

@@ -363,3 +363,41 @@ fn download(name: &str, mime: &str, contents: &[u8]) -> Result<(), wasm_bindgen:
     window.set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 60_000)?;
     Ok(())
 }
+
+/// What build of the page this is (the About line).
+#[derive(Clone, Debug, PartialEq, Eq, serde::Deserialize)]
+pub struct BuildInfo {
+    /// The software's version.
+    pub version: String,
+    /// The commit it was built from.
+    pub commit: String,
+    /// The commit's date (YYYY-MM-DD).
+    pub date: String,
+}
+
+/// The build: in the page, what `cargo xtask dist` wrote into `index.html` (and
+/// `version.json`); on the desktop, the crate's version and `ATTLAB_COMMIT` if the build
+/// had it.
+pub fn build_info() -> &'static BuildInfo {
+    static INFO: std::sync::OnceLock<BuildInfo> = std::sync::OnceLock::new();
+    INFO.get_or_init(|| {
+        let fallback = BuildInfo {
+            version: env!("CARGO_PKG_VERSION").to_string(),
+            commit: option_env!("ATTLAB_COMMIT")
+                .unwrap_or("unknown")
+                .to_string(),
+            date: "unknown".to_string(),
+        };
+        #[cfg(target_arch = "wasm32")]
+        {
+            let text = web_sys::window()
+                .and_then(|w| w.document())
+                .and_then(|d| d.get_element_by_id("attlab_build_info"))
+                .and_then(|e| e.text_content());
+            text.and_then(|t| serde_json::from_str(&t).ok())
+                .unwrap_or(fallback)
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        fallback
+    })
+}

@@ -16,6 +16,7 @@
 
 mod beside;
 mod cmd;
+mod publish;
 use attlab_serve as serve;
 mod site;
 mod size;
@@ -35,8 +36,12 @@ const USAGE: &str = "usage: cargo xtask <command>
 
 commands:
   serve [--port N] [--no-opt]   build dist/ and serve it on 127.0.0.1:N (default 8080)
-  dist [--no-opt]               build dist/ only, and print the wasm raw, gzipped and
-                                brotli'd
+  dist [--no-opt] [--archive] [--address URL]
+                                build dist/ only (the page, version.json, the teacher
+                                notes), and print the wasm raw, gzipped and brotli'd;
+                                --archive also writes it as .tar.gz and .zip into
+                                target/site-archive/; --address gives the site's public
+                                address (else site/address.txt's) for the notes' links
   test                          run every check and test suite (what CI runs)
   bench                         time every lab natively (attlab bench) and in headless
                                 Chromium (wasm criterion bench of the labs' timing items)
@@ -64,6 +69,10 @@ enum Task {
     Dist {
         /// Whether to run wasm-opt.
         optimise: bool,
+        /// Also write the site as a .tar.gz and a .zip.
+        archive: bool,
+        /// The site's public address (else `site/address.txt`'s).
+        address: Option<String>,
     },
     /// Everything CI runs.
     Test,
@@ -93,10 +102,16 @@ fn parse(args: &[String]) -> Result<Task, String> {
     let mut port = DEFAULT_PORT;
     let mut optimise = true;
     let mut minutes = 10.0;
+    let mut archive = false;
+    let mut address = None;
     let mut iter = rest.iter();
     while let Some(arg) = iter.next() {
         match arg.as_str() {
             "--no-opt" if command != "test" => optimise = false,
+            "--archive" if command == "dist" => archive = true,
+            "--address" if command == "dist" => {
+                address = Some(iter.next().ok_or("--address needs a value")?.clone());
+            }
             "--minutes" if command == "soak" || command == "fuzz-page" => {
                 let value = iter.next().ok_or("--minutes needs a value")?;
                 minutes = value
@@ -120,7 +135,11 @@ fn parse(args: &[String]) -> Result<Task, String> {
     }
     match command.as_str() {
         "serve" => Ok(Task::Serve { port, optimise }),
-        "dist" => Ok(Task::Dist { optimise }),
+        "dist" => Ok(Task::Dist {
+            optimise,
+            archive,
+            address,
+        }),
         "test" => Ok(Task::Test),
         "bench" => Ok(Task::Bench),
         "soak" => Ok(Task::Soak { minutes }),
@@ -145,7 +164,19 @@ fn run(task: Task) -> cmd::Result<()> {
             server.wait();
             Ok(())
         }
-        Task::Dist { optimise } => site::build(optimise, SizeReport::WithBrotli).map(|_| ()),
+        Task::Dist {
+            optimise,
+            archive,
+            address,
+        } => {
+            let dist = site::build_for(optimise, SizeReport::WithBrotli, address.as_deref())?;
+            if archive {
+                for file in publish::archive(&dist, &publish::build())? {
+                    println!("xtask: wrote {}", file.display());
+                }
+            }
+            Ok(())
+        }
         Task::Test => suite::run(),
         Task::Bench => bench(),
         Task::Soak { minutes } => {
@@ -252,8 +283,26 @@ mod tests {
         assert!(parse(&args(&["fuzz-page", "--port", "1"])).is_err());
         assert_eq!(
             parse(&args(&["dist", "--no-opt"])),
-            Ok(Task::Dist { optimise: false })
+            Ok(Task::Dist {
+                optimise: false,
+                archive: false,
+                address: None
+            })
         );
+        assert_eq!(
+            parse(&args(&[
+                "dist",
+                "--archive",
+                "--address",
+                "https://x.org/lab/"
+            ])),
+            Ok(Task::Dist {
+                optimise: true,
+                archive: true,
+                address: Some("https://x.org/lab/".into())
+            })
+        );
+        assert!(parse(&args(&["serve", "--archive"])).is_err());
         assert_eq!(
             parse(&args(&["serve", "--port", "9000"])),
             Ok(Task::Serve {

@@ -2,7 +2,7 @@
 //! `wasm-opt -O2` (cached by input hash), `index.html` and `assets/`.
 
 use crate::cmd::{self, Result};
-use crate::{tools, wasm};
+use crate::{publish, tools, wasm};
 use flate2::Compression;
 use flate2::write::GzEncoder;
 use sha2::{Digest, Sha256};
@@ -45,8 +45,15 @@ pub enum SizeReport {
 }
 
 /// Builds the whole site into `dist/` and returns that folder. `optimise` runs `wasm-opt`;
-/// `sizes` says which compressed sizes of the wasm to print.
+/// `sizes` says which compressed sizes of the wasm to print. The site's address is the one
+/// of `site/address.txt`, if any.
 pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
+    build_for(optimise, sizes, None)
+}
+
+/// [`build`] for the public address `address` (`--address`; `None`: the address file's).
+pub fn build_for(optimise: bool, sizes: SizeReport, address: Option<&str>) -> Result<PathBuf> {
+    let address = publish::address(address)?;
     tools::ensure_wasm_tools(optimise)?;
     let raw = build_wasm()?;
     let dist = dist_dir();
@@ -62,6 +69,9 @@ pub fn build(optimise: bool, sizes: SizeReport) -> Result<PathBuf> {
         println!("xtask: --no-opt: skipping wasm-opt");
     }
     write_versioned(&pkg, &dist)?;
+    let build = publish::build();
+    write_build_info(&dist, &publish::build_json(&build, address.as_deref()))?;
+    publish::teacher_notes(&dist, &build, address.as_deref())?;
     // The sweep worker, the app manifest and its icons (offline and installable).
     for name in SITE_FILES {
         copy_file(&cmd::root().join("site").join(name), &dist.join(name))?;
@@ -104,6 +114,25 @@ fn write_versioned(pkg: &Path, dist: &Path) -> Result<()> {
         fs::write(&to, text).map_err(|e| format!("writing {}: {e}", to.display()))?;
     }
     Ok(())
+}
+
+/// The placeholder in `index.html` for the build's JSON (version, commit, date, address),
+/// which the page's About line reads.
+const INFO_PLACEHOLDER: &str = "__ATTLAB_BUILD_INFO__";
+
+/// Writes `version.json` into `dist` and the same JSON into its `index.html`.
+fn write_build_info(dist: &Path, json: &str) -> Result<()> {
+    let version = dist.join("version.json");
+    fs::write(&version, format!("{json}\n"))
+        .map_err(|e| format!("writing {}: {e}", version.display()))?;
+    let index = dist.join("index.html");
+    let html =
+        fs::read_to_string(&index).map_err(|e| format!("reading {}: {e}", index.display()))?;
+    if html.matches(INFO_PLACEHOLDER).count() != 1 {
+        return Err(format!("index.html must hold {INFO_PLACEHOLDER} once").into());
+    }
+    fs::write(&index, html.replace(INFO_PLACEHOLDER, json))
+        .map_err(|e| format!("writing {}: {e}", index.display()).into())
 }
 
 /// `html` with the build `hash` in place of its one [`BUILD_PLACEHOLDER`]; an error if it has

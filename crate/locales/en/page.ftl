@@ -374,6 +374,8 @@ link-fault-speed = speed must be between { $lo } and { $hi }
 link-fault-presenter = presenter must be 1 or 0
 link-fault-theme = theme must be light or dark
 link-fault-lang = lang must be en or ru
+link-fault-embed = embed must be 1 or 0
+link-fault-origin = `{ $text }` is not a web origin (like https://example.org or http://127.0.0.1:8000, or *)
 link-fault-answers-without-lesson = answers need a lesson (lesson=<lab>)
 link-fault-no-lesson = this lab has no lesson
 link-fault-not-an-answer = `{ $part }` is not a step number and an answer letter (like 2b)
@@ -425,6 +427,9 @@ share-hint = A link for the class: this state or this lesson step, with controls
 share-title = Share with the class
 share-scan = Scan with a phone's camera.
 share-copy = Copy the link
+share-embed = Embed in a slide or a course page
+share-embed-hint = An <iframe> of this state without the page's panels (embed=1), 960×540 like a slide. The host page can drive it by postMessage: see docs/embed.md.
+share-copy-embed = Copy the embed code
 share-from-step = This lesson step, from its start
 share-as-is = The page as it is now
 share-answers = With the answers chosen
@@ -515,3 +520,37 @@ error-worker-threw = a worker failed: { $detail }
 error-worker-could-not-start = a worker could not start or load the page's code { $detail }
 error-qr-too-long = the link is too long for a QR code ({ $bytes } bytes): leave some items out
 error-qr-other = no QR code for this link: { $detail }
+
+## The page embedded in another (embed=1) and the host page's messages (docs/embed.md).
+embed-time = t = { $t } s
+embed-open = Open in Attitude Lab ↗
+embed-open-hint = { $lab }: this state in the whole page, in a new tab.
+host-must-value = a number or a choice's name
+host-error-not-json = The message is not JSON: { $why }
+host-error-not-attlab = The message is not for Attitude Lab: it needs "api": 1 and a "type".
+host-error-api-version = This page speaks version { $api } of the API; the message asked for { $version }.
+host-error-unknown-type = No message type “{ $type }” (docs/embed.md lists them).
+host-error-bad-argument = “{ $name }” must be { $must }.
+host-error-bad-parameter = { $why }
+host-error-locked = The link locks the control “{ $label }”: it keeps its value.
+host-error-no-preset = This lab has no preset “{ $id }”.
+host-error-no-lab = No lab “{ $id }”.
+host-error-no-lesson = This lab has no lesson.
+host-error-no-step = The lesson has no step “{ $id }”.
+host-error-no-question = The step shown asks no question.
+host-error-no-answer = The question has no answer { $answer }.
+host-error-origin-not-allowed = The page at { $origin } may not drive this one: its link must allow it with origin={ $origin }.
+host-must-string = a string
+host-must-params = an object of parameter keys and values
+host-must-positive = a positive number
+host-must-step = a step number from 1, or the step's id
+host-must-answer = an answer number from 1
+
+## About and citing (the end of the controls).
+about-title = About and citing
+about-build = Attitude Lab { $version }, commit { $commit }, built { $date }.
+about-cite = Cite the software
+about-cite-software = The Attitude Lab contributors (2026). Attitude Lab, version { $version } (commit { $commit }) [software]. MIT OR Apache-2.0. CITATION.cff in the repository gives it and the papers.
+about-papers = The papers the labs reproduce
+about-teacher-notes = Teacher notes for this lesson (printable)
+about-licence = Free software under the MIT or Apache-2.0 licence.

@@ -389,6 +389,8 @@ link-fault-speed = скорость должна быть от { $lo } до { $h
 link-fault-presenter = для presenter (режим для проектора) нужно 1 или 0
 link-fault-theme = для theme (оформление) нужно light или dark
 link-fault-lang = для lang (язык) нужно en или ru
+link-fault-embed = для embed (встраивание) нужно 1 или 0
+link-fault-origin = `{ $text }` — не адрес сайта (origin): нужно вроде https://example.org или http://127.0.0.1:8000, или *
 link-fault-answers-without-lesson = ответы задаются только вместе с уроком (lesson=<работа>)
 link-fault-no-lesson = у этой работы нет урока
 link-fault-not-an-answer = «{ $part }» — не номер шага с буквой ответа (например, 2b)
@@ -440,6 +442,9 @@ share-hint = Ссылка для группы: это состояние или 
 share-title = Поделиться с группой
 share-scan = Наведите камеру телефона.
 share-copy = Копировать ссылку
+share-embed = Встроить в слайд или страницу курса
+share-embed-hint = <iframe> с этим состоянием без панелей страницы (embed=1), 960×540, как слайд. Страница-хозяин может управлять им через postMessage: см. docs/embed.md.
+share-copy-embed = Копировать код для встраивания
 share-from-step = Этот шаг урока, с начала
 share-as-is = Страница как есть
 share-answers = С выбранными ответами
@@ -530,3 +535,37 @@ error-worker-threw = обработчик сломался: { $detail }
 error-worker-could-not-start = обработчик не смог запуститься или загрузить код страницы { $detail }
 error-qr-too-long = ссылка слишком длинная для QR-кода ({ $bytes } байт): уберите из неё что-нибудь
 error-qr-other = для этой ссылки нет QR-кода: { $detail }
+
+## Страница, встроенная в другую (embed=1), и сообщения страницы-хозяина (docs/embed.md).
+embed-time = t = { $t } с
+embed-open = Открыть в Attitude Lab ↗
+embed-open-hint = { $lab }: это состояние на целой странице, в новой вкладке.
+host-must-value = числом или названием варианта
+host-error-not-json = Сообщение — не JSON: { $why }
+host-error-not-attlab = Сообщение не для Attitude Lab: в нём нужны "api": 1 и "type".
+host-error-api-version = Эта страница понимает API версии { $api }, а сообщение просит { $version }.
+host-error-unknown-type = Нет сообщения типа «{ $type }» (их список — в docs/embed.md).
+host-error-bad-argument = «{ $name }» должно быть { $must }.
+host-error-bad-parameter = { $why }
+host-error-locked = Ссылка блокирует «{ $label }»: значение не меняется.
+host-error-no-preset = В этой лаборатории нет набора «{ $id }».
+host-error-no-lab = Нет лаборатории «{ $id }».
+host-error-no-lesson = В этой лаборатории нет урока.
+host-error-no-step = В уроке нет шага «{ $id }».
+host-error-no-question = На этом шаге нет вопроса.
+host-error-no-answer = У вопроса нет ответа { $answer }.
+host-error-origin-not-allowed = Страница { $origin } не может управлять этой: ссылка должна разрешить её через origin={ $origin }.
+host-must-string = строкой
+host-must-params = объектом из ключей параметров и значений
+host-must-positive = положительным числом
+host-must-step = номером шага от 1 или его id
+host-must-answer = номером ответа от 1
+
+## О программе и как ссылаться (конец панели управления).
+about-title = О программе и как ссылаться
+about-build = Attitude Lab { $version }, коммит { $commit }, сборка { $date }.
+about-cite = Как сослаться на программу
+about-cite-software = The Attitude Lab contributors (2026). Attitude Lab, версия { $version } (коммит { $commit }) [программа]. MIT или Apache-2.0. Файл CITATION.cff в репозитории даёт эту ссылку и ссылки на статьи.
+about-papers = Статьи, которые воспроизводят лаборатории
+about-teacher-notes = Записки для преподавателя к этому уроку (для печати)
+about-licence = Свободная программа под лицензией MIT или Apache-2.0.

@@ -145,6 +145,9 @@ pub struct LabSpec {
     pub title: &'static str,
     /// The paper it reproduces (or "foundation").
     pub paper: &'static str,
+    /// The paper's full reference, as the About line, the teacher notes and CITATION.cff
+    /// give it (a field the project's digest of the paper lacks is said to be missing).
+    pub reference: &'static str,
     /// A paragraph for the explanation panel: what happens and what each slider does.
     pub summary: &'static str,
     /// Parameters (sliders).

@@ -75,6 +75,10 @@ impl dyn Lab + '_ {
     pub fn paper(&self) -> &'static str {
         self.spec().paper
     }
+    /// [`LabSpec::reference`].
+    pub fn reference(&self) -> &'static str {
+        self.spec().reference
+    }
     /// [`LabSpec::summary`].
     pub fn summary(&self) -> &'static str {
         self.spec().summary

@@ -44,6 +44,12 @@ pub enum LinkFault {
     /// `lang=` not a language of the page.
     #[error("lang must be en or ru")]
     Lang,
+    /// `embed=` not 1 or 0.
+    #[error("embed must be 1 or 0")]
+    Embed,
+    /// `origin=` not a web origin.
+    #[error("`{0}` is not a web origin (like https://example.org or http://127.0.0.1:8000, or *)")]
+    Origin(String),
     /// `answers=` without `lesson=`.
     #[error("answers need a lesson (lesson=<lab>)")]
     AnswersWithoutLesson,
@@ -85,6 +91,8 @@ impl LinkFault {
             Self::Presenter => "link-fault-presenter",
             Self::Theme => "link-fault-theme",
             Self::Lang => "link-fault-lang",
+            Self::Embed => "link-fault-embed",
+            Self::Origin(_) => "link-fault-origin",
             Self::AnswersWithoutLesson => "link-fault-answers-without-lesson",
             Self::NoLesson => "link-fault-no-lesson",
             Self::NotAnAnswer(_) => "link-fault-not-an-answer",
@@ -103,6 +111,7 @@ impl LinkFault {
                 ("hi", i18n::number(lang, &hi.to_string())),
             ],
             Self::NotAnAnswer(part) => vec![("part", part.clone())],
+            Self::Origin(text) => vec![("text", text.clone())],
             Self::NoSuchAnswer { step, letter } => {
                 vec![("step", step.to_string()), ("letter", letter.to_string())]
             }
@@ -142,6 +151,8 @@ mod tests {
             LinkFault::Presenter,
             LinkFault::Theme,
             LinkFault::Lang,
+            LinkFault::Embed,
+            LinkFault::Origin("ftp://x".into()),
             LinkFault::AnswersWithoutLesson,
             LinkFault::NoLesson,
             LinkFault::NotAnAnswer("9q".into()),
@@ -166,6 +177,8 @@ mod tests {
                 | LinkFault::Presenter
                 | LinkFault::Theme
                 | LinkFault::Lang
+                | LinkFault::Embed
+                | LinkFault::Origin(_)
                 | LinkFault::AnswersWithoutLesson
                 | LinkFault::NoLesson
                 | LinkFault::NotAnAnswer(_)
@@ -181,7 +194,7 @@ mod tests {
     #[test]
     fn every_link_fault_is_said_in_both_languages_with_its_arguments() {
         let faults = every_fault();
-        assert_eq!(faults.len(), 15);
+        assert_eq!(faults.len(), 17);
         for fault in faults {
             let id = fault.message_id();
             let (en, ru) = (fault.words(Lang::En), fault.words(Lang::Ru));

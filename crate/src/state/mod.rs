@@ -39,6 +39,13 @@ pub struct UrlState {
     pub hide: Vec<String>,
     /// Parameters whose controls the page shows but locks (`lock=key.key`, or `all`).
     pub lock: Vec<String>,
+    /// Embedded in another page (`embed=1`): the views and the plot without the page's
+    /// panels, for a slide or a course page's `<iframe>`.
+    pub embed: bool,
+    /// The other web origins whose pages may drive this one by `postMessage` and hear its
+    /// events (`origin=https://example.org`, repeated; `*` for any): see docs/embed.md. The
+    /// page's own origin always may.
+    pub origins: Vec<String>,
 }
 
 /// Where a link opens a lesson, and the answers chosen so far.
@@ -151,6 +158,8 @@ impl UrlState {
             lesson: None,
             hide: Vec::new(),
             lock: Vec::new(),
+            embed: false,
+            origins: Vec::new(),
         }
     }
 
@@ -169,6 +178,12 @@ impl UrlState {
         }
         if let Some(lang) = self.lang {
             out.append_pair("lang", lang.code());
+        }
+        if self.embed {
+            out.append_pair("embed", "1");
+        }
+        for origin in &self.origins {
+            out.append_pair("origin", origin);
         }
         if let Some(lesson) = &self.lesson {
             out.append_pair("lesson", self.lab_id)
@@ -263,7 +278,7 @@ impl UrlState {
         }
         if !matches!(
             key,
-            "lab" | "seed" | "speed" | "presenter" | "theme" | "lang"
+            "lab" | "seed" | "speed" | "presenter" | "theme" | "lang" | "embed" | "origin"
         ) {
             return self
                 .params
@@ -301,10 +316,43 @@ impl UrlState {
                 let lang = Lang::from_tag(value).ok_or(LinkFault::Lang)?;
                 self.lang = Some(lang);
             }
+            "embed" => match value {
+                "1" | "true" | "on" => self.embed = true,
+                "0" | "false" | "off" => self.embed = false,
+                _ => return Err(LinkFault::Embed),
+            },
+            "origin" => {
+                let origin =
+                    web_origin(value).ok_or_else(|| LinkFault::Origin(value.to_string()))?;
+                if !self.origins.contains(&origin) {
+                    self.origins.push(origin);
+                }
+            }
             _ => {}
         }
         Ok(())
     }
+}
+
+/// `text` as a web origin a link may allow (`scheme://host[:port]`, lower case, without a
+/// trailing `/`), `*` (any origin) or `null` (a page opened from a file, a sandboxed frame);
+/// `None` if it is none of these (a path, a query, another scheme, spaces).
+pub fn web_origin(text: &str) -> Option<String> {
+    let text = text.trim_end_matches('/').to_ascii_lowercase();
+    if text == "*" || text == "null" {
+        return Some(text);
+    }
+    let (scheme, rest) = text.split_once("://")?;
+    let (host, port) = match rest.rsplit_once(':') {
+        // An IPv6 literal's colons sit inside its brackets.
+        Some((host, port)) if !port.contains(']') => (host, Some(port)),
+        _ => (rest, None),
+    };
+    let host_ok = !host.is_empty()
+        && (host.chars())
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '[' | ']' | ':'));
+    let port_ok = port.is_none_or(|p| p.parse::<u16>().is_ok());
+    (matches!(scheme, "http" | "https") && host_ok && port_ok).then_some(text)
 }
 
 #[cfg(test)]
@@ -373,6 +421,39 @@ mod tests {
         let (back, errors) = UrlState::parse(&s.encode());
         assert!(errors.is_empty(), "{errors:?}");
         assert_eq!(back, s);
+    }
+
+    #[test]
+    fn embed_and_origins_round_trip_and_bad_ones_are_refused() {
+        let (s, errors) = UrlState::parse(
+            "lab=p3&embed=1&origin=https%3A%2F%2FCourse.example.org%2F&origin=http://127.0.0.1:8101&origin=*",
+        );
+        assert!(errors.is_empty(), "{errors:?}");
+        assert!(s.embed);
+        assert_eq!(
+            s.origins,
+            ["https://course.example.org", "http://127.0.0.1:8101", "*"]
+        );
+        assert_eq!(UrlState::parse(&s.encode()).0, s);
+        let (s, errors) = UrlState::parse(
+            "embed=2&origin=ftp://x.org&origin=https://x.org/page&origin=http://h:99999&origin=null",
+        );
+        assert!(!s.embed);
+        assert_eq!(s.origins, ["null"]);
+        let faults: Vec<_> = errors.iter().map(|e| e.fault.clone()).collect();
+        assert_eq!(
+            faults,
+            [
+                Some(LinkFault::Embed),
+                Some(LinkFault::Origin("ftp://x.org".into())),
+                Some(LinkFault::Origin("https://x.org/page".into())),
+                Some(LinkFault::Origin("http://h:99999".into())),
+            ]
+        );
+        assert_eq!(
+            web_origin("http://[::1]:8000").as_deref(),
+            Some("http://[::1]:8000")
+        );
     }
 
     #[test]

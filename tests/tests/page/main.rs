@@ -20,6 +20,7 @@ use std::time::{Duration, Instant};
 mod a11y;
 mod checks;
 mod driver;
+mod embed;
 mod fuzz;
 mod lessons;
 mod live;
@@ -300,6 +301,25 @@ fn cached_build_problems(session: &Session<'_>) -> Vec<String> {
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn lessons_open_at_their_step_and_pause() {
     page_test("lessons", lessons::lesson_problems);
+}
+
+/// A host page on another loopback origin drives the embedded lab by `postMessage`, and
+/// one on an origin the link does not allow is refused (see `embed.rs`).
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
+fn embedded_page_is_driven_by_its_host() {
+    page_test("embed", |session, base| {
+        let mut problems = embed::embed_problems(session, base);
+        problems.extend(embed::embed_screenshot(session, base));
+        problems
+    });
+}
+
+/// Every lesson's teacher notes, in both languages, printed to PDF (see `embed.rs`).
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
+fn teacher_notes_print() {
+    page_test("teacher notes", embed::teacher_print_problems);
 }
 
 /// Random clicks, drags, wheel, touches and keys on every lab (see `fuzz.rs`).

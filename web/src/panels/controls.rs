@@ -366,4 +366,5 @@ fn explanation(ui: &mut Ui, app: &AppState) {
             ui.add_space(4.0);
             ui.label(RichText::new(tr(app, "frames-help")).small());
         });
+    super::about::about(ui, app);
 }

@@ -53,7 +53,10 @@ pub(super) fn card(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 ui.add_space(4.0);
                 super::sweeps::in_lesson(ui, app, i, commands);
             }
-            tools(ui, app, commands);
+            // Embedded, the host page is the way out and the way on.
+            if !app.view().embed {
+                tools(ui, app, commands);
+            }
         });
 }
 

@@ -2,9 +2,11 @@
 //! themselves. The generic lab panel serves every lab from its parameter specs and recorded
 //! series; a lab that needs its own controls gets its own file here.
 
+mod about;
 mod central;
 mod controls;
 mod cycle;
+mod embed;
 mod fit;
 mod keys;
 mod lab_picker;
@@ -27,6 +29,7 @@ pub use controls::controls;
 pub use cycle::{
     cycle_panel, matrix as cycle_matrix, num as cycle_num, shown_filter, vector as cycle_vector,
 };
+pub use embed::{embed_bar, open_url};
 pub use keys::{focus_ring, help_dialog, shortcuts, tabs};
 pub use narration::{Narration, describe as describe_run};
 pub use narrow::{controls_for_the_screen, is_narrow, is_phone, is_short, touch_style};

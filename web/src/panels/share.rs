@@ -34,9 +34,17 @@ pub fn share_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comm
             });
         });
         whole_link(ui, &link);
+        embed(ui, app, options);
         ui.horizontal(|ui| {
             if ui.button(tr(app, "share-copy")).clicked() {
                 commands.push(ShareCommand::Copy.into());
+            }
+            if ui
+                .button(tr(app, "share-copy-embed"))
+                .on_hover_text(tr(app, "share-embed-hint"))
+                .clicked()
+            {
+                commands.push(ShareCommand::CopyEmbed.into());
             }
             ui.button(tr(app, "close")).clicked()
         })
@@ -45,6 +53,16 @@ pub fn share_dialog(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comm
     if modal.inner || modal.should_close() {
         commands.push(ShareCommand::Close.into());
     }
+}
+
+/// The `<iframe>` snippet for a slide or a course page, folded (the class needs the link).
+fn embed(ui: &mut Ui, app: &AppState, options: &ShareOptions) {
+    egui::CollapsingHeader::new(tr(app, "share-embed"))
+        .default_open(false)
+        .show(ui, |ui| {
+            ui.label(egui::RichText::new(tr(app, "share-embed-hint")).small());
+            whole_link(ui, &app.share_embed(options));
+        });
 }
 
 /// The link, whole: wrapped anywhere (it has no spaces) in the dialog's width, and

@@ -219,6 +219,8 @@ impl AppState {
         state.link_problems = errors.iter().map(|e| link_problem(lang, lab, e)).collect();
         state.view.hide = url.hide;
         state.view.lock = url.lock;
+        state.view.embed = url.embed;
+        state.view.origins = url.origins;
         if let Some(link) = &url.lesson {
             state.open_lesson_link(link);
         }

@@ -212,6 +212,8 @@ impl AppState {
         self.view = ViewState {
             hide: std::mem::take(&mut self.view.hide),
             lock: std::mem::take(&mut self.view.lock),
+            origins: std::mem::take(&mut self.view.origins),
+            embed: self.view.embed,
             presenter: self.view.presenter,
             theme: self.view.theme,
             lang: self.view.lang,

@@ -31,6 +31,8 @@ pub enum ShareCommand {
     Close,
     /// Copy the link to the clipboard.
     Copy,
+    /// Copy the `<iframe>` snippet that embeds the link in a slide or a course page.
+    CopyEmbed,
     /// Link the lesson step from its start (or the state as it is now).
     FromStep(bool),
     /// Open the link in presenter mode.
@@ -143,9 +145,15 @@ impl AppState {
                 .as_ref()
                 .map(|o| super::Effect::Clipboard(self.share_link(o)));
         }
+        if command == ShareCommand::CopyEmbed {
+            return self
+                .share
+                .as_ref()
+                .map(|o| super::Effect::Clipboard(self.share_embed(o)));
+        }
         let o = self.share.as_mut()?;
         match command {
-            ShareCommand::Open | ShareCommand::Copy => {}
+            ShareCommand::Open | ShareCommand::Copy | ShareCommand::CopyEmbed => {}
             ShareCommand::Close => self.share = None,
             ShareCommand::FromStep(on) => o.from_step = on,
             ShareCommand::Presenter(on) => o.presenter = on,
@@ -182,6 +190,8 @@ impl AppState {
             lesson,
             hide: owned(&options.hide),
             lock: owned(&options.lock),
+            embed: false,
+            origins: Vec::new(),
         }
         .encode()
     }
@@ -191,4 +201,33 @@ impl AppState {
         let page = platform::page_address().unwrap_or_default();
         format!("{page}#{}", self.share_fragment(options))
     }
+
+    /// The `<iframe>` that embeds the share link's state in another page (`embed=1`: the
+    /// views and the plot without the panels, 16:9 like a slide; docs/embed.md).
+    pub fn share_embed(&self, options: &ShareOptions) -> String {
+        let src = format!("{}&embed=1", self.share_link(options));
+        let lab = self.sim.lab();
+        let title = attlab::i18n::lab_text(
+            self.view.lang(),
+            &attlab::i18n::lab_title_id(lab.id()),
+            lab.title(),
+        );
+        embed_snippet(&src, &format!("Attitude Lab: {title}"))
+    }
+}
+
+/// The `<iframe>` element for `src`, titled `title` (what a screen reader announces), sized
+/// like a 960×540 slide and no wider than its column; the motion sensors allowed, for a lab
+/// that reads the phone's.
+pub fn embed_snippet(src: &str, title: &str) -> String {
+    let attr = |text: &str| {
+        text.replace('&', "&amp;")
+            .replace('"', "&quot;")
+            .replace('<', "&lt;")
+    };
+    format!(
+        "<iframe src=\"{}\" title=\"{}\" width=\"960\" height=\"540\" style=\"border:0;max-width:100%\" allow=\"fullscreen; accelerometer; gyroscope\" loading=\"lazy\"></iframe>",
+        attr(src),
+        attr(title)
+    )
 }

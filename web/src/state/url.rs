@@ -66,6 +66,8 @@ impl AppState {
             lesson: self.lesson.as_ref().map(super::LessonState::link),
             hide: self.view.hide.clone(),
             lock: self.view.lock.clone(),
+            embed: self.view.embed,
+            origins: self.view.origins.clone(),
         }
         .encode()
     }

@@ -67,6 +67,10 @@ pub struct ViewState {
     pub lock: Vec<String>,
     /// The filter-cycle panel is open.
     pub cycle_open: bool,
+    /// Embedded in another page (`embed=1`): the views and the plot, without the panels.
+    pub embed: bool,
+    /// The other origins whose pages may drive this one (`origin=` in the link).
+    pub origins: Vec<String>,
 }
 
 impl ViewState {
@@ -112,6 +116,8 @@ impl ViewState {
             hide: Vec::new(),
             lock: Vec::new(),
             cycle_open: false,
+            embed: false,
+            origins: Vec::new(),
         }
     }
 }

@@ -130,6 +130,20 @@ enum Command {
         #[arg(long, default_value_t = 2000.0)]
         max_csv_mb: f64,
     },
+    /// Write the teacher notes (a printable page per lesson, in English and Russian, and an
+    /// index) into a folder: `cargo xtask dist` puts them in the site's `teacher/`.
+    Teacher {
+        /// The folder (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+        /// The site's public address, ending in `/`: the notes' links and QR codes point there
+        /// (without it, links are relative to the site and there are no QR codes).
+        #[arg(long)]
+        address: Option<String>,
+        /// The commit the site is built from (the notes' footer).
+        #[arg(long, default_value = "unknown")]
+        commit: String,
+    },
     /// Time one simulation step of every lab and one step of every estimator.
     Bench {
         /// Steps to time per item.
@@ -203,6 +217,11 @@ pub fn main() -> ExitCode {
             &set,
         )
         .map(|()| true),
+        Command::Teacher {
+            out,
+            address,
+            commit,
+        } => teacher(&out, address.as_deref(), &commit),
         Command::Bench { steps, lab } => match lab.as_deref().map(find_lab).transpose() {
             Ok(only) => {
                 bench(steps.max(10), only);
@@ -365,6 +384,20 @@ fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
         println!("FAIL {f}");
     }
     report.failures.is_empty()
+}
+
+/// `attlab teacher`: writes the notes and says where.
+fn teacher(out: &Path, address: Option<&str>, commit: &str) -> Result<bool, String> {
+    use attlab::teacher::{Build, write};
+    let build =
+        Build::new(address, env!("CARGO_PKG_VERSION"), commit).map_err(|e| e.to_string())?;
+    let written = write(out, &build).map_err(|e| e.to_string())?;
+    println!(
+        "attlab: {} teacher pages in {}",
+        written.len(),
+        out.display()
+    );
+    Ok(true)
 }
 
 #[cfg(test)]

@@ -32,6 +32,7 @@ const SPEC: LabSpec = LabSpec {
     id: "free-rotation",
     title: "Free rotation (gyro integration)",
     paper: "Foundation lab; kinematics of paper 3 (Matveev et al. 2025), eq. 21",
+    reference: "Matveev V. V. et al. Study of new kinematic parameters for strapdown orientation systems. Devices and Methods of Measurements, 2025, vol. 16, no. 3, pp. 202–211 (in Russian): its kinematics, eq. 21.",
     summary: "A rigid body tumbles without torque (Euler's equations). A three-axis gyro measures its \
          rate with noise and bias, and two estimators integrate the gyro: quaternions \
          (q̇ = ½ q⊗ω) and paper 3's (u, v, z) (eq. 21), which switches to the flipped chart \

@@ -156,6 +156,7 @@ const SPEC: LabSpec = LabSpec {
     id: "p1",
     title: "Paper 1: suspended mock-up, one-axis gyro",
     paper: "Ivanov & Ovchinnikov, one-axis gyroscope and a suspended mock-up, KIAM RAS preprint",
+    reference: "Ivanov D. S., Ovchinnikov M. Yu. Determination of the orientation of a suspended mock-up using a one-axis gyroscope. Preprint of the Keldysh Institute of Applied Mathematics RAS, 32 pp. (in Russian).",
     summary: "A body hangs on a thin string and twists about the vertical: Iφ̈ = −fφ − damping, with \
          f = G·I_p/L and I_p = πd⁴/32, so T = 2π√(I/f). A one-axis gyro (noise, quantisation, range, \
          averaging to the filter rate) is the only sensor. Three estimators: direct integration \

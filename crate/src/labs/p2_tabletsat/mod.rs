@@ -162,6 +162,7 @@ const SPEC: LabSpec = LabSpec {
     id: "p2",
     title: "Paper 2: TabletSat, twelve sensor sets",
     paper: "Ivanov, Ivlev, Karpenko, Ovchinnikov, TabletSat attitude determination, Keldysh preprint 2014-64",
+    reference: "Ivanov, Ivlev, Karpenko, Ovchinnikov. Attitude determination algorithms investigation for microsatellites of TabletSat series. Keldysh Institute of Applied Mathematics RAS, preprint 2014-64 (in Russian).",
     summary: "A 20-kg microsatellite on a circular orbit holds the orbital frame (e₃ up, e₂ along the \
          orbit normal) with reaction wheels against gravity gradient and an unmodelled torque. \
          Four kinds of sensors — magnetometer (the field from NOAA's WMM), five sun-sensor heads, a \

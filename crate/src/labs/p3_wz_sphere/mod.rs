@@ -136,6 +136,7 @@ const SPEC: LabSpec = LabSpec {
     id: "p3",
     title: "Paper 3: (w, z) on the Riemann sphere",
     paper: "Matveev et al., Devices and Methods of Measurements 2025;16(3):202–211",
+    reference: "Matveev V. V. et al. Study of new kinematic parameters for strapdown orientation systems. Devices and Methods of Measurements, 2025, vol. 16, no. 3, pp. 202–211 (in Russian).",
     summary: "The vertical seen from the body, k = (a′, b′, c′), projected from the pole S onto the body plane gives \
          w = u + jv = (a′ + jb′)/(1 + c′) (eq. 12); z is the turn about the vertical, A = A(w)·A(z). \
          The gyro drives u̇ = vω_ζ + uvω_ξ − ½ω_η(1 + u² − v²), v̇ = −uω_ζ − uvω_η + ½ω_ξ(1 − u² + v²), \

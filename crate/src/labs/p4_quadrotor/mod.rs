@@ -202,6 +202,7 @@ const SPEC: LabSpec = LabSpec {
     id: "p4",
     title: "Paper 4: quadrotor roll, KF tuned by γ = det Q/det R",
     paper: "Pham, Shilin, Girnik, Nguyen, Kalman filter synthesis for an asymmetric quadrotor, Inzhenernyj vestnik Dona 2025 No. 10",
+    reference: "Pham Trong H., Shilin A. A., Girnik A. S., Nguyen M. T. Synthesis of a Kalman filter for the control of an asymmetric quadcopter with optimization of the ratio of the covariance matrices. Inzhenernyj vestnik Dona, 2025, no. 10, article 10456 (in Russian).",
     summary: "A rig rolls about one axis: the paper's test bench (a lever on a bearing with one motor, \
          Fig. 3) or a quadrotor whose arms and motors differ (eq. 2), so that holding any angle \
          needs a constant command u₀ ≠ 0. The controller — the nested P–PI of Fig. 1, or a plain \

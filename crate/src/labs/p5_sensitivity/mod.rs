@@ -33,6 +33,7 @@ const SPEC: LabSpec = LabSpec {
     id: "p5",
     title: "Paper 5: correcting rates with the sensitivity matrix",
     paper: "Bashniakov, Pichkur, Polishchuk, Linder, adaptive correction of angular velocities via the sensitivity matrix",
+    reference: "Bashniakov A., Pichkur V., Polishchuk A., Linder Y. (Taras Shevchenko National University of Kyiv). On correcting a rigid body's angular velocities from reference attitudes by the sensitivity matrix (title as the project's digest describes it; the paper's own title, venue and year are not recorded). UDC 519.688.",
     summary: "Measured rates ω drive the quaternion, 2Λ̇ = Λ ∘ (ω + p), with an additive correction p. \
          Beside Λ runs the sensitivity U = ∂Λ/∂p (4×3), reset to 0 at every reference. At each \
          reference attitude (every Δt) p takes one Gauss–Newton step h = (UᵀQU + εI)⁻¹UᵀQ(Λ_ref − Λ). \
