@@ -212,10 +212,7 @@ impl AttLabApp {
         if let Some(text) = self.narration.due(&self.state, now) {
             crate::a11y::describe(&text);
         }
-        if self.host.report(&self.state, now) {
-            // A paused page draws only on input: the host's ticks need a frame a second.
-            ui.ctx().request_repaint_after(crate::host::TICK_EVERY);
-        }
+        self.host.report(&self.state, now, ui.ctx());
         self.frames += 1;
         self.publish(ui.ctx());
     }

@@ -526,7 +526,7 @@ embed-time = t = { $t } s
 embed-open = Open in Attitude Lab ↗
 embed-open-hint = { $lab }: this state in the whole page, in a new tab.
 host-must-value = a number or a choice's name
-host-error-not-json = The message is not JSON: { $why }
+host-error-not-json = The message is not JSON (it stops parsing at line { $line }, column { $column }; 0 if it is a value JSON cannot hold).
 host-error-not-attlab = The message is not for Attitude Lab: it needs "api": 1 and a "type".
 host-error-api-version = This page speaks version { $api } of the API; the message asked for { $version }.
 host-error-unknown-type = No message type “{ $type }” (docs/embed.md lists them).

@@ -541,7 +541,7 @@ embed-time = t = { $t } с
 embed-open = Открыть в Attitude Lab ↗
 embed-open-hint = { $lab }: это состояние на целой странице, в новой вкладке.
 host-must-value = числом или названием варианта
-host-error-not-json = Сообщение — не JSON: { $why }
+host-error-not-json = Сообщение — не JSON (разбор обрывается на строке { $line }, в столбце { $column }; 0 — если это значение, которое JSON не выражает).
 host-error-not-attlab = Сообщение не для Attitude Lab: в нём нужны "api": 1 и "type".
 host-error-api-version = Эта страница понимает API версии { $api }, а сообщение просит { $version }.
 host-error-unknown-type = Нет сообщения типа «{ $type }» (их список — в docs/embed.md).

@@ -52,6 +52,17 @@ fn every_series_groups_tab_title_and_axis_noun_are_in_the_catalogue() {
 
 /// The arguments the catalogue's messages take as text, each given "x" by the format test.
 const TEXT_ARGUMENTS: &[&str] = &[
+    // The About line and the host API's errors.
+    "version",
+    "commit",
+    "date",
+    "line",
+    "column",
+    "api",
+    "type",
+    "must",
+    "origin",
+    "text",
     "steps",
     "part",
     "letter",

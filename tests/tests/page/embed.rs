@@ -137,6 +137,16 @@ pub(crate) fn embed_problems(session: &Session<'_>, base: &str) -> Vec<String> {
                 && s["playing"] == false => {}
         other => problems.push(format!("the state after the requests: {other:?}")),
     }
+    problems.extend(tick_problems(session));
+    problems.extend(console_problems(&session.console().unwrap_or_default()));
+    problems.extend(refused_problems(session, base, port, &fragment));
+    problems
+}
+
+/// Ticks go on while the lab is paused (a frame a second for the host), with each filter's
+/// error.
+fn tick_problems(session: &Session<'_>) -> Vec<String> {
+    let mut problems = Vec::new();
     let ticks = |session: &Session<'_>| {
         events(session)
             .into_iter()
@@ -154,8 +164,6 @@ pub(crate) fn embed_problems(session: &Session<'_>, base: &str) -> Vec<String> {
     if ticks(session) <= before {
         problems.push("the ticks stopped".into());
     }
-    problems.extend(console_problems(&session.console().unwrap_or_default()));
-    problems.extend(refused_problems(session, base, port, &fragment));
     problems
 }
 

@@ -11,8 +11,9 @@ use serde_json::Value;
 pub struct Incoming {
     /// The sending page's origin (`null` for a page from a file).
     pub origin: String,
-    /// The message's data as JSON text (`Err`: it could not be written as JSON).
-    pub data: Result<String, String>,
+    /// The message's data as JSON text (`None`: a value JSON cannot hold, a function or a
+    /// cycle).
+    pub data: Option<String>,
     /// Where the answer goes.
     #[cfg(target_arch = "wasm32")]
     source: Option<web_sys::Window>,
@@ -135,11 +136,10 @@ mod wasm {
                     }
                     let data = event.data();
                     let data = match data.as_string() {
-                        Some(text) => Ok(serde_json::Value::String(text).to_string()),
+                        Some(text) => Some(serde_json::Value::String(text).to_string()),
                         None => js_sys::JSON::stringify(&data)
                             .ok()
-                            .and_then(|s| s.as_string())
-                            .ok_or_else(|| "a value JSON cannot hold".to_string()),
+                            .and_then(|s| s.as_string()),
                     };
                     queue.borrow_mut().push(Incoming {
                         origin: event.origin(),

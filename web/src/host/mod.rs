@@ -246,7 +246,7 @@ impl HostLink {
             let lang = state.view().lang();
             let answer = if protocol::allowed(&message.origin, &own, &state.view().origins) {
                 let request = (message.data.clone())
-                    .map_err(HostError::NotJson)
+                    .ok_or(HostError::NotJson(0, 0))
                     .and_then(|text| protocol::parse(&text));
                 match request {
                     Ok(request) => match commands(state, &request.action) {
@@ -265,7 +265,7 @@ impl HostLink {
                         Err(e) => protocol::error(request.id, &e, lang),
                     },
                     Err(e) => {
-                        let id = message.data.as_deref().ok().and_then(protocol::id_of);
+                        let id = message.data.as_deref().and_then(protocol::id_of);
                         protocol::error(id, &e, lang)
                     }
                 }
@@ -276,13 +276,15 @@ impl HostLink {
         }
     }
 
-    /// Sends the events due at `now` to the embedding page, if the link allows it; returns
-    /// whether one hears them (the frame loop then draws at least once per [`TICK_EVERY`]).
-    pub fn report(&mut self, state: &AppState, now: Instant) -> bool {
+    /// Sends the events due at `now` to the embedding page, if the link allows it; while
+    /// one hears them, `ctx` draws at least once per [`TICK_EVERY`] (a paused page draws
+    /// only on input, and the ticks need a frame).
+    pub fn report(&mut self, state: &AppState, now: Instant, ctx: &egui::Context) {
         let events = self.reporter.due(state, now);
         let own = self.bridge.own_origin();
         let origins = &state.view().origins;
-        self.bridge
-            .report(&events, |o| protocol::allowed(o, &own, origins))
+        if (self.bridge).report(&events, |o| protocol::allowed(o, &own, origins)) {
+            ctx.request_repaint_after(TICK_EVERY);
+        }
     }
 }

@@ -57,8 +57,9 @@ pub enum StepRef {
 /// reader's message in the catalogue (`host-error-<code>`) needs.
 #[derive(Clone, Debug, PartialEq)]
 pub enum HostError {
-    /// Not JSON (a string that does not parse, or a value JSON cannot hold).
-    NotJson(String),
+    /// Not JSON: where the text stopped parsing (line and column from 1), or (0, 0) for a
+    /// value JSON cannot hold.
+    NotJson(usize, usize),
     /// JSON, but not an object with `"api"`: not a message of this API.
     NotOurs,
     /// Another version of the API.
@@ -92,7 +93,7 @@ impl HostError {
     /// The error's code in an `error` event.
     pub fn code(&self) -> &'static str {
         match self {
-            Self::NotJson(_) => "not-json",
+            Self::NotJson(..) => "not-json",
             Self::NotOurs => "not-attlab",
             Self::Version(_) => "api-version",
             Self::UnknownType(_) => "unknown-type",
@@ -112,7 +113,9 @@ impl HostError {
     /// The catalogue message's arguments.
     pub fn arguments(&self) -> Vec<(&'static str, String)> {
         match self {
-            Self::NotJson(why) => vec![("why", why.clone())],
+            Self::NotJson(line, column) => {
+                vec![("line", line.to_string()), ("column", column.to_string())]
+            }
             Self::Version(v) => vec![("version", v.clone()), ("api", API.to_string())],
             Self::UnknownType(t) => vec![("type", t.clone())],
             Self::BadArgument(name, _) => vec![("name", (*name).to_string())],
@@ -140,12 +143,11 @@ impl HostError {
 /// Parses one message's data: a JSON text (a host may send a string) or the JSON of the
 /// object it posted.
 pub fn parse(text: &str) -> Result<Request, HostError> {
-    let value: Value = serde_json::from_str(text).map_err(|e| HostError::NotJson(e.to_string()))?;
+    let not_json = |e: serde_json::Error| HostError::NotJson(e.line(), e.column());
+    let value: Value = serde_json::from_str(text).map_err(not_json)?;
     // A host that posted a JSON string of the object.
     let value = match value {
-        Value::String(inner) => {
-            serde_json::from_str(&inner).map_err(|e| HostError::NotJson(e.to_string()))?
-        }
+        Value::String(inner) => serde_json::from_str(&inner).map_err(not_json)?,
         other => other,
     };
     let Value::Object(message) = value else {
@@ -322,7 +324,7 @@ mod tests {
     #[test]
     fn every_error_has_words_in_both_languages() {
         let all = [
-            HostError::NotJson("x".into()),
+            HostError::NotJson(1, 2),
             HostError::NotOurs,
             HostError::Version("2".into()),
             HostError::UnknownType("fly".into()),

@@ -221,7 +221,7 @@ pub fn main() -> ExitCode {
             out,
             address,
             commit,
-        } => teacher(&out, address.as_deref(), &commit),
+        } => teacher(&out, address.as_deref(), &commit).map_err(|e| e.to_string()),
         Command::Bench { steps, lab } => match lab.as_deref().map(find_lab).transpose() {
             Ok(only) => {
                 bench(steps.max(10), only);
@@ -230,6 +230,12 @@ pub fn main() -> ExitCode {
             Err(e) => Err(e),
         },
     };
+    exit_code(result)
+}
+
+/// The process's exit: 0 when every check held, 1 when one failed, 2 (with the message) when
+/// the command could not run.
+fn exit_code(result: Result<bool, String>) -> ExitCode {
     match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
@@ -387,11 +393,14 @@ fn run_fuzz(sets: usize, steps: usize, seed: u64) -> bool {
 }
 
 /// `attlab teacher`: writes the notes and says where.
-fn teacher(out: &Path, address: Option<&str>, commit: &str) -> Result<bool, String> {
+fn teacher(
+    out: &Path,
+    address: Option<&str>,
+    commit: &str,
+) -> Result<bool, attlab::teacher::TeacherError> {
     use attlab::teacher::{Build, write};
-    let build =
-        Build::new(address, env!("CARGO_PKG_VERSION"), commit).map_err(|e| e.to_string())?;
-    let written = write(out, &build).map_err(|e| e.to_string())?;
+    let build = Build::new(address, env!("CARGO_PKG_VERSION"), commit)?;
+    let written = write(out, &build)?;
     println!(
         "attlab: {} teacher pages in {}",
         written.len(),
