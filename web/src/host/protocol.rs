@@ -1,6 +1,6 @@
 //! The messages of the host API, version [`API`]: what a page that embeds the lab sends
-//! (a [`Request`]) and what the lab answers and reports ([`Event`]s as JSON), documented in
-//! docs/embed.md. Parsing is pure: a message that is not JSON, not for this API, of an
+//! (a [`Request`]) and what the lab answers and reports (events as JSON, built by
+//! [`event`]), documented in docs/embed.md. Parsing is pure: a message that is not JSON, not for this API, of an
 //! unknown type or with a bad argument is refused with a [`HostError`] and changes nothing.
 
 use serde_json::{Map, Value, json};
