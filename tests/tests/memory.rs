@@ -130,3 +130,47 @@ fn the_fuzzer_counts_each_sets_heap_where_the_binary_counts_it() {
         report.max_memory_bytes
     );
 }
+
+/// What a time-travel snapshot holds, counted by the allocator, against what the history
+/// counts it as (its budget is kept on that count): never more, and not far less.
+#[test]
+fn a_snapshot_holds_no_more_than_the_history_counts() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let p5 = labs::find("p5").expect("p5");
+    let mut cases: Vec<(&'static dyn attlab::page::Lab, ParamValues, f64)> = labs::all()
+        .iter()
+        .map(|lab| (*lab, ParamValues::defaults(lab.params()), 300.0))
+        .collect();
+    // Paper 5 inside a long reference dropout at a fine step: its re-integration history is
+    // the largest state any lab keeps.
+    let mut fine = ParamValues::defaults(p5.params());
+    fine.set(p5.params(), "step_s", 0.001).expect("step_s");
+    fine.set(p5.params(), "dropout_s", 100.0)
+        .expect("dropout_s");
+    cases.push((p5, fine, 0.0));
+    for (lab, params, run_s) in cases {
+        let mut sim = Simulation::new(lab, params, 1);
+        sim.run_for(run_s);
+        if lab.id() == "p5" && run_s == 0.0 {
+            sim.run_for(sim.params().get("dropout_from_s") + 50.0);
+        }
+        let region = Region::new(GLOBAL);
+        sim.keep_history(attlab::sim::HISTORY_BUDGET_BYTES);
+        let held = grown(&region);
+        let counted = sim.history_use().bytes as isize;
+        eprintln!(
+            "{}: a snapshot holds {held} B, counted {counted} B",
+            lab.id()
+        );
+        assert!(
+            held <= counted,
+            "{}: {held} B held, {counted} B counted",
+            lab.id()
+        );
+        assert!(
+            counted <= 2 * held + 4096,
+            "{}: {held} B held, {counted} B counted",
+            lab.id()
+        );
+    }
+}

@@ -221,7 +221,7 @@ pub type Tuner<T> = fn(&ParamValues) -> T;
 
 /// An attitude estimator in the simulation loop. One file per estimator, each citing its
 /// paper and equations; a lab lists its estimators in [`super::LabRun::estimators`].
-pub trait Estimator: Send {
+pub trait Estimator: Send + dyn_clone::DynClone {
     /// Short stable id used in series names, e.g. `quat-rk4`.
     fn id(&self) -> &'static str;
     /// Human label for legends.
@@ -274,4 +274,12 @@ pub trait Estimator: Send {
     fn teaching(&self) -> Option<&dyn Teaching> {
         None
     }
+    /// The heap its clone allocates beyond its own struct (bytes; a time-travel snapshot is
+    /// a clone, `sim::history` counts them): only a model that keeps a growing buffer says
+    /// more than 0.
+    fn heap_bytes(&self) -> usize {
+        0
+    }
 }
+
+dyn_clone::clone_trait_object!(Estimator);

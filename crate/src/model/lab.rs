@@ -51,7 +51,7 @@ impl TruthState {
 }
 
 /// How the body really moves.
-pub trait TruthModel: Send {
+pub trait TruthModel: Send + dyn_clone::DynClone {
     /// New parameter values, effective from the next step.
     fn apply_params(&mut self, params: &ParamValues);
     /// Advance by `dt_s`.
@@ -70,10 +70,18 @@ pub trait TruthModel: Send {
     /// The estimators after their step, for a truth whose controller closes its loop on an
     /// estimate (paper 4's Fig. 1): what it reads acts from the next step on. None by default.
     fn feedback(&mut self, _estimators: &[Box<dyn Estimator>]) {}
+    /// The heap its clone allocates beyond its own struct (bytes; a time-travel snapshot is
+    /// a clone, `sim::history` counts them): only a model that keeps a growing buffer says
+    /// more than 0.
+    fn heap_bytes(&self) -> usize {
+        0
+    }
 }
 
+dyn_clone::clone_trait_object!(TruthModel);
+
 /// The lab's sensors.
-pub trait SensorModel: Send {
+pub trait SensorModel: Send + dyn_clone::DynClone {
     /// New parameter values, effective from the next sample.
     fn apply_params(&mut self, params: &ParamValues);
     /// Samples the sensors at the truth state, `dt_s` after the previous sample.
@@ -89,9 +97,18 @@ pub trait SensorModel: Send {
     fn scene(&self) -> SceneExtras {
         SceneExtras::default()
     }
+    /// The heap its clone allocates beyond its own struct (bytes; a time-travel snapshot is
+    /// a clone, `sim::history` counts them): only a model that keeps a growing buffer says
+    /// more than 0.
+    fn heap_bytes(&self) -> usize {
+        0
+    }
 }
 
-/// One running instance of a lab.
+dyn_clone::clone_trait_object!(SensorModel);
+
+/// One running instance of a lab (a clone is an exact copy: the same run from here on).
+#[derive(Clone)]
 pub struct LabRun {
     /// The truth model.
     pub truth: Box<dyn TruthModel>,

@@ -46,6 +46,7 @@ pub use log::{
     ExampleLog, LineFault, LogCounts, LogFormat, LogGap, LogLineError, LogRefusal, OtherFormat,
     RateLog,
 };
+pub(crate) use params::find_spec;
 pub use params::{ParamError, ParamKind, ParamSpec, ParamValues, Scale};
 pub use quantity::{Quantity, StateInfo, StateKind};
 #[cfg(feature = "study")]

@@ -227,6 +227,14 @@ pub struct ParamValues {
 }
 
 impl ParamValues {
+    /// An upper bound of the heap a clone of these values allocates (bytes): B-tree nodes
+    /// hold at least five entries each (464 bytes a node at most for `String` keys and
+    /// `f64` values), and each key's text.
+    pub fn heap_bytes(&self) -> usize {
+        let nodes = self.values.len() / 5 + 1;
+        nodes * 464 + self.values.keys().map(String::len).sum::<usize>()
+    }
+
     /// Every parameter at its default.
     pub fn defaults(specs: &[ParamSpec]) -> Self {
         Self {
@@ -379,7 +387,10 @@ fn choice_by_name(key: &str, options: &[&str], text: &str) -> Result<usize, Para
     }
 }
 
-fn find_spec<'a>(specs: &'a [ParamSpec], key: &str) -> Result<&'a ParamSpec, ParamError> {
+pub(crate) fn find_spec<'a>(
+    specs: &'a [ParamSpec],
+    key: &str,
+) -> Result<&'a ParamSpec, ParamError> {
     specs
         .iter()
         .find(|s| s.key == key)

@@ -325,6 +325,7 @@ mod tests {
     }
 
     /// An estimator that only publishes a diagonal attitude covariance.
+    #[derive(Clone)]
     struct Diag(SMatrix<f64, 3, 3>);
 
     const ATT: [StateInfo; 3] = [

@@ -36,10 +36,23 @@ impl Simulation {
     /// Estimator `i` at this instant, if there is one.
     pub fn glance(&self, i: usize) -> Option<Glance> {
         let estimator = self.estimators().get(i)?;
+        let error_deg = self.error_deg(i, &self.truth())?;
+        Some(Glance {
+            estimator: i,
+            error_deg,
+            three_sigma_deg: 3.0 * attitude_sigma_deg(estimator.as_ref()),
+        })
+    }
+}
+
+impl Simulation {
+    /// Estimator `i`'s largest attitude error about a body axis (or its angle error)
+    /// against `truth` (deg), as [`Glance::error_deg`]; None when there is no estimator `i`.
+    pub(super) fn error_deg(&self, i: usize, truth: &crate::model::TruthState) -> Option<f64> {
+        let estimator = self.estimators().get(i)?;
         let estimate = self.estimates().get(i)?;
         let outputs = estimator.outputs();
-        let truth = self.truth();
-        let error_deg = if !self.has_truth() {
+        Some(if !self.has_truth() {
             f64::NAN
         } else if outputs.attitude {
             estimate.quaternion().map_or(f64::NAN, |q| {
@@ -53,11 +66,6 @@ impl Simulation {
             }
         } else {
             f64::NAN
-        };
-        Some(Glance {
-            estimator: i,
-            error_deg,
-            three_sigma_deg: 3.0 * attitude_sigma_deg(estimator.as_ref()),
         })
     }
 }

@@ -36,6 +36,12 @@ impl Health {
         }
     }
 
+    /// The heap a clone allocates (bytes).
+    pub(super) fn heap_bytes(&self) -> usize {
+        self.statuses.capacity() * std::mem::size_of::<EstimatorStatus>()
+            + self.codes.capacity() * 8
+    }
+
     /// Every estimator's status.
     pub(super) fn statuses(&self) -> &[EstimatorStatus] {
         &self.statuses

@@ -93,6 +93,23 @@ impl Journal {
         Ok(true)
     }
 
+    /// The changes made before step `step` (a run restored at that step has made these).
+    pub(super) fn before(&self, step: u64) -> Journal {
+        Journal {
+            entries: self
+                .entries
+                .iter()
+                .take_while(|e| e.step < step)
+                .copied()
+                .collect(),
+        }
+    }
+
+    /// The change at `index`, as (step, key, value).
+    pub(super) fn get(&self, index: usize) -> Option<(u64, &'static str, f64)> {
+        self.entries.get(index).map(|e| (e.step, e.key, e.value))
+    }
+
     /// Number of changes recorded.
     pub(super) fn len(&self) -> usize {
         self.entries.len()

@@ -6,6 +6,7 @@
 //! its memory budget allows).
 
 mod accuracy;
+mod branch;
 mod catalogue;
 mod csv;
 mod derived;
@@ -13,22 +14,27 @@ mod error;
 mod export;
 mod glance;
 mod health;
+mod history;
 mod journal;
 mod layout;
 mod quantities;
 mod replay;
 mod rerun;
 mod selection;
+mod tally;
 
 pub use accuracy::{AccuracyRow, AccuracyTracker};
+pub use branch::{Branch, Difference, Seek, TravelError};
 pub use csv::{CsvSink, csv_cell};
 pub use error::SimError;
 pub use export::write_output_file;
 pub use glance::Glance;
+pub use history::{HISTORY_BUDGET_BYTES, HistoryUse};
 pub use journal::{Refused, ReplayError};
 pub use layout::Layout;
 pub use rerun::{RerunError, RerunItem, RerunJob};
 pub use selection::{Selection, UnknownSeries};
+pub use tally::Stretch;
 
 use crate::model::{
     Estimate, EstimatorStatus, LabRun, ParamError, ParamValues, SceneExtras, SeriesKey, SeriesSpec,
@@ -37,10 +43,12 @@ use crate::model::{
 use crate::page::Lab;
 use crate::record::{DEFAULT_BUDGET_BYTES, Recorder};
 use health::Health;
+use history::History;
 use journal::Journal;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 pub use replay::SharedLog;
+use tally::Tally;
 
 /// What a simulation records, and in how much memory.
 #[derive(Clone, Debug, PartialEq)]
@@ -130,6 +138,10 @@ pub struct Simulation {
     replay: Option<SharedLog>,
     journal: Journal,
     accuracy: Option<AccuracyTracker>,
+    /// Snapshots for seeking and branching (none unless [`Simulation::keep_history`]).
+    history: History,
+    /// Each estimator's error so far, while the run keeps a history.
+    tally: Option<Tally>,
 }
 
 impl Simulation {
@@ -207,6 +219,8 @@ impl Simulation {
             accuracy: lab.accuracy_table().map(|t| AccuracyTracker::new(t, n)),
             replay,
             journal: Journal::default(),
+            history: History::default(),
+            tally: None,
         };
         let truth = sim.run.truth.state();
         sim.t_s = truth.t_s;
@@ -363,6 +377,7 @@ impl Simulation {
     /// truth and estimators); a replay restarts from the start of its log.
     pub fn reset(&mut self, seed: u64) {
         let options = self.options.clone();
+        let history_bytes = self.history.budget_bytes();
         let fresh = match self.replay.take() {
             Some(log) => Self::live(self.lab, self.params.clone(), log, options),
             None => Self::with_options(self.lab, self.params.clone(), seed, options)
@@ -370,6 +385,9 @@ impl Simulation {
         };
         if let Ok(fresh) = fresh {
             *self = fresh;
+            if history_bytes > 0 {
+                self.keep_history(history_bytes);
+            }
         }
     }
 
@@ -390,6 +408,7 @@ impl Simulation {
         self.t_s = truth.t_s;
         self.steps += 1;
         self.record(&truth);
+        self.take_snapshot();
     }
 
     /// What the sensors' last sample adds to the 3D view.
@@ -423,6 +442,16 @@ impl Simulation {
             self.health.update(i, e.as_ref(), &est);
             self.estimates.push(est);
         }
+        self.count_errors();
+        self.fill_row(truth);
+        self.recorder.push(&self.row);
+        if let Some(a) = &mut self.accuracy {
+            a.push(truth, &self.estimates);
+        }
+    }
+
+    /// The row of this instant, from the state as it is (no estimator is asked again).
+    fn fill_row(&mut self, truth: &TruthState) {
         self.layout.fill(
             &mut self.row,
             self.run.truth.as_ref(),
@@ -432,9 +461,12 @@ impl Simulation {
             &self.estimates,
             self.health.codes(),
         );
+    }
+
+    /// The row of this instant again (a run restored from a snapshot) into a fresh recorder.
+    fn refill_row(&mut self) {
+        let truth = self.run.truth.state();
+        self.fill_row(&truth);
         self.recorder.push(&self.row);
-        if let Some(a) = &mut self.accuracy {
-            a.push(truth, &self.estimates);
-        }
     }
 }

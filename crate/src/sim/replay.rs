@@ -133,6 +133,7 @@ impl Simulation {
 /// sample); the attitude, the angle and the rate are unknown (the logged rate is the
 /// sensors' reading, with its noise and bias), so every error and every series of the
 /// truth is missing.
+#[derive(Clone)]
 pub struct LogTruth {
     log: SharedLog,
     t_s: f64,
@@ -199,6 +200,7 @@ impl TruthModel for LogTruth {
 /// Its own series are what was logged at this step: the gyro rate and, for an IMU log, the
 /// roll the accelerometer gives, atan2(a_y, a_z); missing at a step without a sample (a
 /// gap shows as a break).
+#[derive(Clone)]
 pub struct LogSensor {
     log: SharedLog,
     next: usize,

@@ -74,6 +74,7 @@ impl Simulation {
             budget_bytes: self.options.budget_bytes,
         };
         let mut sim = self.restart(options)?;
+        sim.keep_history(self.history.budget_bytes());
         self.journal.replay(&mut sim, self.steps, |_| {
             Ok::<(), std::convert::Infallible>(())
         })?;
@@ -121,6 +122,11 @@ impl RerunJob {
         &self.sim
     }
 
+    /// The re-run, done or not (a promoted branch becomes the main run).
+    pub fn into_sim(self) -> Simulation {
+        self.sim
+    }
+
     /// Share of the steps done, 0 to 1.
     pub fn progress(&self) -> f64 {
         if self.target_steps == 0 {
@@ -154,10 +160,21 @@ impl Simulation {
         selection: Selection,
         budget_bytes: usize,
     ) -> Result<RerunJob, SimError> {
-        let sim = self.restart(SimOptions {
+        self.rerun_job_keeping(selection, budget_bytes, self.history.budget_bytes())
+    }
+
+    /// [`Simulation::rerun_job`] keeping snapshots within `history_bytes` (0: none).
+    pub(super) fn rerun_job_keeping(
+        &self,
+        selection: Selection,
+        budget_bytes: usize,
+        history_bytes: usize,
+    ) -> Result<RerunJob, SimError> {
+        let mut sim = self.restart(SimOptions {
             selection,
             budget_bytes,
         })?;
+        sim.keep_history(history_bytes);
         Ok(RerunJob {
             sim,
             target_steps: self.steps,

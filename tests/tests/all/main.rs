@@ -24,3 +24,4 @@ mod p4;
 mod p5;
 mod reproductions;
 mod sweeps;
+mod time_travel;

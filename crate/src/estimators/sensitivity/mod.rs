@@ -338,6 +338,11 @@ fn golden_section(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
 }
 
 impl Estimator for SensitivityCorrection {
+    fn heap_bytes(&self) -> usize {
+        // A clone holds the history's samples (its capacity is their number).
+        self.history.len() * std::mem::size_of::<(Vector3<f64>, f64)>()
+    }
+
     fn id(&self) -> &'static str {
         self.id
     }

@@ -8,6 +8,7 @@ use rand_chacha::ChaCha8Rng;
 /// Which sign the gyro bias has on each body axis (the bias slider sets its size).
 pub(super) const BIAS_PATTERN: Vector3<f64> = Vector3::new(1.0, -1.0, 1.0);
 
+#[derive(Clone)]
 pub(super) struct GyroSensors {
     pub(super) gyro: Gyro3,
 }

@@ -15,6 +15,7 @@ pub(super) const MOMENTUM_N_M_S: Quantity =
     Quantity::new("momentum_n_m_s", "angular momentum |Jω|", "N·m·s");
 
 /// The tumbling body.
+#[derive(Clone)]
 pub(super) struct Tumble {
     body: RigidBody,
     t_s: f64,

@@ -294,6 +294,7 @@ impl Study for SuspendedMockup {
 
 /// The one-axis gyro: white noise, quantisation and range at the input rate, then block
 /// averaging down to the filter rate. Its axis is tilted by `misalign` towards the swing axis.
+#[derive(Clone)]
 struct OneAxisGyro {
     averager: Averager,
     sigma_rad_s: f64,

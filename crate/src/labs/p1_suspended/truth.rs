@@ -28,6 +28,7 @@ pub(super) const ENERGY_MJ: Quantity = Quantity::new(
 const G_M_S2: f64 = 9.81;
 
 /// How the body moves.
+#[derive(Clone)]
 enum Body {
     /// §3.3: the twist as a damped torsion pendulum; the swing a sinusoid of (amplitude
     /// rad, angular frequency rad/s) about the body's x axis.
@@ -40,6 +41,7 @@ enum Body {
 }
 
 /// The body on the string with its disturbances.
+#[derive(Clone)]
 pub(super) struct Suspended {
     body: Body,
     t_s: f64,

@@ -135,6 +135,7 @@ impl Clock {
 }
 
 /// The sensors and the onboard references.
+#[derive(Clone)]
 pub struct Sensors {
     dt_s: f64,
     orbit: CircularOrbit,

@@ -61,6 +61,7 @@ pub fn orbit_of(p: &ParamValues) -> (CircularOrbit, Epoch) {
 }
 
 /// The satellite.
+#[derive(Clone)]
 pub struct Spacecraft {
     /// Orbit (fixed until reset).
     pub orbit: CircularOrbit,

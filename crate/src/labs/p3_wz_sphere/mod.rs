@@ -245,12 +245,14 @@ impl Study for WzSphere {
 }
 
 /// The motion of the selected profile.
+#[derive(Clone)]
 enum Motion {
     Prescribed(EulerMotion),
     Free(Box<RigidBody>),
 }
 
 /// Truth: a prescribed Euler-angle motion or a free rigid body, plus the lateral bump.
+#[derive(Clone)]
 struct P3Truth {
     motion: Motion,
     t_s: f64,
@@ -365,6 +367,7 @@ impl TruthModel for P3Truth {
 }
 
 /// Gyro + accelerometer. The accelerometer measures n = f/g = k_body + A·a_ref/g + noise.
+#[derive(Clone)]
 struct GyroAccel {
     gyro: Gyro3,
     accel_sigma_g: f64,

@@ -14,6 +14,7 @@ pub(super) const REFERENCE: Quantity =
     Quantity::new("reference", "a reference attitude arrived (1 = yes)", "");
 
 /// The gyro and the reference attitudes (every Δt, except during a dropout).
+#[derive(Clone)]
 pub(super) struct Sensors {
     interval_s: f64,
     since_s: f64,

@@ -16,6 +16,7 @@ fn rate_axis() -> Vector3<f64> {
 }
 
 /// The truth: the reference attitude turned by the profile's rate.
+#[derive(Clone)]
 pub(super) struct Turning {
     q: UnitQuaternion<f64>,
     t_s: f64,
