@@ -338,12 +338,25 @@ impl Recorder {
     /// `stride`-th from the oldest, where `stride` keeps about `points` of them, and always the
     /// newest: a per-frame trail that reads only the rows it keeps.
     pub fn recent_tail(&self, index: usize, rows: usize, points: usize) -> Vec<f64> {
-        if index >= self.specs.len() {
+        self.recent_tail_before(index, 0, rows, points)
+    }
+
+    /// [`Recorder::recent_tail`] ending `skipped` rows before the newest (the trail up to
+    /// an earlier moment of the run: the timeline's cursor).
+    pub fn recent_tail_before(
+        &self,
+        index: usize,
+        skipped: usize,
+        rows: usize,
+        points: usize,
+    ) -> Vec<f64> {
+        if index >= self.specs.len() || skipped >= self.held {
             return Vec::new();
         }
-        let take = rows.min(self.held);
+        let take = rows.min(self.held - skipped);
         let stride = (take / points.max(1)).max(1);
-        let first = (self.head + self.window - take) % self.window;
+        // skipped + take ≤ held ≤ window: one window added keeps it from going below 0.
+        let first = (self.head + self.window - skipped - take) % self.window;
         // first < window and k < take ≤ window: one subtraction wraps the ring.
         let value = |k: usize| {
             let ring = first + k;

@@ -376,6 +376,9 @@ link-fault-theme = theme must be light or dark
 link-fault-lang = lang must be en or ru
 link-fault-embed = embed must be 1 or 0
 link-fault-origin = `{ $text }` is not a web origin (like https://example.org or http://127.0.0.1:8000, or *)
+link-fault-at = at must be a time in seconds ≥ 0
+link-fault-what-if = `{ $text }` is not a what-if: a time in seconds, then the changes (like 1390:q_scale=0.1,x=2)
+link-fault-too-many-what-ifs = at most { $most } what-ifs
 link-fault-answers-without-lesson = answers need a lesson (lesson=<lab>)
 link-fault-no-lesson = this lab has no lesson
 link-fault-not-an-answer = `{ $part }` is not a step number and an answer letter (like 2b)

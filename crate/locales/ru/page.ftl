@@ -391,6 +391,9 @@ link-fault-theme = для theme (оформление) нужно light или d
 link-fault-lang = для lang (язык) нужно en или ru
 link-fault-embed = для embed (встраивание) нужно 1 или 0
 link-fault-origin = `{ $text }` — не адрес сайта (origin): нужно вроде https://example.org или http://127.0.0.1:8000, или *
+link-fault-at = для at нужно время в секундах ≥ 0
+link-fault-what-if = `{ $text }` — не «а что если»: нужно время в секундах, затем изменения (вроде 1390:q_scale=0.1,x=2)
+link-fault-too-many-what-ifs = не больше { $most } вариантов «а что если»
 link-fault-answers-without-lesson = ответы задаются только вместе с уроком (lesson=<работа>)
 link-fault-no-lesson = у этой работы нет урока
 link-fault-not-an-answer = «{ $part }» — не номер шага с буквой ответа (например, 2b)

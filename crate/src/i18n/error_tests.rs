@@ -5,7 +5,7 @@ use super::Lang;
 use super::errors::Worded;
 use crate::analysis::sweep::{Skipped, SweepError};
 use crate::model::{ScoreError, StatsError, Unscored};
-use crate::sim::SimError;
+use crate::sim::{SimError, TravelError};
 
 /// Each example, by its English `Display`, with its words in both languages.
 pub(crate) fn said(examples: Vec<(String, &dyn Worded)>) -> Vec<(String, String, String)> {
@@ -33,6 +33,14 @@ pub(crate) fn problem(english: &str, en: &str, ru: &str) -> Option<String> {
 #[test]
 fn every_error_a_page_reader_meets_is_said_in_both_languages() {
     let sims = SimError::examples();
+    let travels = [
+        TravelError::NoHistory,
+        TravelError::Before {
+            t_s: 1.5,
+            first_s: 2.25,
+        },
+        TravelError::NeedsReset { key: "gamma" },
+    ];
     let scores = ScoreError::examples();
     let unscored: Vec<Unscored> = scores
         .iter()
@@ -50,6 +58,7 @@ fn every_error_a_page_reader_meets_is_said_in_both_languages() {
         .collect();
     let mut all: Vec<(String, &dyn Worded)> = Vec::new();
     all.extend(sims.iter().map(|e| (e.to_string(), e as &dyn Worded)));
+    all.extend(travels.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(scores.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(unscored.iter().map(|e| (e.to_string(), e as &dyn Worded)));
     all.extend(stats.iter().map(|e| (e.to_string(), e as &dyn Worded)));

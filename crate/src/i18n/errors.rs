@@ -8,7 +8,7 @@ use super::{FluentValue, Lang};
 use crate::analysis::sweep::{Skipped, SweepError};
 use crate::model::{ParamError, ParamKind, ParamSpec, ScoreError, StatsError, Unscored};
 use crate::page::Lab;
-use crate::sim::{SimError, UnknownSeries};
+use crate::sim::{SimError, TravelError, UnknownSeries};
 
 /// An error said in the reader's language.
 pub trait Worded {
@@ -209,6 +209,32 @@ impl Worded for SimError {
                 ],
             ),
             SimError::Csv { detail } => said(lang, "error-sim-csv", &[("detail", detail.clone())]),
+        }
+    }
+}
+
+impl Worded for TravelError {
+    fn words(&self, lang: Lang, lab: &dyn Lab) -> String {
+        match self {
+            TravelError::NoHistory => said(lang, "error-travel-no-history", &[]),
+            TravelError::Before { t_s, first_s } => said(
+                lang,
+                "error-travel-before",
+                &[
+                    ("t", super::fixed(lang, *t_s, 2)),
+                    ("first", super::fixed(lang, *first_s, 2)),
+                ],
+            ),
+            TravelError::NeedsReset { key } => {
+                let name = lab
+                    .params()
+                    .iter()
+                    .find(|s| s.key == *key)
+                    .map_or_else(|| key.to_string(), |s| param_label(lang, lab, s));
+                said(lang, "error-travel-needs-reset", &[("name", name)])
+            }
+            TravelError::Param(e) => e.words(lang, lab),
+            TravelError::Series(e) => e.words(lang, lab),
         }
     }
 }

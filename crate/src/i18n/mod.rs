@@ -74,11 +74,13 @@ impl Lang {
             Self::En => &[
                 include_str!("../../locales/en/page.ftl"),
                 include_str!("../../locales/en/series.ftl"),
+                include_str!("../../locales/en/travel.ftl"),
             ],
             #[cfg(not(target_arch = "wasm32"))]
             Self::Ru => &[
                 include_str!("../../locales/ru/page.ftl"),
                 include_str!("../../locales/ru/series.ftl"),
+                include_str!("../../locales/ru/travel.ftl"),
             ],
             // The page fetches the Russian catalogue beside its wasm (see [`provide_russian`]).
             #[cfg(target_arch = "wasm32")]

@@ -52,6 +52,13 @@ fn every_series_groups_tab_title_and_axis_noun_are_in_the_catalogue() {
 
 /// The arguments the catalogue's messages take as text, each given "x" by the format test.
 const TEXT_ARGUMENTS: &[&str] = &[
+    // Time travel's timeline and branches.
+    "changes",
+    "estimator",
+    "over",
+    "before",
+    "after",
+    "most",
     // The About line and the host API's errors.
     "version",
     "commit",

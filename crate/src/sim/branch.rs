@@ -151,6 +151,17 @@ impl Simulation {
         let mut follower = self.follower_at(t_s, false)?;
         follower.advance(self, u64::MAX, |s| next_step_reaches(s, t_s));
         follower.apply_due(self);
+        // The original from here on, stepped beside the branch: the same run as this one up
+        // to now, so it is the original to the bit (tested), and both keep their errors'
+        // tally only while there is a branch (the main run keeps none).
+        let shadow_sim = follower.sim.thaw(&follower.sim.freeze());
+        let mut shadow = Follower {
+            sim: shadow_sim,
+            next_entry: follower.next_entry,
+            overrides: Vec::new(),
+        };
+        shadow.sim.tally = Some(Tally::new(&shadow.sim.run.estimators));
+        follower.sim.tally = Some(Tally::new(&follower.sim.run.estimators));
         follower.overrides = keys;
         for (key, value) in changes {
             follower.sim.set_param(key, *value)?;
@@ -167,7 +178,7 @@ impl Simulation {
         Ok(Branch {
             from_s: sim.t_s,
             from_step: sim.steps,
-            at_start: sim.tally.clone().unwrap_or_default(),
+            shadow,
             changes: changes
                 .iter()
                 .zip(&follower.overrides)
@@ -213,9 +224,10 @@ impl Seek {
 /// A "what if": a second run from a moment of the original with some parameters changed.
 pub struct Branch {
     follower: Follower,
+    /// The original re-run beside the branch from its moment (for the comparison only).
+    shadow: Follower,
     from_s: f64,
     from_step: u64,
-    at_start: Tally,
     changes: Vec<(&'static str, f64)>,
 }
 
@@ -236,8 +248,9 @@ impl Branch {
     /// At most `max_steps` more steps toward the original's step; true when level with it.
     pub fn advance(&mut self, original: &Simulation, max_steps: u64) -> bool {
         let target = original.steps;
-        self.follower
-            .advance(original, max_steps, |s| s.steps < target)
+        let done = (self.follower).advance(original, max_steps, |s| s.steps < target);
+        (self.shadow).advance(original, max_steps, |s| s.steps < target);
+        done
     }
 
     /// The branch's run (its recorder starts at the branch's moment).
@@ -261,23 +274,20 @@ impl Branch {
     }
 
     /// Each estimator's error since the branch began, in the original and in the branch,
-    /// over the steps both have taken (None until the branch is level with the original
-    /// or when either run keeps no tally).
+    /// over the steps both have taken (None until the branch is level with the original).
     pub fn differences(&self, original: &Simulation) -> Option<Vec<Difference>> {
         let sim = &self.follower.sim;
-        if sim.steps != original.steps {
+        if sim.steps != original.steps || self.shadow.sim.steps != original.steps {
             return None;
         }
-        let (ours, theirs) = (sim.tally.as_ref()?, original.tally.as_ref()?);
-        let start = &self.at_start;
-        // The original's tally at the branch's moment is the branch's own at its start:
-        // both runs were the same run up to there.
+        let (ours, theirs) = (sim.tally.as_ref()?, self.shadow.sim.tally.as_ref()?);
+        let start = Tally::new(&sim.run.estimators);
         Some(
             (0..sim.estimates.len())
                 .map(|i| Difference {
                     estimator: i,
-                    original: theirs.since(start, i),
-                    branch: ours.since(start, i),
+                    original: theirs.since(&start, i),
+                    branch: ours.since(&start, i),
                     over_s: sim.t_s - self.from_s,
                 })
                 .collect(),

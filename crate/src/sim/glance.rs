@@ -49,12 +49,25 @@ impl Simulation {
     /// Estimator `i`'s largest attitude error about a body axis (or its angle error)
     /// against `truth` (deg), as [`Glance::error_deg`]; None when there is no estimator `i`.
     pub(super) fn error_deg(&self, i: usize, truth: &crate::model::TruthState) -> Option<f64> {
-        let estimator = self.estimators().get(i)?;
+        let outputs = self.estimators().get(i)?.outputs();
         let estimate = self.estimates().get(i)?;
-        let outputs = estimator.outputs();
-        Some(if !self.has_truth() {
+        Some(if self.has_truth() {
+            error_deg(outputs, estimate, truth)
+        } else {
             f64::NAN
-        } else if outputs.attitude {
+        })
+    }
+}
+
+/// The largest attitude error about a body axis of `estimate` (or its angle error, for an
+/// estimator whose `outputs` are an angle) against `truth` (deg); NaN for neither.
+pub(super) fn error_deg(
+    outputs: crate::model::Outputs,
+    estimate: &crate::model::Estimate,
+    truth: &crate::model::TruthState,
+) -> f64 {
+    {
+        if outputs.attitude {
             estimate.quaternion().map_or(f64::NAN, |q| {
                 let e = small_angle_error_body(&truth.q_ref_from_body, &q);
                 e.amax().to_degrees()
@@ -66,7 +79,7 @@ impl Simulation {
             }
         } else {
             f64::NAN
-        })
+        }
     }
 }
 

@@ -21,7 +21,7 @@ use rand_chacha::ChaCha8Rng;
 pub const HISTORY_BUDGET_BYTES: usize = 16 << 20;
 
 /// Steps between snapshots at the start of a run (doubled each time the budget is full).
-const FIRST_INTERVAL_STEPS: u64 = 32;
+const FIRST_INTERVAL_STEPS: u64 = 256;
 
 /// The state of a run after `steps` steps: all a step reads or changes.
 #[derive(Clone)]
@@ -180,7 +180,6 @@ impl Simulation {
     /// Re-runs and resets of this run keep the same budget.
     pub fn keep_history(&mut self, budget_bytes: usize) {
         self.history = History::new(budget_bytes);
-        self.tally = (budget_bytes > 0).then(|| Tally::new(self.run.estimators.len()));
         if budget_bytes > 0 {
             let frozen = self.freeze();
             self.history.push_first(frozen);

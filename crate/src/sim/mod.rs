@@ -442,7 +442,7 @@ impl Simulation {
             self.health.update(i, e.as_ref(), &est);
             self.estimates.push(est);
         }
-        self.count_errors();
+        self.count_errors(truth);
         self.fill_row(truth);
         self.recorder.push(&self.row);
         if let Some(a) = &mut self.accuracy {

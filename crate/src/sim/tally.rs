@@ -1,13 +1,16 @@
-//! A running tally of each estimator's attitude (or angle) error over the run — the sum of
-//! its squares and the count of samples — so the error over any stretch of the run is the
-//! difference of two tallies: a branch compares itself with the original over the same
-//! stretch without either run keeping its samples ([`super::branch::Difference`]).
+//! A running tally of each estimator's attitude (or angle) error — the sum of its squares
+//! and the count of samples — kept by a branch and by the original re-run beside it
+//! ([`super::branch::Branch`]), so the two compare over the same stretch without keeping
+//! their samples. The main run keeps none (its step costs nothing more).
 
 use super::Simulation;
+use crate::model::{Estimator, Outputs};
 
 /// Per estimator: Σ error² (deg²), the samples counted, and those with no finite error.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub(super) struct Tally {
+    /// What each estimator estimates (fixed for an estimator, read once).
+    outputs: Vec<Outputs>,
     sum_sq_deg2: Vec<f64>,
     counted: Vec<u64>,
     missing: Vec<u64>,
@@ -25,8 +28,10 @@ pub struct Stretch {
 }
 
 impl Tally {
-    pub(super) fn new(n: usize) -> Self {
+    pub(super) fn new(estimators: &[Box<dyn Estimator>]) -> Self {
+        let n = estimators.len();
         Self {
+            outputs: estimators.iter().map(|e| e.outputs()).collect(),
             sum_sq_deg2: vec![0.0; n],
             counted: vec![0; n],
             missing: vec![0; n],
@@ -59,19 +64,26 @@ impl Tally {
     }
 
     pub(super) fn heap_bytes(&self) -> usize {
-        self.sum_sq_deg2.capacity() * 8 + self.counted.capacity() * 8 + self.missing.capacity() * 8
+        self.outputs.capacity() * std::mem::size_of::<Outputs>()
+            + self.sum_sq_deg2.capacity() * 8
+            + self.counted.capacity() * 8
+            + self.missing.capacity() * 8
     }
 }
 
 impl Simulation {
     /// Adds every estimator's error now to the tally.
-    pub(super) fn count_errors(&mut self) {
+    pub(super) fn count_errors(&mut self, truth: &crate::model::TruthState) {
         let Some(mut tally) = self.tally.take() else {
             return;
         };
-        let truth = self.run.truth.state();
-        for i in 0..self.estimates.len() {
-            let e = self.error_deg(i, &truth).unwrap_or(f64::NAN);
+        let has_truth = self.has_truth();
+        for (i, estimate) in self.estimates.iter().enumerate() {
+            let e = if has_truth {
+                super::glance::error_deg(tally.outputs[i], estimate, truth)
+            } else {
+                f64::NAN
+            };
             tally.push(i, e);
         }
         self.tally = Some(tally);

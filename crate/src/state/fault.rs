@@ -50,6 +50,17 @@ pub enum LinkFault {
     /// `origin=` not a web origin.
     #[error("`{0}` is not a web origin (like https://example.org or http://127.0.0.1:8000, or *)")]
     Origin(String),
+    /// `at=` not a time in seconds.
+    #[error("at must be a time in seconds ≥ 0")]
+    At,
+    /// `whatif=` not a time and changes.
+    #[error(
+        "`{0}` is not a what-if: a time in seconds, then the changes (like 1390:q_scale=0.1,x=2)"
+    )]
+    WhatIf(String),
+    /// More `whatif=` items than the page runs.
+    #[error("at most {0} what-ifs")]
+    TooManyWhatIfs(usize),
     /// `answers=` without `lesson=`.
     #[error("answers need a lesson (lesson=<lab>)")]
     AnswersWithoutLesson,
@@ -93,6 +104,9 @@ impl LinkFault {
             Self::Lang => "link-fault-lang",
             Self::Embed => "link-fault-embed",
             Self::Origin(_) => "link-fault-origin",
+            Self::At => "link-fault-at",
+            Self::WhatIf(_) => "link-fault-what-if",
+            Self::TooManyWhatIfs(_) => "link-fault-too-many-what-ifs",
             Self::AnswersWithoutLesson => "link-fault-answers-without-lesson",
             Self::NoLesson => "link-fault-no-lesson",
             Self::NotAnAnswer(_) => "link-fault-not-an-answer",
@@ -111,7 +125,8 @@ impl LinkFault {
                 ("hi", i18n::number(lang, &hi.to_string())),
             ],
             Self::NotAnAnswer(part) => vec![("part", part.clone())],
-            Self::Origin(text) => vec![("text", text.clone())],
+            Self::Origin(text) | Self::WhatIf(text) => vec![("text", text.clone())],
+            Self::TooManyWhatIfs(most) => vec![("most", most.to_string())],
             Self::NoSuchAnswer { step, letter } => {
                 vec![("step", step.to_string()), ("letter", letter.to_string())]
             }
@@ -153,6 +168,9 @@ mod tests {
             LinkFault::Lang,
             LinkFault::Embed,
             LinkFault::Origin("ftp://x".into()),
+            LinkFault::At,
+            LinkFault::WhatIf("zz".into()),
+            LinkFault::TooManyWhatIfs(3),
             LinkFault::AnswersWithoutLesson,
             LinkFault::NoLesson,
             LinkFault::NotAnAnswer("9q".into()),
@@ -179,6 +197,9 @@ mod tests {
                 | LinkFault::Lang
                 | LinkFault::Embed
                 | LinkFault::Origin(_)
+                | LinkFault::At
+                | LinkFault::WhatIf(_)
+                | LinkFault::TooManyWhatIfs(_)
                 | LinkFault::AnswersWithoutLesson
                 | LinkFault::NoLesson
                 | LinkFault::NotAnAnswer(_)
@@ -194,7 +215,7 @@ mod tests {
     #[test]
     fn every_link_fault_is_said_in_both_languages_with_its_arguments() {
         let faults = every_fault();
-        assert_eq!(faults.len(), 17);
+        assert_eq!(faults.len(), 20);
         for fault in faults {
             let id = fault.message_id();
             let (en, ru) = (fault.words(Lang::En), fault.words(Lang::Ru));

@@ -13,8 +13,10 @@ use thiserror::Error;
 
 mod fault;
 mod lesson;
+mod travel;
 
 pub use fault::LinkFault;
+pub use travel::{MAX_WHAT_IFS, WhatIfLink};
 
 /// What a URL fragment asks for.
 #[derive(Clone, Debug, PartialEq)]
@@ -46,6 +48,10 @@ pub struct UrlState {
     /// events (`origin=https://example.org`, repeated; `*` for any): see docs/embed.md. The
     /// page's own origin always may.
     pub origins: Vec<String>,
+    /// The timeline's cursor (s), when it is off now (`at=`).
+    pub cursor_s: Option<f64>,
+    /// The "what if" branches (`whatif=`, at most [`travel::MAX_WHAT_IFS`]).
+    pub what_ifs: Vec<WhatIfLink>,
 }
 
 /// Where a link opens a lesson, and the answers chosen so far.
@@ -160,6 +166,8 @@ impl UrlState {
             lock: Vec::new(),
             embed: false,
             origins: Vec::new(),
+            cursor_s: None,
+            what_ifs: Vec::new(),
         }
     }
 
@@ -185,6 +193,7 @@ impl UrlState {
         for origin in &self.origins {
             out.append_pair("origin", origin);
         }
+        travel::encode(self, &mut out);
         if let Some(lesson) = &self.lesson {
             out.append_pair("lesson", self.lab_id)
                 .append_pair("step", &lesson.step.to_string());
@@ -275,6 +284,9 @@ impl UrlState {
     fn apply_item(&mut self, lab: &'static dyn Lab, key: &str, value: &str) -> Result<(), Refused> {
         if matches!(key, "answers" | "hide" | "lock") {
             return lesson::apply_list(self, lab, key, value).map_err(Refused::Fault);
+        }
+        if matches!(key, "at" | "whatif") {
+            return travel::apply(self, lab, key, value).map_err(Refused::Fault);
         }
         if !matches!(
             key,

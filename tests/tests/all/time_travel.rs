@@ -115,11 +115,25 @@ fn a_branch_follows_the_originals_later_changes_and_keeps_its_own() {
     while !same.advance(&sim, 100) {}
     assert!(same_bits(same.sim().last_row(), sim.last_row()));
     assert_eq!(same.sim().params().get("gamma"), 3.0);
+    // Its summary compares the original with itself: the same numbers, over samples.
+    let differences = same.differences(&sim).unwrap();
+    assert!(differences.iter().any(|d| d.original.counted > 100));
+    for d in &differences {
+        assert_eq!(d.original.rms_deg.to_bits(), d.branch.rms_deg.to_bits());
+        assert!((d.over_s - 2.0).abs() < 0.01, "{}", d.over_s);
+    }
     // A branch that sets gamma keeps its value through the original's later change.
     let mut own = sim.branch(branch_t, &[("gamma", 10.0)], all()).unwrap();
     while !own.advance(&sim, 100) {}
     assert_eq!(own.sim().params().get("gamma"), 10.0);
     assert!(!same_bits(own.sim().last_row(), sim.last_row()));
+    let differences = own.differences(&sim).unwrap();
+    assert!(differences.iter().any(|d| d.original.rms_deg != d.branch.rms_deg));
+    // The original's side is the same as in the no-change branch: it is the original.
+    let plain = same.differences(&sim).unwrap();
+    for (a, b) in differences.iter().zip(&plain) {
+        assert_eq!(a.original, b.original);
+    }
 }
 
 /// The columns of the truth and the sensors (source 0): the world, not the filters.

@@ -6,6 +6,7 @@ use super::trails::{Trails, trails_of};
 use super::{arg, tabs, tr, tr_with};
 use crate::export::Regions;
 use crate::render::palette::{self, Palette};
+use crate::render::travel_lines::TravelMarks;
 use crate::render::{body3d, plots, riemann_sphere, scene, single_axis};
 use crate::state::{AppState, Command, Focus, IoCommand, PngTarget, View};
 use attlab::math::WzChart;
@@ -195,6 +196,26 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
     if !super::narrow::is_short(ui.ctx()) {
         tabs::estimator_legend(ui, app, commands);
     }
+    // The timeline under the plots keeps its rows; the plots take the rest.
+    let rest = ui.available_rect_before_wrap();
+    let below = super::timeline::height(ui.ctx(), app).min(rest.height() * 0.5);
+    let (above, timeline) = rest.split_top_bottom_at_y(rest.bottom() - below);
+    ui.scope_builder(egui::UiBuilder::new().max_rect(timeline), |ui| {
+        super::timeline::show(ui, app, commands);
+    });
+    ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
+        plots_above(ui, app, regions, commands);
+    });
+    ui.advance_cursor_after_rect(rest);
+    // Everything of this area that is not the plot itself: chips, tabs, axes, timeline.
+    if let Some(plot) = regions.plot_area {
+        let chrome = area.height() - plot.height();
+        ui.ctx().data_mut(|d| d.insert_temp(chrome_id(), chrome));
+    }
+}
+
+/// The tabs and the plot, above the timeline.
+fn plots_above(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut Vec<Command>) {
     regions.plots = Some(ui.available_rect_before_wrap());
     tabs::plot_tabs(ui, app, commands);
     regions.plot_area = Some(plots::show(
@@ -206,11 +227,17 @@ fn draw_plots(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mut
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,
         &super::plot_words(app),
+        &travel_marks(app),
     ));
-    // Everything of this area that is not the plot itself: chips, tabs, axes.
-    if let Some(plot) = regions.plot_area {
-        let chrome = area.height() - plot.height();
-        ui.ctx().data_mut(|d| d.insert_temp(chrome_id(), chrome));
+}
+
+/// What time travel adds to the plot: the cursor's line and the branches' series.
+fn travel_marks(app: &AppState) -> TravelMarks<'_> {
+    TravelMarks {
+        cursor_s: app.travel().cursor.as_ref().map(|c| c.sim().t_s()),
+        branches: (app.travel().branches.iter())
+            .map(|b| b.sim().recorder())
+            .collect(),
     }
 }
 
@@ -247,7 +274,7 @@ fn draw_view(
         }
         ViewKind::WPlane => {
             // A lab with a diagram of its own (paper 5's eigenvalues) shows it here instead.
-            let diagrams = app.sim().lab().page().diagrams(app.sim().params());
+            let diagrams = app.shown().lab().page().diagrams(app.shown().params());
             ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
                 match diagrams.first() {
                     Some(d) => super::lab_tools::diagram(ui, app, d),
@@ -273,7 +300,7 @@ fn draw_view(
         ViewKind::PhasePortrait => {
             // Trails are kept for hidden sources too, so showing one again loses nothing.
             let (sources, shown) = axis_sources(app, palette::of(ui.visuals()));
-            view.trails.push(app.sim().t_s(), &sources);
+            view.trails.push(app.shown().t_s(), &sources);
             let words = [
                 tr(app, "phase-title"),
                 tr(app, "phase-angle"),
@@ -294,8 +321,8 @@ fn draw_view(
 /// and whether each is shown. A replayed or live log has no truth: the dial and the phase
 /// portrait leave it out (the dial had read "— truth").
 fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSource>, Vec<bool>) {
-    let mut shown = vec![app.sim().has_truth()];
-    let truth = app.sim().truth();
+    let mut shown = vec![app.shown().has_truth()];
+    let truth = app.shown().truth();
     let mut out = vec![single_axis::AxisSource {
         name: tr(app, "truth"),
         color: colours.source(0),
@@ -304,7 +331,7 @@ fn axis_sources(app: &AppState, colours: &Palette) -> (Vec<single_axis::AxisSour
         rate_rad_s: truth.rate_body_rad_s.z,
         is_truth: true,
     }];
-    for (i, est) in app.sim().estimates().iter().enumerate() {
+    for (i, est) in app.shown().estimates().iter().enumerate() {
         if let Some(angle) = est.angle_rad {
             shown.push(!app.view().hidden.contains(&(i + 1)));
             out.push(single_axis::AxisSource {
@@ -331,7 +358,7 @@ fn draw_body(
     let truth = app
         .sim()
         .has_truth()
-        .then(|| app.sim().truth().q_ref_from_body);
+        .then(|| app.shown().truth().q_ref_from_body);
     let ghost_name = super::estimator_name(app, app.view().ghost_index);
     let ghost = app
         .sim()
@@ -339,13 +366,13 @@ fn draw_body(
         .get(app.view().ghost_index)
         .and_then(|e| e.quaternion())
         .map(|q| (q, ghost_name.as_str()));
-    let extras = app.sim().scene();
+    let extras = app.shown().scene();
     let top = super::body_captions(app, ghost.map(|(_, label)| label));
     let scene = scene::Scene {
         truth,
         ghost,
-        suspended: app.sim().lab().page().suspended,
-        shape: app.sim().lab().page().body,
+        suspended: app.shown().lab().page().suspended,
+        shape: app.shown().lab().page().body,
         vectors: &extras.vectors,
         ghost_axis: app
             .sim()
@@ -372,7 +399,7 @@ fn draw_body(
                 .vectors
                 .iter()
                 .map(|v| {
-                    let id = attlab::i18n::scene_id(app.sim().lab().id(), v.label);
+                    let id = attlab::i18n::scene_id(app.shown().lab().id(), v.label);
                     super::lab_word(app, &id, v.label)
                 })
                 .collect(),
@@ -390,7 +417,7 @@ fn draw_body(
 fn chart_caption(app: &AppState) -> String {
     let mut north = 0;
     let mut flipped = Vec::new();
-    for (i, est) in app.sim().estimates().iter().enumerate() {
+    for (i, est) in app.shown().estimates().iter().enumerate() {
         match est.attitude.wz().map(|wz| wz.chart) {
             Some(WzChart::North) => north += 1,
             Some(WzChart::Flipped) => flipped.push(super::estimator_short(app, i)),

@@ -32,8 +32,8 @@ pub fn cycle_panel(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comma
                 app,
                 "cycle-at",
                 &[
-                    ("t", num_arg(app, format!("{:.3}", app.sim().t_s()))),
-                    ("k", arg(app.sim().steps())),
+                    ("t", num_arg(app, format!("{:.3}", app.shown().t_s()))),
+                    ("k", arg(app.shown().steps())),
                 ],
             ));
             ui.horizontal(|ui| {
@@ -57,7 +57,7 @@ pub fn cycle_panel(ctx: &egui::Context, app: &AppState, commands: &mut Vec<Comma
 
 /// The first shown filter that keeps its cycle: (its index, its cycle).
 pub fn shown_filter(app: &AppState) -> Option<(usize, &KalmanCycle)> {
-    app.sim()
+    app.shown()
         .estimators()
         .iter()
         .enumerate()

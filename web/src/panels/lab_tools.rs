@@ -13,7 +13,7 @@ use egui_plot::{Line, Plot, Points};
 /// √max diag P beside the paper's numbers. Clicking a row shows that estimator as the ghost.
 pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let colours = crate::render::palette::of(ui.visuals());
-    let Some((title, window_s, rows)) = app.sim().accuracy() else {
+    let Some((title, window_s, rows)) = app.shown().accuracy() else {
         return;
     };
     let lang = app.view().lang();
@@ -30,7 +30,7 @@ pub fn accuracy(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     super::fit::header(ui, title)
         .default_open(true)
         .show(ui, |ui| {
-            let covered = app.sim().t_s().min(window_s);
+            let covered = app.shown().t_s().min(window_s);
             let help = tr_with(
                 app,
                 "accuracy-help",

@@ -22,6 +22,7 @@ mod sliders;
 mod sweeps;
 mod tabs;
 mod tiles;
+mod timeline;
 mod trails;
 
 pub use central::central;

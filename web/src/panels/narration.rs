@@ -15,7 +15,7 @@ pub const EVERY: Duration = Duration::from_secs(10);
 
 /// The description of the run now, in the reader's language.
 pub fn describe(app: &AppState) -> String {
-    let sim = app.sim();
+    let sim = app.shown();
     let lab = sim.lab();
     let lang = app.view().lang();
     let title = i18n::lab_text(lang, &i18n::lab_title_id(lab.id()), lab.title());

@@ -18,14 +18,15 @@ pub(super) fn slider_rows(
     only: Option<&[&str]>,
 ) {
     let highlight = app.lesson_step().map_or(&[][..], |s| s.highlight);
-    let notes = app.sim().lab().param_notes(app.sim().params());
+    let params = app.slider_params();
+    let notes = app.sim().lab().param_notes(&params);
     for spec in app.sim().lab().params() {
         if app.view().hides(spec.key) || only.is_some_and(|keys| !keys.contains(&spec.key)) {
             continue;
         }
-        let value = app.sim().params().get(spec.key);
+        let value = params.get(spec.key);
         let locked = app.view().locks(spec.key);
-        let active = !locked && (spec.outside_run || spec.acts_in(app.sim().params()));
+        let active = !locked && (spec.outside_run || spec.acts_in(&params));
         let row = |ui: &mut Ui| {
             let widget = |ui: &mut Ui| {
                 ui.add_enabled_ui(active, |ui| param_widget(ui, app, spec, value))

@@ -45,9 +45,9 @@ pub fn tiles(ui: &mut Ui, app: &AppState) {
 /// [`fit_title`]), and the value in large type with the unit after it.
 fn tile(ui: &mut Ui, app: &AppState, name: &str, (width, size): (f32, f32)) {
     let lang = app.view().lang();
-    let lab = app.sim().lab().id();
-    let spec = app.sim().specs().iter().find(|s| s.name == name);
-    let value = app.sim().value(name).ok().filter(|v| v.is_finite());
+    let lab = app.shown().lab().id();
+    let spec = app.shown().specs().iter().find(|s| s.name == name);
+    let value = app.shown().value(name).ok().filter(|v| v.is_finite());
     ui.vertical(|ui| {
         ui.set_max_width(width);
         // The width the label wraps at, as the layout rounded it.
@@ -190,7 +190,7 @@ mod tests {
                     let mut titles = Vec::new();
                     for key in step.tiles {
                         let name = key.name();
-                        let spec = app.sim().specs().iter().find(|s| s.name == name);
+                        let spec = app.shown().specs().iter().find(|s| s.name == name);
                         let spec = spec.unwrap_or_else(|| panic!("{link}: no series {name}"));
                         let parts = i18n::series_legend_without_unit(lang, lab.id(), spec);
                         let title = fit_title(&parts, fits);

@@ -8,7 +8,6 @@ use crate::render::riemann_sphere;
 use crate::state::AppState;
 use attlab::math::WzAttitude;
 use attlab::model::{Quantity, SeriesKey, StateKind, TRUTH, q};
-use attlab::record::Recorder;
 use egui::Ui;
 use nalgebra::Vector3;
 use std::cell::OnceCell;
@@ -32,6 +31,8 @@ pub(super) fn trails_of<'a>(
 /// The recent trail of every source with a vertical: truth, then each estimator.
 fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack> {
     let rec = app.sim().recorder();
+    // Up to the timeline's cursor: the rows recorded after it are left out.
+    let skipped = app.sim().steps().saturating_sub(app.shown().steps()) as usize;
     let truth = tr(app, "truth");
     let mut names = vec![(TRUTH, truth)];
     names.extend(
@@ -48,7 +49,7 @@ fn tracks(app: &AppState, colours: &Palette) -> Vec<riemann_sphere::SphereTrack>
         }
         let col = |quantity: &'static Quantity| {
             rec.index_of(&SeriesKey::new(src, quantity).name())
-                .map(|j| recent_tail(rec, j))
+                .map(|j| rec.recent_tail_before(j, skipped, TRAIL_ROWS, TRAIL_POINTS))
         };
         let (Some(kx), Some(ky), Some(kz), Some(u), Some(v)) = (
             col(&q::K_X),
@@ -87,17 +88,11 @@ const TRAIL_ROWS: usize = 3000;
 /// Points per trail after thinning.
 const TRAIL_POINTS: usize = 600;
 
-/// The last [`TRAIL_ROWS`] full-rate values of series `j`, thinned to [`TRAIL_POINTS`]
-/// (always keeping the newest).
-fn recent_tail(rec: &Recorder, j: usize) -> Vec<f64> {
-    rec.recent_tail(j, TRAIL_ROWS, TRAIL_POINTS)
-}
-
 /// 3σ ellipses of every estimator whose covariance holds (u, v), in its own chart, mapped
 /// point by point to the w plane and to the sphere (so it stays right in the flipped chart).
 /// The states are found by what the covariance says they are, not by names.
 fn attach_ellipses(app: &AppState, tracks: &mut [riemann_sphere::SphereTrack]) {
-    for (e, est) in app.sim().estimators().iter().zip(app.sim().estimates()) {
+    for (e, est) in app.shown().estimators().iter().zip(app.shown().estimates()) {
         let (Some(wz), Some(cov)) = (est.attitude.wz(), e.covariance()) else {
             continue;
         };

@@ -18,6 +18,7 @@ pub mod scene;
 mod series_lines;
 pub mod single_axis;
 pub mod ticks;
+pub mod travel_lines;
 pub mod y_range;
 
 /// The corner of a small plot's legend: the one whose quarter of the data's extent holds

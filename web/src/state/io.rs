@@ -197,8 +197,10 @@ impl AppState {
         }
         let (counts, gaps) = (log.counts, log.gaps.len());
         match Simulation::replay(lab, self.sim.params().clone(), log, SimOptions::default()) {
-            Ok(sim) => {
+            Ok(mut sim) => {
                 self.drop_jobs();
+                self.end_travel();
+                sim.keep_history(attlab::sim::HISTORY_BUDGET_BYTES);
                 self.sim = sim;
                 self.run.sweep = None;
                 self.say(

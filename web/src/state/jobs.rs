@@ -12,6 +12,8 @@ use web_time::{Duration, Instant};
 enum Purpose {
     /// Record what the plot tab on screen draws (the run's new selection).
     Reselect,
+    /// Re-run a branch from t = 0 to make it the main run.
+    Promote,
     /// Write every sample to a CSV file of this name.
     ExportCsv {
         name: String,
@@ -31,6 +33,7 @@ impl Job {
     pub fn title_id(&self) -> &'static str {
         match self.purpose {
             Purpose::Reselect => "job-reselect",
+            Purpose::Promote => "job-promote",
             Purpose::ExportCsv { .. } => "job-export-csv",
         }
     }
@@ -54,6 +57,11 @@ impl AppState {
             }
             Err(e) => self.warn("msg-plot-failed", &[("why", self.why(&e))]),
         }
+    }
+
+    /// Starts re-running a branch from t = 0 to make it the main run.
+    pub(super) fn start_promote(&mut self, rerun: RerunJob) {
+        self.start_job(Purpose::Promote, rerun);
     }
 
     /// Starts exporting every sample of the run so far as CSV.
@@ -135,7 +143,9 @@ impl AppState {
             let steps = slicer.chunk(budget.saturating_sub(start.elapsed()));
             let t0 = Instant::now();
             let stepped = match &mut job.purpose {
-                Purpose::Reselect => job.rerun.advance(steps as u64, |_| Ok::<(), SimError>(())),
+                Purpose::Reselect | Purpose::Promote => {
+                    job.rerun.advance(steps as u64, |_| Ok::<(), SimError>(()))
+                }
                 Purpose::ExportCsv { sink, .. } => job.rerun.advance(steps as u64, |s| {
                     sink.row(s.last_row()).map_err(SimError::from)
                 }),
@@ -171,6 +181,11 @@ impl AppState {
                     self.say("msg-rerun-took", &args);
                 }
             }
+            (Purpose::Promote, Ok(())) => {
+                self.sim = job.rerun.into_sim();
+                self.say("msg-branch-promoted", &[]);
+            }
+            (Purpose::Promote, Err(e)) => self.warn("msg-plot-failed", &[("why", self.why(&e))]),
             (Purpose::Reselect, Err(e)) => {
                 self.warn("msg-plot-failed", &[("why", self.why(&e))]);
                 self.restore_recorder();

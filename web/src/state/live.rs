@@ -292,9 +292,11 @@ impl AppState {
         if !live.bound && live.log.read().t_s.len() >= 2 {
             let (lab, params) = (self.sim.lab(), self.sim.params().clone());
             match Simulation::live(lab, params, live.log.clone(), SimOptions::default()) {
-                Ok(sim) => {
+                Ok(mut sim) => {
                     live.bound = true;
                     self.drop_jobs();
+                    self.end_travel();
+                    sim.keep_history(attlab::sim::HISTORY_BUDGET_BYTES);
                     self.sim.release_recorder();
                     self.sim = sim;
                     self.run.sweep = None;

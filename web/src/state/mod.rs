@@ -21,6 +21,7 @@ mod pool;
 mod run;
 mod share;
 mod slicer;
+mod travel;
 mod url;
 mod view;
 
@@ -32,6 +33,7 @@ pub use live::{BAUDS, LiveCommand, LiveSource, LiveState};
 pub use pool::SweepTiming;
 pub use run::{MAX_FRAME_S, RunCommand, RunState, STEP_BUDGET, SWEEP_BUDGET};
 pub use share::{QrModules, ShareCommand, ShareOptions, qr};
+pub use travel::{Cursor, MAX_BRANCHES, Plan, TravelCommand, TravelState, branch_words};
 pub use url::UrlCommand;
 pub use view::{Focus, ViewCommand, ViewState, view_selection};
 
@@ -91,6 +93,8 @@ pub enum Command {
     Share(ShareCommand),
     /// Live sensors.
     Live(LiveCommand),
+    /// The timeline and the branches.
+    Travel(TravelCommand),
     /// Show this message.
     Notify(Message),
     /// Remove message `i`.
@@ -130,6 +134,12 @@ impl From<ShareCommand> for Command {
 impl From<LiveCommand> for Command {
     fn from(c: LiveCommand) -> Self {
         Self::Live(c)
+    }
+}
+
+impl From<TravelCommand> for Command {
+    fn from(c: TravelCommand) -> Self {
+        Self::Travel(c)
     }
 }
 
@@ -186,6 +196,8 @@ pub struct AppState {
     share: Option<ShareOptions>,
     /// A live session (a phone's sensors, a serial port), while one is open.
     live: Option<LiveState>,
+    /// The timeline's cursor and the branches.
+    travel: TravelState,
 }
 
 impl AppState {
@@ -203,6 +215,7 @@ impl AppState {
             lesson: None,
             share: None,
             live: None,
+            travel: TravelState::default(),
         }
     }
 
@@ -224,6 +237,7 @@ impl AppState {
         if let Some(link) = &url.lesson {
             state.open_lesson_link(link);
         }
+        state.plan_travel(url.cursor_s, url.what_ifs);
         state
     }
 
@@ -268,6 +282,7 @@ impl AppState {
             Command::Lesson(c) => self.apply_lesson(c),
             Command::Share(c) => return self.apply_share(c),
             Command::Live(c) => self.apply_live(c),
+            Command::Travel(c) => self.apply_travel(c),
             Command::Notify(m) => self.notify(m),
             Command::Dismiss(i) => {
                 if i < self.messages.len() {

@@ -153,6 +153,7 @@ impl AppState {
             // A control the teacher's link locks keeps its value, whoever asks (the
             // screen reader's mirror, a preset).
             RunCommand::SetParam(key, _) if self.view.locks(key) => self.say_locked(&[key]),
+            RunCommand::SetParam(key, value) if self.change_at_cursor(key, value) => {}
             RunCommand::SetParam(key, value) => {
                 if let Err(e) = self.sim.set_param(key, value) {
                     let lab = self.sim.lab();
@@ -176,6 +177,7 @@ impl AppState {
             RunCommand::SetPlaying(on) => self.run.playing = on,
             RunCommand::Reset => {
                 self.drop_jobs();
+                self.end_travel();
                 self.sim.reset(self.run.seed);
                 self.run.step_debt = 0.0;
                 // A re-run for the tab stopped by the reset: at t = 0 it is done at once.
@@ -237,6 +239,7 @@ impl AppState {
             crate::live_io::stop();
         }
         self.drop_jobs();
+        self.end_travel();
         self.sim.release_recorder();
         let tab = self.view.plots.tab;
         self.sim = simulation(lab, params, self.run.seed, tab, self.tiles());
@@ -354,6 +357,11 @@ impl AppState {
             self.advance_job(STEP_BUDGET);
             return;
         }
+        if self.follow_plan(STEP_BUDGET) {
+            // A link's cursor and branches: the run goes there first, as fast as it can.
+            self.run.last_frame = Some(now);
+            return;
+        }
         if self.live.is_some() {
             // A live run goes at the pace its samples arrive.
             self.run.last_frame = Some(now);
@@ -371,7 +379,7 @@ impl AppState {
         if !run.playing {
             run.stats.steps_per_s *= 0.9;
             run.stats.realtime *= 0.9;
-            return;
+            return self.advance_travel(STEP_BUDGET);
         }
         run.step_debt += run.speed * frame_s / self.sim.dt_s();
         let mut steps = 0u32;
@@ -404,6 +412,8 @@ impl AppState {
             }
         }
         run.stats.step_ms = now.elapsed().as_secs_f64() * 1e3;
+        self.advance_travel(STEP_BUDGET.saturating_sub(now.elapsed()));
+        let run = &mut self.run;
         if wall_s > 0.0 {
             let rate = f64::from(steps) / wall_s;
             run.stats.steps_per_s = 0.9 * run.stats.steps_per_s + 0.1 * rate;
@@ -421,6 +431,7 @@ pub(super) fn simulation(
     tiles: &[SeriesKey],
 ) -> Simulation {
     let mut sim = Simulation::new(lab, params, seed);
+    sim.keep_history(attlab::sim::HISTORY_BUDGET_BYTES);
     let has_tiles = tiles
         .iter()
         .all(|t| sim.specs().iter().any(|s| t.is(&s.name)));

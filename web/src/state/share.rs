@@ -179,6 +179,7 @@ impl AppState {
             _ => self.sim.params().clone(),
         };
         let owned = |list: &[&'static str]| list.iter().map(|k| k.to_string()).collect();
+        let (cursor_s, what_ifs) = self.travel_link();
         UrlState {
             lab_id: lab.id(),
             seed: self.run.seed,
@@ -192,6 +193,8 @@ impl AppState {
             lock: owned(&options.lock),
             embed: false,
             origins: Vec::new(),
+            cursor_s,
+            what_ifs,
         }
         .encode()
     }

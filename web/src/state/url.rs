@@ -55,6 +55,7 @@ impl AppState {
 
     /// The shareable link fragment of the current state.
     pub fn fragment(&self) -> String {
+        let (cursor_s, what_ifs) = self.travel_link();
         UrlState {
             lab_id: self.sim.lab().id(),
             seed: self.run.seed,
@@ -68,6 +69,8 @@ impl AppState {
             lock: self.view.lock.clone(),
             embed: self.view.embed,
             origins: self.view.origins.clone(),
+            cursor_s,
+            what_ifs,
         }
         .encode()
     }

@@ -141,8 +141,12 @@ fn estimator_ns(lab: &'static dyn Lab, params: &ParamValues, steps: usize) -> Ve
 /// step recording every series and none, each estimator, and the recorder's memory.
 fn bench_lab(lab: &'static dyn Lab, steps: usize) {
     let params = ParamValues::defaults(lab.params());
+    // The page's run keeps its time-travel snapshots: their cost is in its step.
     let mut sim = Simulation::new(lab, params.clone(), 1);
+    sim.keep_history(attlab::sim::HISTORY_BUDGET_BYTES);
     let page_ns = time_ns(steps, || sim.step());
+    let mut plain = Simulation::new(lab, params.clone(), 1);
+    let plain_ns = time_ns(steps, || plain.step());
     let all_ns = step_ns(lab, &params, steps, all_series());
     let bare_ns = step_ns(lab, &params, steps, SimOptions::named(&[]));
     let lines = estimator_ns(lab, &params, steps);
@@ -163,6 +167,11 @@ fn bench_lab(lab: &'static dyn Lab, steps: usize) {
         format!("simulation step (page: {series} series)"),
         page_ns,
         verdict
+    );
+    row(
+        "simulation step (page, no time travel)",
+        plain_ns,
+        &format!("×{:.2}", page_ns / plain_ns.max(1.0)),
     );
     row("simulation step (every series)", all_ns, "");
     row("simulation step (time only)", bare_ns, "");
@@ -185,5 +194,44 @@ fn bench_lab(lab: &'static dyn Lab, steps: usize) {
         "recorder memory (MiB, fixed)",
         sim.recorder().memory_bytes() as f64 / (1 << 20) as f64,
         format!("{} rows full rate", sim.recorder().window())
+    );
+    bench_travel(&sim);
+}
+
+/// Time travel on the page's run after the steps above: a seek to mid-run (restore a
+/// snapshot, step on to the moment), a branch's start there, and the snapshots' memory.
+fn bench_travel(sim: &Simulation) {
+    let t = 0.5 * sim.t_s() + 0.37 * sim.dt_s();
+    let seek_ns = time_ns(20, || {
+        if let Ok(mut seek) = sim.seek(t) {
+            while !seek.advance(sim, 256) {}
+        }
+    });
+    let options = SimOptions {
+        selection: attlab::sim::Selection::Standard,
+        budget_bytes: 4 << 20,
+    };
+    let branch_ns = time_ns(20, || {
+        let _ = sim.branch(t, &[], options.clone());
+    });
+    let used = sim.history_use();
+    let row = |name: &str, value: String, note: String| {
+        println!("{:<14} {:<38} {:>10} {:>10}", "", name, value, note);
+    };
+    let ms = |ns: f64| format!("{:.2}", ns / 1e6);
+    let interval = format!("≤ {} steps", used.interval_steps);
+    row("seek to mid-run (ms)", ms(seek_ns), interval.clone());
+    row("branch start at mid-run (ms)", ms(branch_ns), interval);
+    row(
+        "snapshots (KiB each, MiB in all)",
+        format!(
+            "{:.1}",
+            used.bytes as f64 / used.snapshots.max(1) as f64 / 1024.0
+        ),
+        format!(
+            "{} = {:.2} MiB",
+            used.snapshots,
+            used.bytes as f64 / (1 << 20) as f64
+        ),
     );
 }

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 mod bench;
+mod branch;
 mod run;
 
 use bench::{bench, print_timings};
@@ -89,6 +90,13 @@ enum Command {
         /// starts from a short probe run).
         #[arg(long, default_value_t = 2000.0)]
         max_csv_mb: f64,
+        /// Also run a "what if" from this moment (s) with the `--what-if` changes, written
+        /// beside the CSV as `<name>.whatif.csv` (the same random numbers from there on).
+        #[arg(long)]
+        branch_at: Option<f64>,
+        /// A change `key=value` of the what-if run (repeatable; with `--branch-at`).
+        #[arg(long = "what-if", value_name = "KEY=VALUE", requires = "branch_at")]
+        what_if: Vec<String>,
     },
     /// Run a lab's estimators on a recorded log and write the series: a gyro log (CSV: time,
     /// rate; p1) or an Arduino MPU-6050 log (CSV: time, ax, ay, az, gx, gy, gz; p4).
@@ -180,8 +188,31 @@ pub fn main() -> ExitCode {
             csv,
             set,
             preset,
+            all_series: _,
+            max_csv_mb: _,
+            branch_at: Some(at_s),
+            what_if,
+        } => branch::run(branch::BranchRun {
+            lab: &lab,
+            seed,
+            duration_s: duration,
+            csv: &csv,
+            preset: preset.as_deref(),
+            set: &set,
+            at_s,
+            what_if: &what_if,
+        })
+        .map(|()| true),
+        Command::Run {
+            lab,
+            seed,
+            duration,
+            csv,
+            set,
+            preset,
             all_series,
             max_csv_mb,
+            ..
         } => run(
             &lab,
             seed,

@@ -243,7 +243,7 @@ pub(super) fn replay(
 
 /// The lab's defaults, then the named preset, then the `key=value` overrides; every bad
 /// item is reported.
-fn params_from(
+pub(super) fn params_from(
     lab: &'static dyn Lab,
     preset: Option<&str>,
     set: &[String],
@@ -287,7 +287,11 @@ pub(super) fn all_series() -> SimOptions {
 
 /// Writes the header and the current row, then steps until `duration_s`, one row per step.
 /// Returns the number of rows written.
-fn stream_csv(sim: &mut Simulation, duration_s: f64, csv_path: &Path) -> Result<u64, String> {
+pub(super) fn stream_csv(
+    sim: &mut Simulation,
+    duration_s: f64,
+    csv_path: &Path,
+) -> Result<u64, String> {
     let file = std::fs::File::create(csv_path)
         .map_err(|e| format!("cannot create {}: {e}", csv_path.display()))?;
     let io = |e: csv::Error| format!("writing {}: {e}", csv_path.display());
