@@ -391,7 +391,7 @@ impl eframe::App for AttLabApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
         let run = self.state.run();
-        if run.playing || run.sweeping() || run.job().is_some() {
+        if run.playing || run.sweeping() || run.job().is_some() || self.state.travel_busy() {
             ui.ctx().request_repaint();
         }
     }

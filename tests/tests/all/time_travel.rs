@@ -128,7 +128,11 @@ fn a_branch_follows_the_originals_later_changes_and_keeps_its_own() {
     assert_eq!(own.sim().params().get("gamma"), 10.0);
     assert!(!same_bits(own.sim().last_row(), sim.last_row()));
     let differences = own.differences(&sim).unwrap();
-    assert!(differences.iter().any(|d| d.original.rms_deg != d.branch.rms_deg));
+    assert!(
+        differences
+            .iter()
+            .any(|d| d.original.rms_deg != d.branch.rms_deg)
+    );
     // The original's side is the same as in the no-change branch: it is the original.
     let plain = same.differences(&sim).unwrap();
     for (a, b) in differences.iter().zip(&plain) {

@@ -94,11 +94,22 @@ pub(crate) fn tree_problems(session: &Session<'_>, lab: &dyn Lab) -> Vec<String>
 
 /// One real key press (down and up) through DevTools: trusted, as a keyboard sends it.
 fn key(session: &Session<'_>, key: &str, code: u32) -> Result<(), String> {
+    key_with(session, key, code, 0)
+}
+
+/// [`key`] with the DevTools protocol's `modifiers` (8: Shift) held.
+pub(crate) fn key_with(
+    session: &Session<'_>,
+    key: &str,
+    code: u32,
+    modifiers: u32,
+) -> Result<(), String> {
     // The physical key's name: the same as the key's but for Space.
     let code_name = if key == " " { "Space" } else { key };
     for kind in ["rawKeyDown", "keyUp"] {
         let event = json!({ "type": kind, "key": key, "code": code_name,
-                            "windowsVirtualKeyCode": code, "nativeVirtualKeyCode": code });
+                            "windowsVirtualKeyCode": code, "nativeVirtualKeyCode": code,
+                            "modifiers": modifiers });
         session.cdp_value("Input.dispatchKeyEvent", event)?;
     }
     Ok(())
@@ -126,13 +137,13 @@ fn after_settling(result: &str) -> String {
 }
 
 /// Waits until the paused page has drawn a key's frames.
-fn settle(session: &Session<'_>) {
+pub(crate) fn settle(session: &Session<'_>) {
     let _ = session.execute(&after_settling("null"));
 }
 
 /// The element the canvas names as the control with the keyboard once the page has settled:
 /// (role, label).
-fn active_control_after_settling(session: &Session<'_>) -> (String, String) {
+pub(crate) fn active_control_after_settling(session: &Session<'_>) -> (String, String) {
     let control = "(() => { const c = document.getElementById('attlab_canvas'); \
         const id = c && c.getAttribute('aria-activedescendant'); \
         const e = id && document.getElementById(id); \

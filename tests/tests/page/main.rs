@@ -28,6 +28,7 @@ mod replay;
 mod screens;
 mod soak;
 mod touch;
+mod travel;
 mod workers;
 
 use checks::*;
@@ -320,6 +321,13 @@ fn embedded_page_is_driven_by_its_host() {
 #[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
 fn teacher_notes_print() {
     page_test("teacher notes", embed::teacher_print_problems);
+}
+
+/// Paper 2 seeked back by the keyboard and branched (see `travel.rs`).
+#[test]
+#[ignore = "needs the built site; `cargo xtask test` runs it with ATTLAB_PAGE_URL"]
+fn a_run_is_seeked_back_and_branched() {
+    page_test("time travel", travel::travel_problems);
 }
 
 /// Random clicks, drags, wheel, touches and keys on every lab (see `fuzz.rs`).

@@ -227,13 +227,14 @@ fn plots_above(ui: &mut Ui, app: &AppState, regions: &mut Regions, commands: &mu
         if app.view().presenter { 3.0 } else { 1.4 },
         &app.view().hidden,
         &super::plot_words(app),
-        &travel_marks(app),
+        &travel_marks(app, ui.visuals().strong_text_color()),
     ));
 }
 
 /// What time travel adds to the plot: the cursor's line and the branches' series.
-fn travel_marks(app: &AppState) -> TravelMarks<'_> {
+fn travel_marks(app: &AppState, line: egui::Color32) -> TravelMarks<'_> {
     TravelMarks {
+        line,
         cursor_s: app.travel().cursor.as_ref().map(|c| c.sim().t_s()),
         branches: (app.travel().branches.iter())
             .map(|b| b.sim().recorder())

@@ -117,22 +117,29 @@ pub fn rail_position(spec: &ParamSpec, value: f64) -> f64 {
     Rail::of(spec).position(value)
 }
 
+/// Every key pressed this frame, in order, with its modifiers (each press counts: a held
+/// key repeats faster than a slow frame draws).
+pub fn presses(
+    input: &egui::InputState,
+) -> impl Iterator<Item = (egui::Key, egui::Modifiers)> + '_ {
+    input.events.iter().filter_map(|event| match event {
+        egui::Event::Key {
+            key,
+            pressed: true,
+            modifiers,
+            ..
+        } => Some((*key, *modifiers)),
+        _ => None,
+    })
+}
+
 /// The move the keys pressed this frame ask for, if any (the last key of the frame wins
 /// for Home/End; arrows and pages add up).
 pub fn rail_move(input: &egui::InputState) -> Option<RailMove> {
     let mut by = 0.0;
     let mut to = None;
-    for event in &input.events {
-        let egui::Event::Key {
-            key,
-            pressed: true,
-            modifiers,
-            ..
-        } = event
-        else {
-            continue;
-        };
-        match key_move(*key, *modifiers) {
+    for (key, modifiers) in presses(input) {
+        match key_move(key, modifiers) {
             Some(RailMove::By(dx)) => by += dx,
             Some(RailMove::To(x)) => to = Some(x),
             None => {}

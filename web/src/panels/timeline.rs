@@ -12,14 +12,17 @@ fn bar_height(ctx: &egui::Context) -> f32 {
     if super::narrow::is_phone(ctx) || ctx.input(|i| i.has_touch_screen()) {
         30.0
     } else {
-        20.0
+        18.0
     }
 }
 
 /// How tall the timeline is with its rows (points), for the plots to leave it room.
 pub fn height(ctx: &egui::Context, app: &AppState) -> f32 {
-    let rows = 1 + usize::from(app.travel().cursor.is_some()) + app.travel().branches.len();
-    bar_height(ctx) + 4.0 + 22.0 * (rows - 1) as f32
+    // A what-if's row wraps to three lines on a phone: its changes, its summary, its buttons.
+    let per_branch = if super::narrow::is_phone(ctx) { 3 } else { 1 };
+    let rows =
+        usize::from(app.travel().cursor.is_some()) + per_branch * app.travel().branches.len();
+    bar_height(ctx) + 2.0 + 22.0 * rows as f32
 }
 
 /// The timeline and its rows.
@@ -27,14 +30,6 @@ pub fn show(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
     let lang = app.view().lang();
     ui.horizontal(|ui| {
         let cursor = app.travel().cursor.as_ref();
-        if cursor.is_some()
-            && ui
-                .button(t(lang, "timeline-live"))
-                .on_hover_text(t(lang, "timeline-live-hint"))
-                .clicked()
-        {
-            commands.push(Command::from(TravelCommand::Live));
-        }
         let what_if = cursor.map(|_| t(lang, "timeline-what-if"));
         let label = match cursor {
             Some(c) if !c.ready() => {
@@ -47,10 +42,19 @@ pub fn show(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
                 &[("t", seconds(app, app.sim().t_s()))],
             ),
         };
-        let reserved = 150.0 + if what_if.is_some() { 110.0 } else { 0.0 };
+        let reserved = 150.0 + if what_if.is_some() { 170.0 } else { 0.0 };
         let width = (ui.available_width() - reserved).max(80.0);
         bar(ui, app, width, &label, commands);
         ui.label(label);
+        // After the bar, so that the bar keeps its place (and the keyboard) when it appears.
+        if cursor.is_some()
+            && ui
+                .button(t(lang, "timeline-live"))
+                .on_hover_text(t(lang, "timeline-live-hint"))
+                .clicked()
+        {
+            commands.push(Command::from(TravelCommand::Live));
+        }
         if let Some(text) = what_if
             && ui
                 .button(text)
@@ -77,7 +81,7 @@ pub fn show(ui: &mut Ui, app: &AppState, commands: &mut Vec<Command>) {
         ui.small(line);
     }
     for (i, branch) in app.travel().branches.iter().enumerate() {
-        ui.horizontal(|ui| branch_row(ui, app, i, branch, commands));
+        ui.horizontal_wrapped(|ui| branch_row(ui, app, i, branch, commands));
     }
 }
 
@@ -91,7 +95,13 @@ fn bar(ui: &mut Ui, app: &AppState, width: f32, label: &str, commands: &mut Vec<
     let sim = app.sim();
     let (start, now) = (sim.history_start_s().unwrap_or(0.0), sim.t_s());
     let size = vec2(width, bar_height(ui.ctx()));
-    let (rect, response) = ui.allocate_exact_size(size, Sense::click_and_drag());
+    let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
+    // A stable id: the bar keeps the keyboard whatever appears beside it.
+    let response = ui.interact(
+        rect,
+        egui::Id::unique("timeline-bar"),
+        Sense::click_and_drag(),
+    );
     let name = t(app.view().lang(), "timeline-label");
     let t_shown = app.cursor_t();
     // The screen reader hears the bar's name with the moment it shows.
@@ -160,25 +170,39 @@ fn keys(ui: &Ui, response: &egui::Response, (start, now): (f64, f64), commands: 
             },
         );
     });
-    let (shift, left, right, home, end) = ui.input(|i| {
-        (
-            i.modifiers.shift,
-            i.key_pressed(Key::ArrowLeft),
-            i.key_pressed(Key::ArrowRight),
-            i.key_pressed(Key::Home),
-            i.key_pressed(Key::End),
-        )
+    // Every press of the frame counts (a held key repeats faster than a slow frame).
+    let (mut seconds, mut frames, mut jump) = (0.0, 0i64, None);
+    ui.input(|i| {
+        for (key, modifiers) in super::slider_keys::presses(i) {
+            let sign = match key {
+                Key::ArrowLeft => -1,
+                Key::ArrowRight => 1,
+                Key::Home => {
+                    jump = Some(start);
+                    continue;
+                }
+                Key::End => {
+                    jump = Some(now);
+                    continue;
+                }
+                _ => continue,
+            };
+            if modifiers.shift {
+                seconds += f64::from(sign);
+            } else {
+                frames += i64::from(sign);
+            }
+        }
     });
-    let command = match (left, right, shift) {
-        (true, _, true) => Some(TravelCommand::Nudge(-1.0)),
-        (_, true, true) => Some(TravelCommand::Nudge(1.0)),
-        (true, _, false) => Some(TravelCommand::StepFrames(-1)),
-        (_, true, false) => Some(TravelCommand::StepFrames(1)),
-        _ if home => Some(TravelCommand::Seek(start)),
-        _ if end => Some(TravelCommand::Seek(now)),
-        _ => None,
-    };
-    commands.extend(command.map(Command::from));
+    if let Some(t) = jump {
+        commands.push(Command::from(TravelCommand::Seek(t)));
+    }
+    if seconds != 0.0 {
+        commands.push(Command::from(TravelCommand::Nudge(seconds)));
+    }
+    if frames != 0 {
+        commands.push(Command::from(TravelCommand::StepFrames(frames)));
+    }
 }
 
 /// One branch: its changes, its summary (or how far it has caught up), Remove and Make main.
@@ -200,7 +224,7 @@ fn branch_row(
         ],
     );
     ui.label(egui::RichText::new(chip).strong());
-    ui.label(summary(app, branch));
+    ui.add(egui::Label::new(summary(app, branch)).wrap());
     if ui
         .small_button(t(lang, "branch-drop"))
         .on_hover_text(t(lang, "branch-drop-hint"))

@@ -42,7 +42,6 @@ pub fn show(
     marks: &super::travel_lines::TravelMarks<'_>,
 ) -> egui::Rect {
     let colours = palette::of(ui.visuals());
-    let strong = ui.visuals().strong_text_color();
     let (tab, log, shown) = selection(rec, figures, state, hidden, colours);
     let full = ui.available_rect_before_wrap();
     // The legend never covers data: beside a wide plot, below a narrow one.
@@ -80,7 +79,7 @@ pub fn show(
                 let look = (line_width, log, state.show_bands);
                 let drawn = (&shown[..], points, &patterns[..], &markers[..]);
                 let dense = draw_lines(plot, rec, drawn, look, words);
-                super::travel_lines::draw(plot, rec, &shown, marks, (line_width, log), strong);
+                super::travel_lines::draw(plot, rec, &shown, marks, (line_width, log));
                 // Moved from where the figure opens (the steady fit keeps its y fixed).
                 let auto = plot.auto_bounds();
                 let moved = if steady.is_some() {

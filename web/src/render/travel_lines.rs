@@ -6,12 +6,13 @@ use egui::Color32;
 use egui_plot::{Line, LineStyle, PlotPoints, VLine};
 
 /// The cursor and the branches' recorders.
-#[derive(Default)]
 pub struct TravelMarks<'a> {
     /// The moment the cursor shows (s), when it is off now.
     pub cursor_s: Option<f64>,
     /// Each branch's recorder, in the order of the branch chips.
     pub branches: Vec<&'a Recorder>,
+    /// The cursor line's colour (the theme's strong text).
+    pub line: Color32,
 }
 
 /// Points a branch's line keeps at most.
@@ -25,7 +26,6 @@ pub fn draw(
     shown: &[(usize, Color32)],
     marks: &TravelMarks<'_>,
     (width, log): (f32, bool),
-    strong: Color32,
 ) {
     for branch in &marks.branches {
         for (i, color) in shown {
@@ -50,6 +50,6 @@ pub fn draw(
         }
     }
     if let Some(t) = marks.cursor_s {
-        plot.vline(VLine::new("", t).color(strong).width(1.5));
+        plot.vline(VLine::new("", t).color(marks.line).width(1.5));
     }
 }

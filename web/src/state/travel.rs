@@ -140,6 +140,15 @@ impl AppState {
         }
     }
 
+    /// Whether time travel has work for the next frames (a seek, a branch catching up, a
+    /// link's plan): the page keeps drawing while it has, paused or not.
+    pub fn travel_busy(&self) -> bool {
+        let travel = &self.travel;
+        travel.plan.is_some()
+            || travel.cursor.as_ref().is_some_and(|c| !c.ready())
+            || (travel.branches.iter()).any(|b| b.sim().steps() < self.sim.steps())
+    }
+
     /// The cursor's time, or now.
     pub fn cursor_t(&self) -> f64 {
         self.travel
@@ -301,7 +310,10 @@ impl AppState {
             });
             self.what_if();
         }
+        // The link's moment: shown on the timeline, the run paused there (at now when the
+        // run stopped on it).
         if let Some(t) = plan.cursor_s {
+            self.run.playing = false;
             self.seek_to(t);
         }
         self.run.reset_clock();

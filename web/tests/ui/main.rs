@@ -33,6 +33,7 @@ mod status;
 mod support;
 mod sweep_table;
 mod teacher;
+mod travel;
 
 use support::{harness_for, harness_from_link, painted};
 

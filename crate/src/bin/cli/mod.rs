@@ -181,48 +181,7 @@ pub fn main() -> ExitCode {
             readme,
         } => reproduce(&lab, json.as_deref(), markdown, readme),
         Command::Fuzz { sets, steps, seed } => Ok(run_fuzz(sets, steps, seed)),
-        Command::Run {
-            lab,
-            seed,
-            duration,
-            csv,
-            set,
-            preset,
-            all_series: _,
-            max_csv_mb: _,
-            branch_at: Some(at_s),
-            what_if,
-        } => branch::run(branch::BranchRun {
-            lab: &lab,
-            seed,
-            duration_s: duration,
-            csv: &csv,
-            preset: preset.as_deref(),
-            set: &set,
-            at_s,
-            what_if: &what_if,
-        })
-        .map(|()| true),
-        Command::Run {
-            lab,
-            seed,
-            duration,
-            csv,
-            set,
-            preset,
-            all_series,
-            max_csv_mb,
-            ..
-        } => run(
-            &lab,
-            seed,
-            duration,
-            Output::new(&csv, max_csv_mb),
-            preset.as_deref(),
-            &set,
-            all_series,
-        )
-        .map(|()| true),
+        command @ Command::Run { .. } => run_command(command),
         Command::Replay {
             lab,
             log,
@@ -275,6 +234,47 @@ fn exit_code(result: Result<bool, String>) -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// `attlab run`, with a what-if when `--branch-at` is given.
+fn run_command(command: Command) -> Result<bool, String> {
+    let Command::Run {
+        lab,
+        seed,
+        duration,
+        csv,
+        set,
+        preset,
+        all_series,
+        max_csv_mb,
+        branch_at,
+        what_if,
+    } = command
+    else {
+        return Ok(false);
+    };
+    match branch_at {
+        Some(at_s) => branch::run(branch::BranchRun {
+            lab: &lab,
+            seed,
+            duration_s: duration,
+            csv: &csv,
+            preset: preset.as_deref(),
+            set: &set,
+            at_s,
+            what_if: &what_if,
+        }),
+        None => run(
+            &lab,
+            seed,
+            duration,
+            Output::new(&csv, max_csv_mb),
+            preset.as_deref(),
+            &set,
+            all_series,
+        ),
+    }
+    .map(|()| true)
 }
 
 fn find_lab(id: &str) -> Result<&'static dyn Lab, String> {
