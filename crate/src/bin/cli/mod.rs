@@ -263,7 +263,8 @@ fn run_command(command: Command) -> Result<bool, String> {
             set: &set,
             at_s,
             what_if: &what_if,
-        }),
+        })
+        .map_err(|e| e.to_string()),
         None => run(
             &lab,
             seed,
